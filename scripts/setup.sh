@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs every Debian package pond needs to build, run and test. Idempotent: when everything is
+# already installed it only checks (no apt-get update), so it is quick to run before every build.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git
+  mesa-vulkan-drivers libvulkan-dev vulkan-tools vulkan-validationlayers
+  glslang-tools spirv-tools
+  libglfw3-dev libglm-dev libimgui-dev libstb-dev
+  nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev libmeshoptimizer-dev
+  xvfb xauth gcc-multilib g++-multilib
+  gnuplot-nox
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+echo "setup: installing ${missing[*]}" >&2
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then SUDO=sudo; else
+    echo "setup: need root to install: ${missing[*]}" >&2; exit 1
+  fi
+else
+  SUDO=
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -q
+$SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"

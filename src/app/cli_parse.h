@@ -1,0 +1,16 @@
+#pragma once
+// Parsing of the structured option values the commands share (WxH sizes, X,Y,Z vectors), with
+// one-line errors naming the option.
+#include <array>
+#include <string>
+
+namespace pond::app {
+
+struct Size2 {
+  int width = 0, height = 0;
+};
+
+Size2 parse_size(const std::string& text, const char* option);                 // "1280x720"
+std::array<double, 3> parse_vec3(const std::string& text, const char* option);  // "1,2.5,-3"
+
+}  // namespace pond::app

@@ -1,0 +1,110 @@
+// pond simulate: runs the water model headless and writes the contract's STATE.npy.
+#include <chrono>
+#include <cinttypes>
+#include <cstdio>
+#include <unistd.h>
+
+#include "app/commands.h"
+#include "app/gpu_bridge.h"
+#include "core/errors.h"
+#include "core/npy.h"
+#include "core/output_file.h"
+#include "sim/cpu_solver.h"
+#include "sim/diagnostics.h"
+#include "sim/scene.h"
+
+namespace pond::app {
+namespace {
+
+struct SimulateOptions {
+  std::string scene, out, solver = "auto", math = "exact", device;
+  std::int64_t steps = -1;
+  int threads = 0;
+};
+
+// Advances the CPU solver, drawing a progress bar on a terminal once the run passes one second.
+void advance_with_progress(sim::CpuSolver& solver, std::int64_t steps) {
+  using clock = std::chrono::steady_clock;
+  const auto start = clock::now();
+  const bool tty = ::isatty(2);
+  std::int64_t done = 0, chunk = 1;
+  bool drawn = false;
+  while (done < steps) {
+    const std::int64_t n = std::min(chunk, steps - done);
+    const auto t0 = clock::now();
+    solver.advance(n);
+    done += n;
+    const double chunk_s = std::chrono::duration<double>(clock::now() - t0).count();
+    if (chunk_s < 0.05) chunk *= 2;  // keep checks about 20 per second
+    if (tty && std::chrono::duration<double>(clock::now() - start).count() > 1.0) {
+      const int width = 40, filled = static_cast<int>(width * done / steps);
+      std::fprintf(stderr, "\r[%.*s%*s] %3d%% step %" PRId64 "/%" PRId64, filled,
+                   "########################################", width - filled, "",
+                   static_cast<int>(100 * done / steps), done, steps);
+      drawn = true;
+    }
+  }
+  if (drawn) std::fprintf(stderr, "\r%*s\r", 80, "");
+}
+
+int run_simulate(const SimulateOptions& o) {
+  const sim::MathMode math = o.math == "fast" ? sim::MathMode::fast : sim::MathMode::exact;
+  check_output_path(o.out);
+  const sim::Scene scene = sim::load_scene(o.scene);
+  const sim::WaterModel model = sim::build_model(scene, math);
+
+  const auto t0 = std::chrono::steady_clock::now();
+  sim::WaterState state;
+  std::string engine;
+  if (o.solver == "gpu") {
+    state = simulate_on_gpu(model, o.steps, GpuRunOptions{o.device, false});
+    engine = "gpu";
+  } else {
+    const sim::Backend backend =
+        o.solver == "auto" ? sim::best_backend() : *sim::parse_backend(o.solver);
+    sim::CpuSolver solver(model, backend, o.threads);
+    advance_with_progress(solver, o.steps);
+    state = solver.state();
+    engine = std::string(sim::backend_name(backend)) + " x " + std::to_string(solver.threads()) +
+             (solver.threads() == 1 ? " thread" : " threads");
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  const std::vector<float> world = sim::to_world_interleaved(state, model);
+  const std::size_t shape[3] = {static_cast<std::size_t>(model.rows),
+                                static_cast<std::size_t>(model.cols), 6};
+  write_npy(o.out, NpyType::f32, shape, std::as_bytes(std::span(world)));
+
+  const sim::Diagnostics d = sim::diagnose(state, model);
+  const double node_steps = static_cast<double>(model.nodes()) * model.substeps * static_cast<double>(o.steps);
+  std::printf("simulated %" PRId64 " steps (%d substep%s each) of a %d x %d grid on %s, %s math\n",
+              o.steps, model.substeps, model.substeps == 1 ? "" : "s", model.rows, model.cols,
+              engine.c_str(), o.math.c_str());
+  std::printf("time %.3f s, %.1f M node-steps/s\n", seconds,
+              seconds > 0 ? node_steps / seconds * 1e-6 : 0.0);
+  std::printf("energy %.6g (kinetic %.6g, spring %.6g), max displacement %.6g\n", d.total(),
+              d.kinetic, d.spring, d.max_displacement);
+  std::printf("state hash %016" PRIx64 "\nwrote %s\n", sim::state_hash(world), o.out.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Command add_simulate_command(CLI::App& app) {
+  auto o = std::make_shared<SimulateOptions>();
+  CLI::App* sub = app.add_subcommand("simulate", "Run the water model headless and write STATE.npy");
+  sub->add_option("--scene", o->scene, "Scene JSON file (default: the embedded scene)");
+  sub->add_option("--steps", o->steps, "Number of time steps")->required()->check(CLI::Range(
+      std::int64_t{0}, std::int64_t{1} << 40));
+  sub->add_option("--solver", o->solver, "Solver backend (default: the widest the CPU has)")
+      ->check(CLI::IsMember({"auto", "scalar", "sse", "avx2", "gpu"}));
+  sub->add_option("--math", o->math, "exact: bit-reproducible; fast: approximations allowed")
+      ->check(CLI::IsMember({"exact", "fast"}));
+  sub->add_option("--threads", o->threads, "CPU threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  sub->add_option("--device", o->device, "Vulkan device name (substring) for --solver gpu");
+  sub->add_option("--out", o->out, "Output STATE.npy: float32 (rows, cols, 6)")->required();
+  return {sub, [o] { return run_simulate(*o); }};
+}
+
+}  // namespace pond::app

@@ -1,0 +1,76 @@
+#include "core/output_file.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include "core/errors.h"
+
+namespace pond {
+namespace fs = std::filesystem;
+
+void check_output_path(const fs::path& path) {
+  if (path.empty()) throw InputError("output path is empty");
+  fs::path folder = path.parent_path();
+  if (folder.empty()) folder = ".";
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec))
+    throw InputError("output folder '" + folder.string() + "' does not exist");
+  if (fs::is_directory(path, ec))
+    throw InputError("output path '" + path.string() + "' is a folder");
+  if (::access(folder.c_str(), W_OK) != 0)
+    throw InputError("output folder '" + folder.string() + "' is not writable");
+}
+
+namespace {
+// Writes and flushes; returns 0 or the errno of the first failure.
+int write_all(const fs::path& target, std::span<const std::byte> bytes) {
+  std::FILE* f = std::fopen(target.c_str(), "wb");
+  if (!f) return errno;
+  int err = 0;
+  if (std::fwrite(bytes.data(), 1, bytes.size(), f) != bytes.size()) err = errno ? errno : EIO;
+  if (!err && std::fflush(f) != 0) err = errno;
+  if (std::fclose(f) != 0 && !err) err = errno;
+  return err;
+}
+}  // namespace
+
+void write_file_atomic(const fs::path& path, std::span<const std::byte> bytes) {
+  check_output_path(path);
+  std::error_code ec;
+  if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) {
+    // A device or pipe (/dev/stdout, /dev/full): there is nothing to clobber and renaming over it
+    // would replace the device node, so write straight into it.
+    if (int err = write_all(path, bytes))
+      throw RuntimeError("cannot write '" + path.string() + "': " + std::strerror(err));
+    return;
+  }
+  // The temporary name carries the pid so that two pond processes never share one.
+  fs::path tmp = path;
+  tmp += ".tmp." + std::to_string(::getpid());
+  if (int err = write_all(tmp, bytes)) {
+    std::remove(tmp.c_str());
+    throw RuntimeError("cannot write '" + path.string() + "': " + std::strerror(err));
+  }
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    std::remove(tmp.c_str());
+    throw RuntimeError("cannot write '" + path.string() + "': " + ec.message());
+  }
+}
+
+std::string read_file(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError("file '" + path.string() + "' does not exist");
+  if (fs::is_directory(path, ec)) throw InputError("'" + path.string() + "' is a folder, not a file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot read '" + path.string() + "'");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return std::move(s).str();
+}
+
+}  // namespace pond

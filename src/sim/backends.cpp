@@ -1,0 +1,51 @@
+#include "sim/backends.h"
+
+#include "core/errors.h"
+
+namespace pond::sim {
+
+bool cpu_supports(Backend b) {
+  switch (b) {
+    case Backend::scalar: return true;
+    case Backend::sse: return __builtin_cpu_supports("sse2");
+    case Backend::avx2: return step_rows_avx2() != nullptr && __builtin_cpu_supports("avx2");
+  }
+  return false;
+}
+
+Backend best_backend() {
+  if (cpu_supports(Backend::avx2)) return Backend::avx2;
+  if (cpu_supports(Backend::sse)) return Backend::sse;
+  return Backend::scalar;
+}
+
+const char* backend_name(Backend b) {
+  switch (b) {
+    case Backend::scalar: return "scalar";
+    case Backend::sse: return "sse";
+    case Backend::avx2: return "avx2";
+  }
+  return "?";
+}
+
+std::optional<Backend> parse_backend(std::string_view name) {
+  for (Backend b : {Backend::scalar, Backend::sse, Backend::avx2})
+    if (name == backend_name(b)) return b;
+  return std::nullopt;
+}
+
+StepRowsFn step_rows_for(Backend b) {
+  if (b == Backend::avx2 && step_rows_avx2() == nullptr)
+    throw InputError("solver avx2 is not in this build (IA-32 builds have scalar and sse)");
+  if (!cpu_supports(b))
+    throw InputError(std::string("solver ") + backend_name(b) + ": this CPU lacks " +
+                     (b == Backend::avx2 ? "AVX2" : "SSE2"));
+  switch (b) {
+    case Backend::scalar: return step_rows_scalar();
+    case Backend::sse: return step_rows_sse2();
+    case Backend::avx2: return step_rows_avx2();
+  }
+  return step_rows_scalar();
+}
+
+}  // namespace pond::sim

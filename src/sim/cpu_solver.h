@@ -1,0 +1,47 @@
+#pragma once
+// The CPU reference solver: advances a WaterState step by step (each step = the model's substeps),
+// applying each perturbation just before the integration of its step, on one backend and a
+// number of threads. The result does not depend on either (same bits).
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "sim/aligned_buffer.h"
+#include "sim/backends.h"
+#include "sim/model.h"
+#include "sim/row_threads.h"
+#include "sim/state.h"
+
+namespace pond::sim {
+
+class CpuSolver {
+ public:
+  // threads <= 0: all cores. Throws InputError when the backend is unavailable.
+  CpuSolver(WaterModel model, Backend backend, int threads = 0);
+
+  const WaterModel& model() const { return model_; }
+  Backend backend() const { return backend_; }
+  int threads() const { return threads_->size(); }
+  std::int64_t steps_done() const { return step_; }
+  const WaterState& state() const { return cur_; }
+  // Replaces the state and the step counter (e.g. when switching solvers).
+  void set_state(WaterState state, std::int64_t steps_done);
+
+  // Advances `steps` steps. Throws InputError naming the step when the state becomes non-finite.
+  void advance(std::int64_t steps);
+
+ private:
+  void substep();
+  WaterModel model_;
+  Backend backend_;
+  StepRowsFn kernel_;
+  std::unique_ptr<RowThreads> threads_;
+  int parts_ = 1;
+  WaterState cur_, next_;
+  std::vector<AlignedBuffer<float>> scratch_;  // one per part
+  std::vector<SpringRows> rows_;
+  std::size_t next_perturbation_ = 0;
+  std::int64_t step_ = 0;
+};
+
+}  // namespace pond::sim

@@ -1,0 +1,52 @@
+#include "sim/diagnostics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace pond::sim {
+
+Diagnostics diagnose(const WaterState& s, const WaterModel& m) {
+  Diagnostics d;
+  const double h = m.spacing, c = m.physics.stiffness, mass = m.physics.mass;
+  const double edge = m.physics.rest_ratio * h, diag = edge * std::sqrt(2.0);
+  const int R = m.rows, C = m.cols;
+  auto spring = [&](std::size_t a, std::size_t b, double rest) {
+    const double dx = (double(s.x[b]) - s.x[a]) * h, dy = (double(s.y[b]) - s.y[a]) * h,
+                 dz = (double(s.z[b]) - s.z[a]) * h;
+    const double stretch = std::sqrt(dx * dx + dy * dy + dz * dz) - rest;
+    d.spring += 0.5 * c * stretch * stretch;
+  };
+  for (int i = 0; i < R; ++i)
+    for (int j = 0; j < C; ++j) {
+      const std::size_t n = static_cast<std::size_t>(i) * C + j;
+      const double vx = s.vx[n] * h, vy = s.vy[n] * h, vz = s.vz[n] * h;
+      d.kinetic += 0.5 * mass * (vx * vx + vy * vy + vz * vz);
+      const double ux = (double(s.x[n]) - j) * h, uy = double(s.y[n]) * h, uz = (double(s.z[n]) - i) * h;
+      d.max_displacement = std::max(d.max_displacement, std::sqrt(ux * ux + uy * uy + uz * uz));
+      if (j + 1 < C) spring(n, n + 1, edge);
+      if (i + 1 < R) {
+        spring(n, n + C, edge);
+        if (j + 1 < C) spring(n, n + C + 1, diag);
+        if (j > 0) spring(n, n + C - 1, diag);
+      }
+    }
+  return d;
+}
+
+std::uint64_t state_hash(std::span<const float> data) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
+  for (std::size_t i = 0; i < data.size_bytes(); ++i) {
+    h ^= bytes[i];
+    h *= 0x100000001b3ull;
+  }
+  return h;
+}
+
+std::uint64_t state_hash(const WaterState& s, const WaterModel& m) {
+  const auto world = to_world_interleaved(s, m);
+  return state_hash(world);
+}
+
+}  // namespace pond::sim

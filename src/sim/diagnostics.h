@@ -1,0 +1,27 @@
+#pragma once
+// Physical diagnostics of a state, in world units and double precision: kinetic energy
+// sum(m |v|^2 / 2), spring energy sum(c (l - L)^2 / 2) over every spring, and the largest
+// displacement of a node from its rest position. And a 64-bit hash of the dumped state, the
+// "golden hash" every backend must reproduce.
+#include <cstdint>
+#include <span>
+
+#include "sim/model.h"
+#include "sim/state.h"
+
+namespace pond::sim {
+
+struct Diagnostics {
+  double kinetic = 0;
+  double spring = 0;
+  double max_displacement = 0;
+  double total() const { return kinetic + spring; }
+};
+
+Diagnostics diagnose(const WaterState& state, const WaterModel& model);
+
+// FNV-1a 64 over the bytes of the world-unit dump (to_world_interleaved).
+std::uint64_t state_hash(std::span<const float> world_interleaved);
+std::uint64_t state_hash(const WaterState& state, const WaterModel& model);
+
+}  // namespace pond::sim

@@ -1,0 +1,8 @@
+// Built with -mavx2 (see src/sim/CMakeLists.txt); only called after a run-time CPU check.
+#include "sim/backends.h"
+#include "sim/step_kernel.h"
+#include "sim/wide_avx2.h"
+
+namespace pond::sim {
+StepRowsFn step_rows_avx2() { return &step_rows<WideAvx2>; }
+}  // namespace pond::sim

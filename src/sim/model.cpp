@@ -1,0 +1,95 @@
+#include "sim/model.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "shared/exact_math.h"
+#include "sim/exact_exp.h"
+
+namespace pond::sim {
+
+static_assert(static_cast<unsigned>(NodeKind::free) == shared::kNodeFree &&
+              static_cast<unsigned>(NodeKind::vertical) == shared::kNodeVertical &&
+              static_cast<unsigned>(NodeKind::fixed) == shared::kNodeFixed);
+
+float calibrated_rest_length(float nominal, float rest_l2, int rsqrt_steps) {
+  // Search the floats nearest `nominal` for one whose product with rsqrt(rest_l2) rounds to 1.
+  float up = nominal, down = nominal;
+  for (int k = 0; k < 64; ++k) {
+    if (shared::spring_factor(rest_l2, up, rsqrt_steps) == 0.0f) return up;
+    if (shared::spring_factor(rest_l2, down, rsqrt_steps) == 0.0f) return down;
+    up = std::nextafter(up, 2 * nominal);
+    down = std::nextafter(down, 0.0f);
+  }
+  return nominal;  // not reached for the rest lengths pond uses (tested)
+}
+
+PerturbationTable tabulate(const Perturbation& p, const WaterModel& m) {
+  PerturbationTable t;
+  t.step = p.step;
+  t.target = p.target;
+  t.mode = p.mode;
+  const double h = m.spacing;
+  const double reach = 3.0 * p.radius / h;  // in index units
+  const int i0 = std::max(0, static_cast<int>(std::ceil(p.row - reach)));
+  const int i1 = std::min(m.rows - 1, static_cast<int>(std::floor(p.row + reach)));
+  const int j0 = std::max(0, static_cast<int>(std::ceil(p.col - reach)));
+  const int j1 = std::min(m.cols - 1, static_cast<int>(std::floor(p.col + reach)));
+  const double limit2 = 9.0 * p.radius * p.radius;
+  for (int i = i0; i <= i1; ++i)
+    for (int j = j0; j <= j1; ++j) {
+      const std::size_t n = static_cast<std::size_t>(i) * m.cols + j;
+      if (m.kinds[n] == static_cast<std::uint8_t>(NodeKind::fixed)) continue;
+      const double di = (i - p.row) * h, dj = (j - p.col) * h;
+      const double d2 = di * di + dj * dj;
+      if (d2 > limit2) continue;
+      const double w = p.amplitude * exact_exp(-d2 / (2.0 * p.radius * p.radius));
+      t.nodes.push_back(static_cast<std::uint32_t>(n));
+      t.weights.push_back(static_cast<float>(w / h));
+    }
+  return t;
+}
+
+WaterModel build_model(const Scene& s, MathMode math) {
+  WaterModel m;
+  m.rows = s.grid.rows;
+  m.cols = s.grid.cols;
+  m.spacing = static_cast<float>(s.grid.spacing);
+  m.substeps = s.physics.substeps;
+  m.math = math;
+  m.physics = s.physics;
+
+  const Physics& p = s.physics;
+  const double dt = p.dt / p.substeps;
+  StepConstants& k = m.constants;
+  k.kc = static_cast<float>(p.stiffness * dt / p.mass);
+  k.kd = static_cast<float>(p.damping * dt / p.mass);
+  k.dt = static_cast<float>(dt);
+  k.rsqrt_steps = math == MathMode::exact ? shared::kRsqrtStepsExact : shared::kRsqrtStepsFast;
+  const float ratio = static_cast<float>(p.rest_ratio);
+  const float edge = ratio, diag = static_cast<float>(p.rest_ratio * std::sqrt(2.0));
+  // At rest an edge spring has l2 = 1 and a diagonal one l2 = 1 + 1 + 0 = 2 exactly.
+  k.rest_edge = ratio == 1.0f ? calibrated_rest_length(edge, 1.0f, k.rsqrt_steps) : edge;
+  k.rest_diag = ratio == 1.0f ? calibrated_rest_length(diag, 2.0f, k.rsqrt_steps) : diag;
+
+  // Constraints: the border kind on every border node, then the rectangles; fixed wins over vertical.
+  m.kinds.assign(m.nodes(), static_cast<std::uint8_t>(NodeKind::free));
+  auto constrain = [&](int i, int j, NodeKind kind) {
+    auto& n = m.kinds[static_cast<std::size_t>(i) * m.cols + j];
+    n = std::max(n, static_cast<std::uint8_t>(kind));
+  };
+  if (s.border != NodeKind::free)
+    for (int i = 0; i < m.rows; ++i)
+      for (int j = 0; j < m.cols; ++j)
+        if (i == 0 || j == 0 || i == m.rows - 1 || j == m.cols - 1) constrain(i, j, s.border);
+  for (const ConstraintRect& c : s.constraints)
+    for (int i = c.row0; i <= c.row1; ++i)
+      for (int j = c.col0; j <= c.col1; ++j) constrain(i, j, c.kind);
+
+  for (const Perturbation& q : s.perturbations) m.perturbations.push_back(tabulate(q, m));
+  std::stable_sort(m.perturbations.begin(), m.perturbations.end(),
+                   [](const auto& a, const auto& b) { return a.step < b.step; });
+  return m;
+}
+
+}  // namespace pond::sim

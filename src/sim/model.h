@@ -1,0 +1,59 @@
+#pragma once
+// WaterModel: everything a solver (CPU or GPU) needs, derived once from a Scene. Solvers work in
+// grid units: positions divided by the spacing h, so node (i, j) rests at (j, 0, i) exactly and an
+// edge spring's rest length is 1. Hooke's law is homogeneous of degree one in length, so the motion
+// in grid units is the world motion divided by h; the state is scaled back on output.
+#include <cstdint>
+#include <vector>
+
+#include "sim/scene.h"
+
+namespace pond::sim {
+
+enum class MathMode { exact, fast };
+
+// The constants of one substep, as floats rounded once from double here, so the CPU and the GPU use
+// the same bits. With G the sum of (x_b - x_a) * factor over a node's springs:
+//   v' = v + (G * kc - v * kd);   x' = x + v' * dt
+// which is symplectic Euler with a = (c G - gamma v) / m folded into two products.
+struct StepConstants {
+  float kc = 0;         // c * dt / m
+  float kd = 0;         // gamma * dt / m
+  float dt = 0;         // substep length
+  float rest_edge = 1;  // rest length of edge springs (grid units), calibrated, see model.cpp
+  float rest_diag = 1;  // rest length of diagonal springs
+  int rsqrt_steps = 3;  // Newton steps of the reciprocal square root
+};
+
+// A perturbation's weights precomputed at grid spacing, as the paper does: the nodes within
+// 3 * radius of its centre that are not fixed, and the weight of each (already in grid units).
+struct PerturbationTable {
+  std::int64_t step = 0;
+  PerturbTarget target = PerturbTarget::velocity;
+  PerturbMode mode = PerturbMode::add;
+  std::vector<std::uint32_t> nodes;  // row * cols + col
+  std::vector<float> weights;
+};
+
+struct WaterModel {
+  int rows = 0, cols = 0;
+  float spacing = 1;
+  int substeps = 1;
+  MathMode math = MathMode::exact;
+  StepConstants constants;
+  Physics physics;                      // the scene's values, for diagnostics
+  std::vector<std::uint8_t> kinds;      // NodeKind per node, row-major
+  std::vector<PerturbationTable> perturbations;  // sorted by step, scene order within a step
+
+  std::size_t nodes() const { return static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols); }
+};
+
+WaterModel build_model(const Scene& scene, MathMode math = MathMode::exact);
+
+// A rest length L such that 1 - L * rsqrt(l2) is exactly 0 for the rest squared length l2, so that
+// a grid at rest stays at rest bit for bit (the approximate rsqrt is not exactly 1/sqrt).
+float calibrated_rest_length(float nominal, float rest_l2, int rsqrt_steps);
+
+PerturbationTable tabulate(const Perturbation& p, const WaterModel& model);
+
+}  // namespace pond::sim

@@ -1,0 +1,142 @@
+#include "sim/scene.h"
+
+#include <cmath>
+#include <cstdio>
+#include <unistd.h>
+
+#include "core/errors.h"
+#include "core/output_file.h"
+#include "sim/json_fields.h"
+#include "sim/stability.h"
+
+namespace pond::sim {
+namespace {
+
+#include "default_scene.inc"  // kDefaultSceneJson, generated from scenes/default.json
+
+// Bytes the CPU solver holds per node: two states of 6 floats, normals, the kind byte.
+constexpr double kBytesPerNode = 2 * 6 * 4 + 3 * 4 + 1;
+constexpr int kMaxGridSide = 1 << 16;
+
+NodeKind parse_kind(JsonFields& f, const char* key, bool allow_free) {
+  const std::string s = allow_free ? f.text(key, "fixed", {"fixed", "vertical", "free"})
+                                   : f.text(key, "fixed", {"fixed", "vertical"});
+  if (s == "vertical") return NodeKind::vertical;
+  if (s == "free") return NodeKind::free;
+  return NodeKind::fixed;
+}
+
+double physical_memory_bytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 1e18;
+}
+
+void parse_grid(JsonFields f, GridSpec& g) {
+  g.rows = static_cast<int>(f.integer("rows", g.rows, 2, kMaxGridSide));
+  g.cols = static_cast<int>(f.integer("cols", g.cols, 2, kMaxGridSide));
+  g.spacing = f.number("spacing", g.spacing);
+  if (!(g.spacing > 0.0)) f.fail("spacing", "must be positive");
+  f.finish();
+  const double bytes = static_cast<double>(g.rows) * g.cols * kBytesPerNode;
+  if (bytes > 0.75 * physical_memory_bytes())
+    f.fail("is " + std::to_string(g.rows) + " x " + std::to_string(g.cols) + ": needs " +
+           std::to_string(static_cast<long long>(bytes / (1 << 20))) +
+           " MiB, more than this machine's memory allows");
+}
+
+void parse_physics(JsonFields f, Physics& p) {
+  p.mass = f.number("mass", p.mass);
+  if (!(p.mass > 0.0)) f.fail("mass", "must be positive");
+  p.stiffness = f.number("stiffness", p.stiffness);
+  if (p.stiffness < 0.0) f.fail("stiffness", "must not be negative");
+  p.damping = f.number("damping", p.damping);
+  if (p.damping < 0.0) f.fail("damping", "must not be negative");
+  p.dt = f.number("dt", p.dt);
+  if (!(p.dt > 0.0)) f.fail("dt", "must be positive");
+  p.substeps = static_cast<int>(f.integer("substeps", p.substeps, 1, 10000));
+  p.rest_ratio = f.number("rest_ratio", p.rest_ratio);
+  if (!(p.rest_ratio > 0.0)) f.fail("rest_ratio", "must be positive");
+  f.finish();
+  const double bound = stability_bound(p.mass, p.stiffness, p.damping);
+  const double sub_dt = p.dt / p.substeps;
+  if (!(sub_dt < bound)) {
+    const int needed = static_cast<int>(std::floor(p.dt / bound)) + 1;
+    char msg[256];
+    std::snprintf(msg, sizeof msg,
+                  "dt %g%s exceeds the explicit-Euler stability bound %.6g for mass %g, "
+                  "stiffness %g, damping %g; use dt < %.6g or physics.substeps >= %d",
+                  p.dt, p.substeps > 1 ? (" / " + std::to_string(p.substeps) + " substeps").c_str() : "",
+                  bound, p.mass, p.stiffness, p.damping, bound, needed);
+    f.fail("dt", msg);
+  }
+}
+
+ConstraintRect parse_constraint(JsonFields f, const GridSpec& g) {
+  ConstraintRect c;
+  if (!f.has("kind")) f.fail("kind", "is missing");
+  c.kind = parse_kind(f, "kind", false);
+  f.index_range("rows", g.rows - 1, c.row0, c.row1);
+  f.index_range("cols", g.cols - 1, c.col0, c.col1);
+  f.finish();
+  return c;
+}
+
+Perturbation parse_perturbation(JsonFields f, const GridSpec& g) {
+  Perturbation p;
+  for (const char* key : {"row", "col", "radius", "amplitude"})
+    if (!f.has(key)) f.fail(key, "is missing");
+  p.step = f.integer("step", 0, 0, INT64_MAX / 2);
+  p.row = f.number("row", 0);
+  if (p.row < 0 || p.row > g.rows - 1)
+    f.fail("row", "is outside the grid's rows [0, " + std::to_string(g.rows - 1) + "]");
+  p.col = f.number("col", 0);
+  if (p.col < 0 || p.col > g.cols - 1)
+    f.fail("col", "is outside the grid's columns [0, " + std::to_string(g.cols - 1) + "]");
+  p.radius = f.number("radius", p.radius);
+  if (!(p.radius > 0.0)) f.fail("radius", "must be positive");
+  p.amplitude = f.number("amplitude", p.amplitude);
+  p.target = f.text("target", "velocity", {"velocity", "position"}) == "position"
+                 ? PerturbTarget::position : PerturbTarget::velocity;
+  p.mode = f.text("mode", "add", {"add", "set"}) == "set" ? PerturbMode::set : PerturbMode::add;
+  f.finish();
+  return p;
+}
+
+}  // namespace
+
+std::string_view default_scene_json() { return kDefaultSceneJson; }
+
+Scene parse_scene(std::string_view json_text, const std::string& source) {
+  nlohmann::json root;
+  try {
+    root = nlohmann::json::parse(json_text);
+  } catch (const nlohmann::json::parse_error& e) {
+    // nlohmann's message is "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
+    std::string what = e.what();
+    const auto p = what.find("] ");
+    throw InputError(source + ": invalid JSON: " + (p == std::string::npos ? what : what.substr(p + 2)));
+  }
+  JsonFields f(root, "", source);
+  Scene s;
+  s.name = f.text("name", "", {});
+  parse_grid(JsonFields(f.object("grid"), "grid", source), s.grid);
+  parse_physics(JsonFields(f.object("physics"), "physics", source), s.physics);
+  s.border = parse_kind(f, "border", true);
+  const auto& cs = f.array("constraints");
+  for (std::size_t i = 0; i < cs.size(); ++i)
+    s.constraints.push_back(parse_constraint(
+        JsonFields(cs[i], "constraints[" + std::to_string(i) + "]", source), s.grid));
+  const auto& ps = f.array("perturbations");
+  for (std::size_t i = 0; i < ps.size(); ++i)
+    s.perturbations.push_back(parse_perturbation(
+        JsonFields(ps[i], "perturbations[" + std::to_string(i) + "]", source), s.grid));
+  f.finish();
+  return s;
+}
+
+Scene load_scene(const std::string& path) {
+  if (path.empty()) return parse_scene(default_scene_json(), "default scene");
+  return parse_scene(read_file(path), path);
+}
+
+}  // namespace pond::sim
