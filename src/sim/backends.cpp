@@ -1,6 +1,7 @@
 #include "sim/backends.h"
 
 #include "core/errors.h"
+#include "shared/exact_math.h"
 
 namespace pond::sim {
 
@@ -8,7 +9,7 @@ bool cpu_supports(Backend b) {
   switch (b) {
     case Backend::scalar: return true;
     case Backend::sse: return __builtin_cpu_supports("sse2");
-    case Backend::avx2: return step_rows_avx2() != nullptr && __builtin_cpu_supports("avx2");
+    case Backend::avx2: return step_rows_avx2(shared::kRsqrtStepsExact) != nullptr && __builtin_cpu_supports("avx2");
   }
   return false;
 }
@@ -34,18 +35,18 @@ std::optional<Backend> parse_backend(std::string_view name) {
   return std::nullopt;
 }
 
-StepRowsFn step_rows_for(Backend b) {
-  if (b == Backend::avx2 && step_rows_avx2() == nullptr)
+StepRowsFn step_rows_for(Backend b, int rsqrt_steps) {
+  if (b == Backend::avx2 && step_rows_avx2(rsqrt_steps) == nullptr)
     throw InputError("solver avx2 is not in this build (IA-32 builds have scalar and sse)");
   if (!cpu_supports(b))
     throw InputError(std::string("solver ") + backend_name(b) + ": this CPU lacks " +
                      (b == Backend::avx2 ? "AVX2" : "SSE2"));
   switch (b) {
-    case Backend::scalar: return step_rows_scalar();
-    case Backend::sse: return step_rows_sse2();
-    case Backend::avx2: return step_rows_avx2();
+    case Backend::scalar: return step_rows_scalar(rsqrt_steps);
+    case Backend::sse: return step_rows_sse2(rsqrt_steps);
+    case Backend::avx2: return step_rows_avx2(rsqrt_steps);
   }
-  return step_rows_scalar();
+  return nullptr;
 }
 
 }  // namespace pond::sim

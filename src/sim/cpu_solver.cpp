@@ -13,33 +13,17 @@ namespace {
 // Below this many nodes per part, waking another thread costs more than it saves.
 constexpr std::size_t kMinNodesPerPart = 16384;
 
-// Spring rows of one part: 21 arrays of cols + 1 slots, padded to whole cache lines.
-AlignedBuffer<float> make_scratch(int cols, SpringRows& r) {
-  const std::size_t stride = (static_cast<std::size_t>(cols) + 1 + 15) / 16 * 16;
-  AlignedBuffer<float> buf(stride * 21);
-  float* p = buf.data();
-  auto take = [&] { float* q = p; p += stride; return q; };
-  for (int c = 0; c < 3; ++c) r.h[c] = take();
-  for (int b = 0; b < 2; ++b)
-    for (int c = 0; c < 3; ++c) {
-      r.s[b][c] = take();
-      r.d1[b][c] = take();
-      r.d2[b][c] = take();
-    }
-  return buf;
-}
-
 }  // namespace
 
 CpuSolver::CpuSolver(WaterModel model, Backend backend, int threads)
-    : model_(std::move(model)), backend_(backend), kernel_(step_rows_for(backend)) {
+    : model_(std::move(model)), backend_(backend), kernel_(step_rows_for(backend, model_.constants.rsqrt_steps)) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const std::size_t by_size = std::max<std::size_t>(1, model_.nodes() / kMinNodesPerPart);
   parts_ = static_cast<int>(std::min<std::size_t>({static_cast<std::size_t>(threads), by_size,
                                                    static_cast<std::size_t>(model_.rows)}));
   threads_ = std::make_unique<RowThreads>(parts_);
-  rows_.resize(parts_);
-  for (int p = 0; p < parts_; ++p) scratch_.push_back(make_scratch(model_.cols, rows_[p]));
+  for (int p = 0; p < parts_; ++p) scratch_.emplace_back(std::size_t{kSpringRows} * kSlots);
+  checks_.resize(parts_);
   cur_ = rest_state(model_);
   next_ = WaterState(model_.nodes());
 }
@@ -58,14 +42,13 @@ void CpuSolver::substep() {
                    cur_.vy.data(),  cur_.vz.data(),  next_.x.data(),  next_.y.data(),
                    next_.z.data(),  next_.vx.data(), next_.vy.data(), next_.vz.data(),
                    model_.kinds.data(), model_.rows, model_.cols, model_.constants};
-  std::vector<float> checks(parts_);
   threads_->run(parts_, [&](int p) {
     const int r0 = static_cast<int>(static_cast<long long>(model_.rows) * p / parts_);
     const int r1 = static_cast<int>(static_cast<long long>(model_.rows) * (p + 1) / parts_);
-    checks[p] = kernel_(v, r0, r1, rows_[p]);
+    checks_[p] = kernel_(v, r0, r1, scratch_[p].data());
   });
   std::swap(cur_, next_);
-  for (float c : checks)
+  for (float c : checks_)
     if (!std::isfinite(c)) {
       std::size_t bad = 0;
       while (bad < cur_.nodes() && std::isfinite(cur_.vx[bad]) && std::isfinite(cur_.vy[bad]) &&

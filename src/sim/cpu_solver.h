@@ -38,8 +38,8 @@ class CpuSolver {
   std::unique_ptr<RowThreads> threads_;
   int parts_ = 1;
   WaterState cur_, next_;
-  std::vector<AlignedBuffer<float>> scratch_;  // one per part
-  std::vector<SpringRows> rows_;
+  std::vector<AlignedBuffer<float>> scratch_;  // spring rows, one per part
+  std::vector<float> checks_;                  // blow-up check of each part
   std::size_t next_perturbation_ = 0;
   std::int64_t step_ = 0;
 };

@@ -4,5 +4,8 @@
 #include "sim/wide_avx2.h"
 
 namespace pond::sim {
-StepRowsFn step_rows_avx2() { return &step_rows<WideAvx2>; }
+StepRowsFn step_rows_avx2(int rsqrt_steps) {
+  return rsqrt_steps == shared::kRsqrtStepsFast ? &step_rows<WideAvx2, shared::kRsqrtStepsFast>
+                                                : &step_rows<WideAvx2, shared::kRsqrtStepsExact>;
+}
 }  // namespace pond::sim

@@ -2,5 +2,5 @@
 #include "sim/backends.h"
 
 namespace pond::sim {
-StepRowsFn step_rows_avx2() { return nullptr; }
+StepRowsFn step_rows_avx2(int) { return nullptr; }
 }  // namespace pond::sim

@@ -3,5 +3,8 @@
 #include "sim/wide_sse2.h"
 
 namespace pond::sim {
-StepRowsFn step_rows_sse2() { return &step_rows<WideSse2>; }
+StepRowsFn step_rows_sse2(int rsqrt_steps) {
+  return rsqrt_steps == shared::kRsqrtStepsFast ? &step_rows<WideSse2, shared::kRsqrtStepsFast>
+                                                : &step_rows<WideSse2, shared::kRsqrtStepsExact>;
+}
 }  // namespace pond::sim

@@ -29,17 +29,42 @@
 #include "sim/step_view.h"
 #include "sim/wide_scalar.h"
 
+// The kernel's helpers must be inlined into its loops: a call per 8 nodes costs more than the work.
+#define POND_KERNEL_INLINE inline __attribute__((always_inline))
+
 namespace pond::sim {
 inline namespace POND_ISA {
 
-template <class W>
+// Offsets of the spring rows in the scratch (see step_view.h).
+inline constexpr int kRowH = 0;
+POND_KERNEL_INLINE constexpr int band_row(int band) { return 3 + 9 * band; }
+inline constexpr int kBandS = 0, kBandD1 = 3, kBandD2 = 6;
+
+// Calls fn.template operator()<V>(j) for chunks of V::width columns covering [begin, end): with W
+// while at least W::width columns remain, the last chunk overlapping the previous one (it recomputes
+// some columns from the same inputs: the same bits), or one column at a time with the scalar
+// backend when the range is narrower than W.
+template <class W, class Fn>
+POND_KERNEL_INLINE void for_chunks(int begin, int end, Fn&& fn) {
+  if (end - begin >= W::width) {
+    int j = begin;
+    for (; j + W::width <= end; j += W::width) fn.template operator()<W>(j);
+    if (j < end) fn.template operator()<W>(end - W::width);
+  } else {
+    for (int j = begin; j < end; ++j) fn.template operator()<WideScalar>(j);
+  }
+}
+
+// Steps: the Newton steps of the reciprocal square root, a compile-time constant so the four
+// springs' iterations unroll and interleave.
+template <class W, int Steps>
 struct StepKernel {
   using F = typename W::F;
 
-  static F rsqrt(F x, int steps) {
+  POND_KERNEL_INLINE static F rsqrt(F x) {
     const F half_x = W::mul(x, W::set1(0.5f));
     F y = W::rsqrt_seed(x, shared::kRsqrtMagic);
-    for (int k = 0; k < steps; ++k) {
+    for (int k = 0; k < Steps; ++k) {
       F t = W::mul(y, y);
       t = W::mul(t, half_x);
       t = W::sub(W::set1(1.5f), t);
@@ -48,79 +73,93 @@ struct StepKernel {
     return y;
   }
 
-  // The term of spring a->b on node a, stored at out[c][slot] for components c = x, y, z.
-  static void spring(const float* const a[3], const float* const b[3], std::size_t na,
-                     std::size_t nb, float rest, int steps, float* const out[3], int slot) {
-    const F dx = W::sub(W::load(b[0] + nb), W::load(a[0] + na));
-    const F dy = W::sub(W::load(b[1] + nb), W::load(a[1] + na));
-    const F dz = W::sub(W::load(b[2] + nb), W::load(a[2] + na));
+  // The term of spring a->b on node a, stored in the three spring rows at `out` (x, y, z).
+  POND_KERNEL_INLINE static void spring(const StepView& v, std::size_t na, std::size_t nb,
+                                        float rest, float* out) {
+    const F dx = W::sub(W::load(v.x + nb), W::load(v.x + na));
+    const F dy = W::sub(W::load(v.y + nb), W::load(v.y + na));
+    const F dz = W::sub(W::load(v.z + nb), W::load(v.z + na));
     const F l2 = W::add(W::add(W::mul(dx, dx), W::mul(dy, dy)), W::mul(dz, dz));
-    const F f = W::sub(W::set1(1.0f), W::mul(W::set1(rest), rsqrt(l2, steps)));
-    W::store(out[0] + slot, W::mul(dx, f));
-    W::store(out[1] + slot, W::mul(dy, f));
-    W::store(out[2] + slot, W::mul(dz, f));
-  }
-
-  // Springs of row i for columns [j, j + W::width): H, and S, D1, D2 to row i+1 if `band`.
-  static void springs_at(const StepView& v, int i, int j, bool band, const SpringRows& r, int cur) {
-    const float* const p[3] = {v.x, v.y, v.z};
-    const std::size_t n = static_cast<std::size_t>(i) * v.cols + j;
-    const std::size_t up = n + v.cols;
-    const int slot = j + 1;
-    spring(p, p, n, n + 1, v.k.rest_edge, v.k.rsqrt_steps, r.h, slot);
-    if (!band) return;
-    spring(p, p, n, up, v.k.rest_edge, v.k.rsqrt_steps, r.s[cur], slot);
-    spring(p, p, n, up + 1, v.k.rest_diag, v.k.rsqrt_steps, r.d1[cur], slot);
-    spring(p, p, n + 1, up, v.k.rest_diag, v.k.rsqrt_steps, r.d2[cur], slot);
+    const F f = W::sub(W::set1(1.0f), W::mul(W::set1(rest), rsqrt(l2)));
+    W::store(out, W::mul(dx, f));
+    W::store(out + kSlots, W::mul(dy, f));
+    W::store(out + 2 * kSlots, W::mul(dz, f));
   }
 };
 
-// Fills a band slot range with a signed zero: +0 where the band is subtracted, -0 where added.
-inline void fill_band(const SpringRows& r, int band, int slots, float value) {
-  for (int c = 0; c < 3; ++c)
-    for (int s = 0; s <= slots; ++s) r.s[band][c][s] = r.d1[band][c][s] = r.d2[band][c][s] = value;
+// Fills slots [0, slots] of a band with a signed zero: +0 where the band is subtracted (below the
+// row), -0 where it is added (above): either way the exact identity.
+POND_KERNEL_INLINE void fill_band(float* scratch, int band, int slots, float zero) {
+  float* b = scratch + band_row(band) * kSlots;
+  for (int k = 0; k < 9; ++k)
+    for (int s = 0; s <= slots; ++s) b[k * kSlots + s] = zero;
 }
 
-// Computes H of row i and, when i + 1 < rows, the band to row i+1 into band `cur`; otherwise fills
-// band `cur` with -0 (it is only ever added).
-template <class W>
-void compute_row_springs(const StepView& v, int i, const SpringRows& r, int cur) {
-  using K = StepKernel<W>;
-  using S = StepKernel<WideScalar>;
-  const bool band = i + 1 < v.rows;
+// The springs of row i that block [c0, c1) needs: H, D1, D2 at column indices
+// [max(c0-1, 0), min(c1-1, C-2)], S at [c0, c1), into band `cur`; without a row above, band `cur`
+// becomes -0. Missing indices -1 and C-1 get the signed zero that makes their use an identity.
+template <class W, int Steps>
+void block_springs(const StepView& v, int i, int c0, int c1, float* scratch, int cur) {
   const int C = v.cols;
-  int j = 0;
-  for (; j + W::width <= C - 1; j += W::width) K::springs_at(v, i, j, band, r, cur);
-  for (; j < C - 1; ++j) S::springs_at(v, i, j, band, r, cur);
+  const bool band = i + 1 < v.rows;
+  float* h = scratch + kRowH * kSlots;
+  float* b = scratch + band_row(cur) * kSlots;
+  const int slot0 = 1 - c0;  // slot of column j is j + slot0
+  const std::size_t row = static_cast<std::size_t>(i) * C;
+  const int lo = c0 > 0 ? c0 - 1 : 0, hi = c1 - 1 < C - 2 ? c1 - 1 : C - 2;
+  const float re = v.k.rest_edge, rd = v.k.rest_diag;
+  if (band) {
+    for_chunks<W>(lo, hi + 1, [&]<class V>(int j) {
+      using K = StepKernel<V, Steps>;
+      const std::size_t n = row + j, up = n + C;
+      const int s = j + slot0;
+      K::spring(v, n, n + 1, re, h + s);                       // H:  (i,j) -> (i,j+1)
+      K::spring(v, n, up + 1, rd, b + kBandD1 * kSlots + s);  // D1: (i,j) -> (i+1,j+1)
+      K::spring(v, n + 1, up, rd, b + kBandD2 * kSlots + s);  // D2: (i,j+1) -> (i+1,j)
+    });
+    for_chunks<W>(c0, c1, [&]<class V>(int j) {
+      const std::size_t n = row + j;
+      StepKernel<V, Steps>::spring(v, n, n + C, re, b + kBandS * kSlots + j + slot0);  // S
+
+    });
+  } else {
+    for_chunks<W>(lo, hi + 1, [&]<class V>(int j) {
+      const std::size_t n = row + j;
+      StepKernel<V, Steps>::spring(v, n, n + 1, re, h + j + slot0);
+    });
+    fill_band(scratch, cur, c1 - c0, -0.0f);
+  }
   for (int c = 0; c < 3; ++c) {
-    r.h[c][0] = +0.0f;  // index -1: subtracted by node 0
-    r.h[c][C] = -0.0f;  // index C-1: added by node C-1
-  }
-  if (!band) {
-    fill_band(r, cur, C, -0.0f);
-    return;
-  }
-  {  // S(C-1), the one spring of the band without a right neighbour
-    const float* const p[3] = {v.x, v.y, v.z};
-    const std::size_t n = static_cast<std::size_t>(i) * C + (C - 1);
-    S::spring(p, p, n, n + C, v.k.rest_edge, v.k.rsqrt_steps, r.s[cur], C);
-  }
-  for (int c = 0; c < 3; ++c) {
-    r.d1[cur][c][0] = +0.0f;  // only subtracted (as the lower band, by node 0)
-    r.d1[cur][c][C] = -0.0f;  // only added (as the upper band, by node C-1)
-    r.d2[cur][c][0] = -0.0f;  // only added (as the upper band, by node 0)
-    r.d2[cur][c][C] = +0.0f;  // only subtracted (as the lower band, by node C-1)
+    if (c0 == 0) {  // index -1 is slot 0
+      h[c * kSlots] = +0.0f;  // only subtracted (by node 0)
+      if (band) {
+        b[(kBandD1 + c) * kSlots] = +0.0f;  // only subtracted (as the lower band)
+        b[(kBandD2 + c) * kSlots] = -0.0f;  // only added (as the upper band)
+      }
+    }
+    if (c1 == C) {
+      const int s = C - 1 + slot0;
+      h[c * kSlots + s] = -0.0f;  // index C-1: only added (by node C-1)
+      if (band) {
+        b[(kBandD1 + c) * kSlots + s] = -0.0f;  // only added (as the upper band)
+        b[(kBandD2 + c) * kSlots + s] = +0.0f;  // only subtracted (as the lower band)
+      }
+    }
   }
 }
 
-// Sums the terms of nodes [j, j + width) of row i in canonical order and integrates them.
-// Returns the sum of the new velocity components, whose finiteness tells whether the step blew up.
+// Sums the spring terms of nodes [j, j + width) of row i in canonical order and integrates them.
+// Returns `check` plus the new velocity components (non-finite iff the step blew up).
 template <class W>
-typename W::F integrate_at(const StepView& v, int i, int j, const SpringRows& r, int below,
-                           int above, typename W::F check) {
+POND_KERNEL_INLINE typename W::F integrate_at(const StepView& v, int i, int j, int c0,
+                                              const float* scratch, int below, int above,
+                                              typename W::F check) {
   using F = typename W::F;
-  const int s = j + 1;  // slot of index j
   const std::size_t n = static_cast<std::size_t>(i) * v.cols + j;
+  const int s = j - c0 + 1;  // slot of column j
+  const float* h = scratch + kRowH * kSlots + s;
+  const float* lo = scratch + band_row(below) * kSlots + s;
+  const float* up = scratch + band_row(above) * kSlots + s;
   const F kc = W::set1(v.k.kc), kd = W::set1(v.k.kd), dt = W::set1(v.k.dt);
   const typename W::M free_h = W::kind_below(v.kinds + n, 1);  // free nodes move horizontally
   const typename W::M free_v = W::kind_below(v.kinds + n, 2);  // free and vertical nodes move in y
@@ -128,45 +167,50 @@ typename W::F integrate_at(const StepView& v, int i, int j, const SpringRows& r,
   const float* const vel[3] = {v.vx, v.vy, v.vz};
   float* const opos[3] = {v.ox, v.oy, v.oz};
   float* const ovel[3] = {v.ovx, v.ovy, v.ovz};
-  F vsum[3];
   for (int c = 0; c < 3; ++c) {
-    F g = W::neg(W::load(r.h[c] + s - 1));          // (i, j-1)
-    g = W::add(g, W::load(r.h[c] + s));             // (i, j+1)
-    g = W::sub(g, W::load(r.s[below][c] + s));      // (i-1, j)
-    g = W::add(g, W::load(r.s[above][c] + s));      // (i+1, j)
-    g = W::sub(g, W::load(r.d1[below][c] + s - 1)); // (i-1, j-1)
-    g = W::add(g, W::load(r.d1[above][c] + s));     // (i+1, j+1)
-    g = W::sub(g, W::load(r.d2[below][c] + s));     // (i-1, j+1)
-    g = W::add(g, W::load(r.d2[above][c] + s - 1)); // (i+1, j-1)
+    const int o = c * kSlots;
+    F g = W::neg(W::load(h + o - 1));                          // (i, j-1)
+    g = W::add(g, W::load(h + o));                             // (i, j+1)
+    g = W::sub(g, W::load(lo + kBandS * kSlots + o));          // (i-1, j)
+    g = W::add(g, W::load(up + kBandS * kSlots + o));          // (i+1, j)
+    g = W::sub(g, W::load(lo + kBandD1 * kSlots + o - 1));     // (i-1, j-1)
+    g = W::add(g, W::load(up + kBandD1 * kSlots + o));         // (i+1, j+1)
+    g = W::sub(g, W::load(lo + kBandD2 * kSlots + o));         // (i-1, j+1)
+    g = W::add(g, W::load(up + kBandD2 * kSlots + o - 1));     // (i+1, j-1)
     const F vel0 = W::load(vel[c] + n);
     F v1 = W::add(vel0, W::sub(W::mul(g, kc), W::mul(vel0, kd)));
     v1 = W::keep(c == 1 ? free_v : free_h, v1);
     W::store(ovel[c] + n, v1);
     W::store(opos[c] + n, W::add(W::load(pos[c] + n), W::mul(v1, dt)));
-    vsum[c] = v1;
+    check = W::add(check, v1);
   }
-  return W::add(check, W::add(W::add(vsum[0], vsum[1]), vsum[2]));
+  return check;
 }
 
-// One substep for rows [r0, r1). Returns the sum of all new velocity components of those rows
-// (non-finite iff some velocity is non-finite or astronomically large).
-template <class W>
-float step_rows(const StepView& v, int r0, int r1, const SpringRows& r) {
-  using F = typename W::F;
-  int below = 0, above = 1;
-  if (r0 == 0) {
-    fill_band(r, below, v.cols, +0.0f);  // no row -1: every lower-band term is subtracted +0
-  } else {
-    compute_row_springs<W>(v, r0 - 1, r, below);
-  }
-  F check = W::set1(0.0f);
+// One substep for rows [r0, r1), block by block. Returns the sum of the new velocity components
+// of those rows (non-finite iff some velocity is non-finite or astronomically large).
+template <class W, int Steps>
+float step_rows(const StepView& v, int r0, int r1, float* scratch) {
+  typename W::F check = W::set1(0.0f);
   float tail_check = 0.0f;
-  for (int i = r0; i < r1; ++i) {
-    compute_row_springs<W>(v, i, r, above);
-    int j = 0;
-    for (; j + W::width <= v.cols; j += W::width) check = integrate_at<W>(v, i, j, r, below, above, check);
-    for (; j < v.cols; ++j) tail_check = integrate_at<WideScalar>(v, i, j, r, below, above, tail_check);
-    std::swap(below, above);
+  for (int c0 = 0; c0 < v.cols; c0 += kBlockCols) {
+    const int c1 = c0 + kBlockCols < v.cols ? c0 + kBlockCols : v.cols;
+    int below = 0, above = 1;
+    if (r0 == 0) {
+      fill_band(scratch, below, c1 - c0, +0.0f);  // no row -1: lower-band terms subtract +0
+    } else {
+      block_springs<W, Steps>(v, r0 - 1, c0, c1, scratch, below);
+    }
+    for (int i = r0; i < r1; ++i) {
+      block_springs<W, Steps>(v, i, c0, c1, scratch, above);
+      for_chunks<W>(c0, c1, [&]<class V>(int j) {
+        if constexpr (V::width == W::width && W::width > 1)
+          check = integrate_at<W>(v, i, j, c0, scratch, below, above, check);
+        else
+          tail_check = integrate_at<WideScalar>(v, i, j, c0, scratch, below, above, tail_check);
+      });
+      std::swap(below, above);
+    }
   }
   return W::sum_lanes(check) + tail_check;
 }

@@ -15,13 +15,14 @@ struct StepView {
   StepConstants k;
 };
 
-// Per-thread spring rows: slot s holds index j = s - 1, so index -1 (a missing left neighbour)
-// is slot 0 and index cols-1 is slot cols.
-struct SpringRows {
-  float* h[3];
-  float* s[2][3];  // [band][component]; which band is "below" alternates row by row
-  float* d1[2][3];
-  float* d2[2][3];
-};
+// The kernel walks the grid in blocks of kBlockCols columns, each block down the rows of a thread's
+// range, so its spring rows stay in L1 and every spring row sits at a compile-time offset from one
+// base pointer. Per thread, a scratch of kSpringRows rows of kSlots floats: the horizontal springs
+// H (x, y, z) and two bands (the one below the current row and the one above) of S, D1, D2
+// (x, y, z each). Slot s of a row holds column index j = c0 + s - 1 of the block starting at c0,
+// so slot 0 is the column left of the block (or the missing column -1).
+inline constexpr int kBlockCols = 512;
+inline constexpr int kSlots = kBlockCols + 8;
+inline constexpr int kSpringRows = 3 + 2 * 9;
 
 }  // namespace pond::sim
