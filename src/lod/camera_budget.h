@@ -1,0 +1,41 @@
+#pragma once
+// The camera of one frame and what it allows each node: the world distance by which a left-out
+// node may miss its covering triangle. With the LOD screen-space error of the contract,
+//   error_px = distance / depth * height / (2 tan(fovy / 2))  <=  tau
+// is the same as distance <= tau * depth / K with K = height / (2 tan(fovy / 2)). Nodes outside
+// the view frustum (behind the camera or projecting outside the viewport) may be left out freely:
+// their budget is +infinity.
+#include <array>
+#include <cstddef>
+
+#include "lod/node_positions.h"
+
+namespace pond::lod {
+
+struct Camera {
+  std::array<double, 3> eye{0, 10, 0};
+  std::array<double, 3> target{0, 0, 1};
+  double fovy_degrees = 60;
+  int width = 1280, height = 720;
+};
+
+// Throws InputError naming the problem: non-finite values, fovy outside (0, 180), a zero
+// viewport, eye == target, or tolerance not > 0.
+void validate(const Camera& camera, double tolerance_px);
+
+// The view basis. Up is world +y; looking straight up or down there is no roll defined, so the
+// frustum is widened to the cone around the viewport's diagonal (conservative for any roll).
+struct ViewBasis {
+  std::array<double, 3> eye, forward, right, up;
+  double tan_x = 0, tan_y = 0;  // half extents of the viewport at depth 1
+  bool cone = false;            // true when looking along +-y
+  double pixels_per_radian = 0;  // K = height / (2 tan(fovy / 2))
+};
+ViewBasis view_basis(const Camera& camera);
+
+// Writes budget[n] (world units, already shrunk by a small relative margin so that float
+// rounding never lets a node past tau) for every node of `positions`.
+void node_budgets(const NodePositions& positions, const Camera& camera, double tolerance_px,
+                  float* budget);
+
+}  // namespace pond::lod

@@ -1,0 +1,138 @@
+#include "lod/lod_builder.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "core/errors.h"
+#include "lod/error_bounds.h"
+#include "lod/triangle_scan.h"
+
+namespace pond::lod {
+namespace {
+
+constexpr std::uint8_t kActive = 1;
+// Each split vertex has up to two triangles (one per side of its hypotenuse); these bits say
+// their children were already queued, so no triangle is expanded twice.
+constexpr std::uint8_t kExpanded[2] = {2, 4};
+
+// Which side of its diamond's hypotenuse a triangle lies on, from its apex.
+int side_of(const Tri& t, Point m) {
+  return t.apex.y > m.y || (t.apex.y == m.y && t.apex.x > m.x) ? 1 : 0;
+}
+
+}  // namespace
+
+LodBuilder::LodBuilder(int rows, int cols) : grid_(rows, cols) {
+  const std::size_t n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
+  x_.resize(n), y_.resize(n), z_.resize(n);
+  budget_.resize(n), bound_.resize(n), min_budget_.resize(n);
+  state_.resize(n);
+}
+
+std::size_t LodBuilder::max_indices() const {
+  return 6 * static_cast<std::size_t>(rows() - 1) * static_cast<std::size_t>(cols() - 1);
+}
+
+bool LodBuilder::leaf_is_fine(const Tri& t, std::uint32_t mid) {
+  ++stats_.tested;
+  if (bound_[mid] <= min_budget_[mid]) {
+    ++stats_.proved;
+    return true;
+  }
+  // Quick reject: the midpoint itself is over budget.
+  const std::uint32_t l = grid_.id(t.left), r = grid_.id(t.right);
+  const double dx = x_[mid] - 0.5 * (double(x_[l]) + x_[r]);
+  const double dy = y_[mid] - 0.5 * (double(y_[l]) + y_[r]);
+  const double dz = z_[mid] - 0.5 * (double(z_[l]) + z_[r]);
+  const double b = budget_[mid];
+  if (dx * dx + dy * dy + dz * dz > b * b) return false;
+  ++stats_.scanned;
+  return within_budget(grid_, soa_positions(x_.data(), y_.data(), z_.data(), rows(), cols()),
+                       budget_.data(), t, &stats_.scanned_nodes);
+}
+
+// Activates v and, first, its parents (the dependency closure that keeps the mesh conforming),
+// then queues the triangles of v's diamond so that their new children get tested.
+void LodBuilder::activate(Point v) {
+  std::uint8_t& s = state_[grid_.id(v)];
+  if (s & kActive) return;
+  s |= kActive;
+  const Diamond d = GridHierarchy::diamond(v);
+  for (Point p : d.parents)
+    if (grid_.inside(p)) activate(p);
+  for (Point p : d.parents)
+    if (grid_.inside(p)) work_.push_back(oriented(p, d.end0, d.end1));
+}
+
+std::size_t LodBuilder::build(const NodePositions& p, const Camera& camera, double tolerance_px,
+                              std::span<std::uint32_t> out) {
+  validate(camera, tolerance_px);
+  if (p.rows != rows() || p.cols != cols())
+    throw InputError("positions are " + std::to_string(p.rows) + " x " + std::to_string(p.cols) +
+                     " but the LOD builder was made for " + std::to_string(rows()) + " x " +
+                     std::to_string(cols()));
+  if (out.size() < max_indices())
+    throw std::length_error("LOD index array holds " + std::to_string(out.size()) +
+                            " indices, needs " + std::to_string(max_indices()));
+  stats_ = {};
+  const std::size_t n = p.nodes();
+  for (std::size_t k = 0; k < n; ++k) {
+    x_[k] = p.x[k * p.stride], y_[k] = p.y[k * p.stride], z_[k] = p.z[k * p.stride];
+    if (!std::isfinite(x_[k]) || !std::isfinite(y_[k]) || !std::isfinite(z_[k]))
+      throw InputError("node " + std::to_string(k) + " (row " + std::to_string(k / cols()) +
+                       ", col " + std::to_string(k % cols()) + ") has a non-finite position");
+  }
+  const NodePositions own = soa_positions(x_.data(), y_.data(), z_.data(), rows(), cols());
+  node_budgets(own, camera, tolerance_px, budget_.data());
+  nested_bounds(grid_, own, budget_.data(), bound_.data(), min_budget_.data());
+
+  const std::vector<std::uint8_t>& always = grid_.always_split();
+  for (std::size_t k = 0; k < n; ++k) state_[k] = always[k] ? kActive : 0;
+  work_.assign(grid_.roots().begin(), grid_.roots().end());
+  while (!work_.empty()) {
+    const Tri t = work_.back();
+    work_.pop_back();
+    Point m;
+    if (!midpoint(t, m)) continue;  // a half cell: no node inside
+    const std::uint32_t mid = grid_.id(m);
+    std::uint8_t& s = state_[mid];
+    if (!(s & kActive)) {
+      if (leaf_is_fine(t, mid)) continue;
+      activate(m);  // queues t again, now with an active midpoint
+      continue;
+    }
+    const std::uint8_t bit = kExpanded[side_of(t, m)];
+    if (s & bit) continue;
+    s |= bit;
+    work_.push_back(child_left(t, m));
+    work_.push_back(child_right(t, m));
+  }
+
+  std::uint32_t* cursor = out.data();
+  for (const Tri& root : grid_.roots()) emit(root, true, cursor);
+  const std::size_t written = static_cast<std::size_t>(cursor - out.data());
+  stats_.triangles = written / 3;
+  return written;
+}
+
+// Depth first; entering each triangle at the hypotenuse end the previous one left at, the leaves
+// form a Sierpinski curve, so consecutive triangles share vertices.
+void LodBuilder::emit(const Tri& t, bool enter_left, std::uint32_t*& out) const {
+  Point m;
+  if (midpoint(t, m) && (state_[grid_.id(m)] & kActive)) {
+    if (enter_left) {
+      emit(child_left(t, m), false, out);
+      emit(child_right(t, m), false, out);
+    } else {
+      emit(child_right(t, m), true, out);
+      emit(child_left(t, m), true, out);
+    }
+    return;
+  }
+  *out++ = grid_.id(t.apex);
+  *out++ = grid_.id(t.left);
+  *out++ = grid_.id(t.right);
+}
+
+}  // namespace pond::lod

@@ -1,0 +1,32 @@
+#pragma once
+// A read-only strided view of the R x C node positions the LOD builder reads each frame. Node
+// (row, col) has index n = row * cols + col and its x, y, z at x[n * stride], y[n * stride],
+// z[n * stride], so the same view reads the STATE.npy interleaved layout (stride 6) and
+// structure-of-arrays buffers (stride 1) without a copy.
+#include <cstddef>
+
+namespace pond::lod {
+
+struct NodePositions {
+  const float* x = nullptr;
+  const float* y = nullptr;
+  const float* z = nullptr;
+  std::size_t stride = 1;  // floats between two consecutive nodes' x
+  int rows = 0, cols = 0;
+
+  std::size_t nodes() const { return static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols); }
+};
+
+// `data` holds rows * cols records of `stride` floats starting x, y, z (STATE.npy: stride 6).
+inline NodePositions interleaved_positions(const float* data, int rows, int cols,
+                                           std::size_t stride = 6) {
+  return {data, data + 1, data + 2, stride, rows, cols};
+}
+
+// Three separate arrays of rows * cols floats.
+inline NodePositions soa_positions(const float* x, const float* y, const float* z, int rows,
+                                   int cols) {
+  return {x, y, z, 1, rows, cols};
+}
+
+}  // namespace pond::lod

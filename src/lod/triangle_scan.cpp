@@ -1,0 +1,68 @@
+#include "lod/triangle_scan.h"
+
+#include <algorithm>
+#include <climits>
+
+namespace pond::lod {
+namespace {
+
+// The columns where row y meets the closed triangle: the edges of hierarchy triangles run at 0,
+// 45 or 90 degrees, so every crossing is an integer column.
+bool row_span(const Tri& t, int y, int& x0, int& x1) {
+  x0 = INT_MAX, x1 = INT_MIN;
+  const Point v[3] = {t.apex, t.left, t.right};
+  for (int k = 0; k < 3; ++k) {
+    const Point a = v[k], b = v[(k + 1) % 3];
+    if (a.y == b.y) {
+      if (a.y == y) x0 = std::min({x0, a.x, b.x}), x1 = std::max({x1, a.x, b.x});
+    } else if (y >= std::min(a.y, b.y) && y <= std::max(a.y, b.y)) {
+      const int x = a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
+      x0 = std::min(x0, x), x1 = std::max(x1, x);
+    }
+  }
+  return x0 <= x1;
+}
+
+}  // namespace
+
+bool within_budget(const GridHierarchy& grid, const NodePositions& p, const float* budget,
+                   const Tri& t, long long* visited) {
+  // Legs apex->left and apex->right are orthogonal and of equal length, so the barycentric
+  // weights of left and right are plain projections onto them.
+  const int lx = t.left.x - t.apex.x, ly = t.left.y - t.apex.y;
+  const int rx = t.right.x - t.apex.x, ry = t.right.y - t.apex.y;
+  const double inv_len2 = 1.0 / (lx * lx + ly * ly);
+  const std::uint32_t a = grid.id(t.apex), l = grid.id(t.left), r = grid.id(t.right);
+  const double ax = p.x[a], ay = p.y[a], az = p.z[a];
+  const double lx3 = p.x[l] - ax, ly3 = p.y[l] - ay, lz3 = p.z[l] - az;
+  const double rx3 = p.x[r] - ax, ry3 = p.y[r] - ay, rz3 = p.z[r] - az;
+  const int y0 = std::min({t.apex.y, t.left.y, t.right.y});
+  const int y1 = std::max({t.apex.y, t.left.y, t.right.y});
+  const std::size_t cols = static_cast<std::size_t>(grid.cols());
+  long long count = 0;
+  bool ok = true;
+  for (int y = y0; y <= y1 && ok; ++y) {
+    int x0, x1;
+    if (!row_span(t, y, x0, x1)) continue;
+    const int dy = y - t.apex.y;
+    for (int x = x0; x <= x1; ++x) {
+      const int dx = x - t.apex.x;
+      const double u = (dx * lx + dy * ly) * inv_len2, w = (dx * rx + dy * ry) * inv_len2;
+      const std::size_t n = static_cast<std::size_t>(y) * cols + static_cast<std::size_t>(x);
+      const double ex = p.x[n] - (ax + u * lx3 + w * rx3);
+      const double ey = p.y[n] - (ay + u * ly3 + w * ry3);
+      const double ez = p.z[n] - (az + u * lz3 + w * rz3);
+      const double b = budget[n];
+      if (ex * ex + ey * ey + ez * ez > b * b) {
+        ok = false;
+        count += x - x0 + 1;
+        break;
+      }
+    }
+    if (ok) count += x1 - x0 + 1;
+  }
+  if (visited) *visited += count;
+  return ok;
+}
+
+}  // namespace pond::lod

@@ -1,0 +1,14 @@
+#pragma once
+// The exact test of one candidate leaf: does every node in the closed triangle lie within its
+// budget of the triangle's interpolation (barycentric in index space)? Used when the nested
+// bound cannot prove it; stops at the first node over budget.
+#include "lod/grid_hierarchy.h"
+#include "lod/node_positions.h"
+
+namespace pond::lod {
+
+// positions: stride 1. Counts the nodes visited into *visited (statistics).
+bool within_budget(const GridHierarchy& grid, const NodePositions& positions, const float* budget,
+                   const Tri& t, long long* visited);
+
+}  // namespace pond::lod

@@ -1,0 +1,191 @@
+// The LOD builder against the contract, checked by the independent checkers of mesh_checker.h.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/errors.h"
+#include "lod/lod_builder.h"
+#include "lod/mesh_checker.h"
+#include "lod/rippled_states.h"
+#include "sim/cpu_solver.h"
+#include "sim/scene.h"
+
+namespace pond::lod_test {
+namespace {
+
+struct Built {
+  std::vector<std::uint32_t> tris;
+  lod::BuildStats stats;
+};
+
+Built build(const std::vector<float>& state, int rows, int cols, const CheckCamera& c, double tau) {
+  lod::LodBuilder builder(rows, cols);
+  std::vector<std::uint32_t> out(builder.max_indices());
+  lod::Camera cam{c.eye, c.target, c.fovy_degrees, c.width, c.height};
+  const std::size_t n = builder.build(lod::interleaved_positions(state.data(), rows, cols), cam, tau, out);
+  out.resize(n);
+  return {out, builder.stats()};
+}
+
+// Builds and holds the result to every check; returns the triangle count.
+std::size_t build_and_check(const std::vector<float>& state, int rows, int cols,
+                            const CheckCamera& cam, double tau, const std::string& what) {
+  const Built b = build(state, rows, cols, cam, tau);
+  EXPECT_EQ(topology_problem(b.tris, rows, cols), "") << what;
+  const ErrorReport e = screen_errors(b.tris, rows, cols, state, cam);
+  EXPECT_EQ(e.uncovered, 0u) << what;
+  EXPECT_LE(e.max_error_px, tau) << what << ": " << e.left_out_in_view << " left-out nodes in view";
+  return b.tris.size() / 3;
+}
+
+// Cameras around a rows x cols pond: near, far, grazing, from below, straight down, inside.
+std::vector<std::pair<std::string, CheckCamera>> cameras(int rows, int cols) {
+  const double cx = (cols - 1) / 2.0, cz = (rows - 1) / 2.0, size = std::max(rows, cols);
+  return {
+      {"near", {{cx, 2.0, cz - 3}, {cx, 0, cz + 5}, 60, 640, 480}},
+      {"oblique", {{cx, 0.6 * size, -0.5 * size}, {cx, 0, cz}, 50, 1280, 720}},
+      {"far", {{-3 * size, 2 * size, -3 * size}, {cx, 0, cz}, 30, 800, 600}},
+      {"grazing", {{-2, 0.3, cz}, {cols + 10.0, 0.1, cz + 1}, 70, 1280, 720}},
+      {"below", {{cx + 1, -0.4 * size, cz - 2}, {cx, 0, cz}, 90, 600, 800}},
+      {"down", {{cx, 0.8 * size, cz}, {cx, 0, cz}, 60, 1024, 768}},
+      {"narrow", {{cx, 3, -5}, {cx + 2, 0, cz}, 5, 300, 200}},
+  };
+}
+
+void sweep(int rows, int cols, const std::vector<float>& state, const std::string& name) {
+  for (const auto& [cam_name, cam] : cameras(rows, cols))
+    for (double tau : {0.5, 1.0, 4.0})
+      build_and_check(state, rows, cols, cam, tau,
+                      name + " " + std::to_string(rows) + "x" + std::to_string(cols) + " " + cam_name +
+                          " tau " + std::to_string(tau));
+}
+
+TEST(LodBuilder, TinyGridsAreValidFromEveryCamera) {
+  for (auto [rows, cols] : {std::pair{2, 2}, {2, 5}, {5, 2}, {3, 3}, {3, 97}, {97, 3}, {4, 7}})
+    sweep(rows, cols, analytic_ripples(rows, cols, 3, 0.5, 7u + static_cast<unsigned>(rows * cols)),
+          "ripples");
+}
+
+TEST(LodBuilder, RectangularRippledGridsAreValidFromEveryCamera) {
+  std::uint32_t seed = 11;
+  for (auto [rows, cols] : {std::pair{17, 17}, {33, 20}, {20, 33}, {50, 50}, {65, 65}, {37, 100}})
+    sweep(rows, cols, analytic_ripples(rows, cols, 6, 0.8, seed++), "ripples");
+}
+
+TEST(LodBuilder, SimulatedRainIsValidFromEveryCamera) {
+  sweep(65, 65, simulated_pond(65, 65, 60, 6, 10, 3), "rain");
+  sweep(49, 70, simulated_pond(49, 70, 20, 2, 25, 4), "splashes");
+}
+
+TEST(LodBuilder, BigRainPondStaysWithinTolerance) {
+  const std::vector<float> s = simulated_pond(257, 257, 400, 20, 20, 5);
+  const CheckCamera cam{{128, 35, -30}, {128, 0, 110}, 60, 1280, 720};
+  const std::size_t t = build_and_check(s, 257, 257, cam, 1.0, "rain 257");
+  EXPECT_LT(t, 131072u / 4);  // a real reduction
+}
+
+TEST(LodBuilder, FlatGridCollapsesToTwoTriangles) {
+  for (int side : {2, 3, 33, 257}) {
+    const std::vector<float> s = flat_pond(side, side, 1.5);
+    for (const auto& [name, cam] : cameras(side, side)) {
+      if (name == "grazing") continue;  // the eye lies in the plane: nodes on the view ray
+      const Built b = build(s, side, side, cam, 0.25);
+      EXPECT_EQ(b.tris.size() / 3, 2u) << side << " " << name;
+      EXPECT_EQ(topology_problem(b.tris, side, side), "");
+    }
+  }
+}
+
+TEST(LodBuilder, FlatGridOfAnySizeStaysCoarse) {
+  // Not 2^k + 1: the tiles of the dyadic decomposition remain, and nothing more.
+  const std::vector<float> s = flat_pond(50, 50);
+  const auto cam = cameras(50, 50)[1].second;
+  const Built b = build(s, 50, 50, cam, 1.0);
+  EXPECT_EQ(topology_problem(b.tris, 50, 50), "");
+  EXPECT_LT(b.tris.size() / 3, 2u * 49 * 49 / 4);
+}
+
+TEST(LodBuilder, TinyToleranceGivesTheFullMesh) {
+  for (auto [rows, cols] : {std::pair{2, 2}, {3, 97}, {33, 33}, {40, 23}}) {
+    const std::vector<float> s = analytic_ripples(rows, cols, 5, 0.5, 21);
+    const CheckCamera cam{{(cols - 1) / 2.0, 3.0 * std::max(rows, cols), (rows - 1) / 2.0 - 1},
+                          {(cols - 1) / 2.0, 0, (rows - 1) / 2.0}, 90, 1000, 1000};
+    const Built b = build(s, rows, cols, cam, 1e-7);
+    EXPECT_EQ(b.tris.size() / 3, 2u * (rows - 1) * (cols - 1)) << rows << "x" << cols;
+    EXPECT_EQ(topology_problem(b.tris, rows, cols), "");
+  }
+}
+
+TEST(LodBuilder, NothingInViewCollapses) {
+  const std::vector<float> s = analytic_ripples(65, 65, 8, 1.0, 2);
+  const CheckCamera away{{32, 5, -10}, {32, 5, -20}, 60, 640, 480};  // looking away from the pond
+  const Built b = build(s, 65, 65, away, 1.0);
+  EXPECT_EQ(b.tris.size() / 3, 2u);
+}
+
+TEST(LodBuilder, SameInputGivesSameIndices) {
+  const std::vector<float> s = analytic_ripples(65, 40, 8, 1.0, 9);
+  const CheckCamera cam = cameras(65, 40)[1].second;
+  EXPECT_EQ(build(s, 65, 40, cam, 1.0).tris, build(s, 65, 40, cam, 1.0).tris);
+}
+
+TEST(LodBuilder, ReadsStructureOfArraysLikeInterleaved) {
+  const int rows = 33, cols = 21;
+  const std::vector<float> s = analytic_ripples(rows, cols, 5, 0.7, 4);
+  std::vector<float> x, y, z;
+  for (std::size_t n = 0; n < s.size() / 6; ++n)
+    x.push_back(s[n * 6]), y.push_back(s[n * 6 + 1]), z.push_back(s[n * 6 + 2]);
+  const CheckCamera c = cameras(rows, cols)[0].second;
+  const lod::Camera cam{c.eye, c.target, c.fovy_degrees, c.width, c.height};
+  lod::LodBuilder builder(rows, cols);
+  std::vector<std::uint32_t> out(builder.max_indices());
+  const std::size_t n = builder.build(lod::soa_positions(x.data(), y.data(), z.data(), rows, cols), cam, 1.0, out);
+  out.resize(n);
+  EXPECT_EQ(out, build(s, rows, cols, c, 1.0).tris);
+}
+
+TEST(LodBuilder, RejectsBadInput) {
+  const std::vector<float> s = flat_pond(9, 9);
+  lod::LodBuilder builder(9, 9);
+  std::vector<std::uint32_t> out(builder.max_indices());
+  const auto view = lod::interleaved_positions(s.data(), 9, 9);
+  const lod::Camera good{{4, 5, -3}, {4, 0, 4}, 60, 640, 480};
+  EXPECT_NO_THROW(builder.build(view, good, 1.0, out));
+  lod::Camera c = good;
+  c.fovy_degrees = 180;
+  EXPECT_THROW(builder.build(view, c, 1.0, out), InputError);
+  c = good, c.target = c.eye;
+  EXPECT_THROW(builder.build(view, c, 1.0, out), InputError);
+  c = good, c.width = 0;
+  EXPECT_THROW(builder.build(view, c, 1.0, out), InputError);
+  EXPECT_THROW(builder.build(view, good, 0.0, out), InputError);
+  EXPECT_THROW(builder.build(lod::interleaved_positions(s.data(), 3, 27), good, 1.0, out), InputError);
+  std::vector<std::uint32_t> small(out.size() - 1);
+  EXPECT_THROW(builder.build(view, good, 1.0, small), std::length_error);
+  std::vector<float> bad = s;
+  bad[40 * 6 + 1] = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_THROW(builder.build(lod::interleaved_positions(bad.data(), 9, 9), good, 1.0, out), InputError);
+  EXPECT_THROW(lod::LodBuilder(1, 5), std::invalid_argument);
+}
+
+// The paper's figure 8: its 50 x 50 pond (the default scene: a splash beside an island) rippling,
+// seen obliquely from above. Paper: 4802 triangles full, 2431 simplified.
+TEST(LodBuilder, PapersFigureEightCase) {
+  sim::CpuSolver solver(sim::build_model(sim::load_scene("")), sim::Backend::scalar, 1);
+  solver.advance(60);
+  const std::vector<float> s = sim::to_world_interleaved(solver.state(), solver.model());
+  const CheckCamera cam{{24.5, 28, -22}, {24.5, 0, 26}, 60, 1024, 768};
+  for (double tau : {0.5, 1.0, 2.0}) {
+    const std::size_t t = build_and_check(s, 50, 50, cam, tau, "figure 8");
+    std::printf("paper's 50x50 case at tau %.1f px: %zu triangles (full 4802, paper 2431)\n", tau, t);
+    if (tau == 1.0) {
+      EXPECT_LT(t, 2431u);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pond::lod_test
