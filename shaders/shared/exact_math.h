@@ -41,7 +41,8 @@ POND_CONST uint kNodeFree = 0u;
 POND_CONST uint kNodeVertical = 1u;  // x and z held, y free
 POND_CONST uint kNodeFixed = 2u;     // never moves
 
-// Scalar reference of the exact reciprocal square root (x >= 0; rsqrt(0) is large but finite).
+// Scalar reference of the exact reciprocal square root, for normal floats x > 0. (x = 0, two
+// coincident nodes, gives NaN, which stops the run as a blow-up.)
 POND_FN float rsqrt_exact(float x, int steps) {
   POND_PRECISE float half_x = x * 0.5f;
   POND_PRECISE float y = uintBitsToFloat(kRsqrtMagic - (floatBitsToUint(x) >> 1u));
@@ -56,7 +57,7 @@ POND_FN float rsqrt_exact(float x, int steps) {
 
 // Hooke's stretch factor of a spring with squared length l2 and rest length `rest`:
 // the force on its first node is (x_b - x_a) * stiffness * spring_factor(l2, rest).
-POND_FN float spring_factor(float l2, float rest, int steps) {
+POND_FN POND_PRECISE float spring_factor(float l2, float rest, int steps) {
   POND_PRECISE float r = rsqrt_exact(l2, steps);
   POND_PRECISE float s = rest * r;
   return 1.0f - s;

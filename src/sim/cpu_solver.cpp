@@ -38,9 +38,9 @@ void CpuSolver::set_state(WaterState state, std::int64_t steps_done) {
 }
 
 void CpuSolver::substep() {
-  const StepView v{cur_.x.data(),   cur_.y.data(),   cur_.z.data(),   cur_.vx.data(),
-                   cur_.vy.data(),  cur_.vz.data(),  next_.x.data(),  next_.y.data(),
-                   next_.z.data(),  next_.vx.data(), next_.vy.data(), next_.vz.data(),
+  const StepView v{cur_.ux.data(),  cur_.uy.data(),  cur_.uz.data(),  cur_.vx.data(),
+                   cur_.vy.data(),  cur_.vz.data(),  next_.ux.data(), next_.uy.data(),
+                   next_.uz.data(), next_.vx.data(), next_.vy.data(), next_.vz.data(),
                    model_.kinds.data(), model_.rows, model_.cols, model_.constants};
   threads_->run(parts_, [&](int p) {
     const int r0 = static_cast<int>(static_cast<long long>(model_.rows) * p / parts_);

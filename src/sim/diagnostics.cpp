@@ -10,19 +10,21 @@ Diagnostics diagnose(const WaterState& s, const WaterModel& m) {
   Diagnostics d;
   const double h = m.spacing, c = m.physics.stiffness, mass = m.physics.mass;
   const double edge = m.physics.rest_ratio * h, diag = edge * std::sqrt(2.0);
-  const int R = m.rows, C = m.cols;
+  const int R = m.rows;
+  const std::size_t C = static_cast<std::size_t>(m.cols);
   auto spring = [&](std::size_t a, std::size_t b, double rest) {
-    const double dx = (double(s.x[b]) - s.x[a]) * h, dy = (double(s.y[b]) - s.y[a]) * h,
-                 dz = (double(s.z[b]) - s.z[a]) * h;
+    const double dx = (double(s.ux[b]) - s.ux[a] + double(b % C) - double(a % C)) * h,
+                 dy = (double(s.uy[b]) - s.uy[a]) * h,
+                 dz = (double(s.uz[b]) - s.uz[a] + double(b / C) - double(a / C)) * h;
     const double stretch = std::sqrt(dx * dx + dy * dy + dz * dz) - rest;
     d.spring += 0.5 * c * stretch * stretch;
   };
   for (int i = 0; i < R; ++i)
-    for (int j = 0; j < C; ++j) {
+    for (std::size_t j = 0; j < C; ++j) {
       const std::size_t n = static_cast<std::size_t>(i) * C + j;
       const double vx = s.vx[n] * h, vy = s.vy[n] * h, vz = s.vz[n] * h;
       d.kinetic += 0.5 * mass * (vx * vx + vy * vy + vz * vz);
-      const double ux = (double(s.x[n]) - j) * h, uy = double(s.y[n]) * h, uz = (double(s.z[n]) - i) * h;
+      const double ux = s.ux[n] * h, uy = s.uy[n] * h, uz = s.uz[n] * h;
       d.max_displacement = std::max(d.max_displacement, std::sqrt(ux * ux + uy * uy + uz * uz));
       if (j + 1 < C) spring(n, n + 1, edge);
       if (i + 1 < R) {

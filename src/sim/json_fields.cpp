@@ -67,9 +67,11 @@ std::int64_t JsonFields::integer(const char* key, std::int64_t fallback, std::in
     if (v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(max))
       fail(key, "must be at most " + std::to_string(max));
     i = v.get<std::int64_t>();
-  } else if (v.is_number_float() && std::floor(v.get<double>()) == v.get<double>() &&
-             std::fabs(v.get<double>()) < 9.0e15) {
-    i = static_cast<std::int64_t>(v.get<double>());
+  } else if (v.is_number_float() && std::floor(v.get<double>()) == v.get<double>()) {
+    const double d = v.get<double>();
+    if (d > static_cast<double>(max)) fail(key, "must be at most " + std::to_string(max));
+    if (d < static_cast<double>(min)) fail(key, "must be at least " + std::to_string(min));
+    i = static_cast<std::int64_t>(d);
   } else {
     fail(key, std::string("must be an integer, not ") +
                   (v.is_number() ? "a fractional number" : type_name(v)));

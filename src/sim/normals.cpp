@@ -15,10 +15,14 @@ Normals compute_normals(const WaterState& s, const WaterModel& m) {
   auto at = [C](int i, int j) { return static_cast<std::size_t>(i) * C + j; };
   for (int i = 0; i < R; ++i)
     for (int j = 0; j < C; ++j) {
-      const std::size_t up = at(std::min(i + 1, R - 1), j), down = at(std::max(i - 1, 0), j);
-      const std::size_t right = at(i, std::min(j + 1, C - 1)), left = at(i, std::max(j - 1, 0));
-      const float ax = s.x[up] - s.x[down], ay = s.y[up] - s.y[down], az = s.z[up] - s.z[down];
-      const float bx = s.x[right] - s.x[left], by = s.y[right] - s.y[left], bz = s.z[right] - s.z[left];
+      const int i1 = std::min(i + 1, R - 1), i0 = std::max(i - 1, 0);
+      const int j1 = std::min(j + 1, C - 1), j0 = std::max(j - 1, 0);
+      const std::size_t up = at(i1, j), down = at(i0, j), right = at(i, j1), left = at(i, j0);
+      // Position differences = displacement differences + the rest offset (i1 - i0 or j1 - j0).
+      const float ax = s.ux[up] - s.ux[down], ay = s.uy[up] - s.uy[down],
+                  az = (s.uz[up] - s.uz[down]) + static_cast<float>(i1 - i0);
+      const float bx = (s.ux[right] - s.ux[left]) + static_cast<float>(j1 - j0),
+                  by = s.uy[right] - s.uy[left], bz = s.uz[right] - s.uz[left];
       const float cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
       const float l2 = (cx * cx + cy * cy) + cz * cz;
       const float r = l2 > 0.0f ? shared::rsqrt_exact(l2, shared::kRsqrtStepsExact) : 0.0f;

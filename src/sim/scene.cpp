@@ -63,7 +63,7 @@ void parse_physics(JsonFields f, Physics& p) {
     const int needed = static_cast<int>(std::floor(p.dt / bound)) + 1;
     char msg[256];
     std::snprintf(msg, sizeof msg,
-                  "dt %g%s exceeds the explicit-Euler stability bound %.6g for mass %g, "
+                  "%g%s exceeds the explicit-Euler stability bound %.6g for mass %g, "
                   "stiffness %g, damping %g; use dt < %.6g or physics.substeps >= %d",
                   p.dt, p.substeps > 1 ? (" / " + std::to_string(p.substeps) + " substeps").c_str() : "",
                   bound, p.mass, p.stiffness, p.damping, bound, needed);

@@ -2,25 +2,18 @@
 
 namespace pond::sim {
 
-WaterState rest_state(const WaterModel& m) {
-  WaterState s(m.nodes());
-  for (int i = 0; i < m.rows; ++i)
-    for (int j = 0; j < m.cols; ++j) {
-      const std::size_t n = static_cast<std::size_t>(i) * m.cols + j;
-      s.x[n] = static_cast<float>(j);
-      s.z[n] = static_cast<float>(i);
-    }
-  return s;
-}
+WaterState rest_state(const WaterModel& m) { return WaterState(m.nodes()); }
 
 std::vector<float> to_world_interleaved(const WaterState& s, const WaterModel& m) {
   std::vector<float> out(s.nodes() * 6);
   const float h = m.spacing;
   for (std::size_t n = 0; n < s.nodes(); ++n) {
     float* o = &out[n * 6];
-    o[0] = s.x[n] * h;
-    o[1] = s.y[n] * h;
-    o[2] = s.z[n] * h;
+    const auto i = static_cast<float>(n / static_cast<std::size_t>(m.cols));
+    const auto j = static_cast<float>(n % static_cast<std::size_t>(m.cols));
+    o[0] = (j + s.ux[n]) * h;
+    o[1] = s.uy[n] * h;
+    o[2] = (i + s.uz[n]) * h;
     o[3] = s.vx[n] * h;
     o[4] = s.vy[n] * h;
     o[5] = s.vz[n] * h;
@@ -33,9 +26,11 @@ WaterState from_world_interleaved(const float* d, const WaterModel& m) {
   const float inv_h = 1.0f / m.spacing;
   for (std::size_t n = 0; n < s.nodes(); ++n) {
     const float* p = d + n * 6;
-    s.x[n] = p[0] * inv_h;
-    s.y[n] = p[1] * inv_h;
-    s.z[n] = p[2] * inv_h;
+    const auto i = static_cast<float>(n / static_cast<std::size_t>(m.cols));
+    const auto j = static_cast<float>(n % static_cast<std::size_t>(m.cols));
+    s.ux[n] = p[0] * inv_h - j;
+    s.uy[n] = p[1] * inv_h;
+    s.uz[n] = p[2] * inv_h - i;
     s.vx[n] = p[3] * inv_h;
     s.vy[n] = p[4] * inv_h;
     s.vz[n] = p[5] * inv_h;

@@ -2,6 +2,11 @@
 // The water state in structure-of-arrays form (one array per component, row-major nodes), in grid
 // units (world / spacing). SoA lets every SIMD backend load W neighbouring nodes of one component
 // with one instruction.
+//
+// Positions are stored as displacements u from the rest position (j, 0, i), not as absolute
+// coordinates: a float near 1000 has an ulp of 6e-5, which on a large grid would quantize the
+// horizontal motion and add noise to spring strains of that order; a displacement near 0 keeps full
+// precision, and the rounding of the physics is the same everywhere on the grid.
 #include <cstddef>
 #include <vector>
 
@@ -11,15 +16,15 @@
 namespace pond::sim {
 
 struct WaterState {
-  AlignedBuffer<float> x, y, z, vx, vy, vz;
+  AlignedBuffer<float> ux, uy, uz, vx, vy, vz;
 
   WaterState() = default;
   explicit WaterState(std::size_t nodes)
-      : x(nodes), y(nodes), z(nodes), vx(nodes), vy(nodes), vz(nodes) {}
-  std::size_t nodes() const { return x.size(); }
+      : ux(nodes), uy(nodes), uz(nodes), vx(nodes), vy(nodes), vz(nodes) {}
+  std::size_t nodes() const { return ux.size(); }
 };
 
-// Every node at rest: (j, 0, i) in grid units, zero velocity.
+// Every node at rest: zero displacement, zero velocity.
 WaterState rest_state(const WaterModel& model);
 
 // The contract's dump layout: float32 (rows, cols, 6) = x, y, z, vx, vy, vz in world units.

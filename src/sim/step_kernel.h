@@ -9,17 +9,22 @@
 //    D1(j) = (i,j)->(i+1,j+1), D2(j) = (i,j+1)->(i+1,j). The band of row i-1 is kept from the
 //    previous row, so each spring is evaluated once per thread (the first row of a thread's range
 //    re-evaluates its lower band; same inputs, same bits).
-//  - The force term of spring a->b on a is  (x_b - x_a) * (1 - L * rsqrt(l2)),
+//  - Positions are displacements u from rest (state.h). The spring vector a->b, b being a's
+//    neighbour at row offset di and column offset dj (each -1, 0 or 1), is
+//        dx = (ux_b - ux_a) + dj,   dy = uy_b - uy_a,   dz = (uz_b - uz_a) + di,
+//    where "+ 0" is not performed (so only dx of row springs, dz of column springs, both of
+//    diagonals get an addition). The force term of spring a->b on a is  d * (1 - L * rsqrt(l2)),
 //    l2 = (dx*dx + dy*dy) + dz*dz,  rsqrt = seed + Newton steps (shared/exact_math.h). On b it is
-//    the exact negation (IEEE subtraction and multiplication are sign-symmetric), so evaluating it
-//    from either end (as the GPU does) gives the same bits.
+//    the exact negation (IEEE addition, subtraction and multiplication are sign-symmetric and the
+//    offset flips sign with the direction), so evaluating it from either end, as the GPU does,
+//    gives the same bits.
 //  - CANONICAL SUMMATION ORDER (the GPU shader follows it): node (i,j) sums its neighbour terms,
 //    starting from -0.0, in the order
 //        (i,j-1) (i,j+1) (i-1,j) (i+1,j) (i-1,j-1) (i+1,j+1) (i-1,j+1) (i+1,j-1).
 //    A missing neighbour (grid border) is skipped; here that is an addition of -0 or a subtraction
 //    of +0, both the exact identity on every float including signed zeros.
 //  - Integration (symplectic Euler, model.h):  v' = v + (G*kc - v*kd);  constrained velocity
-//    components become +0;  x' = x + v'*dt.
+//    components become +0;  u' = u + v'*dt.
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -73,12 +78,16 @@ struct StepKernel {
     return y;
   }
 
-  // The term of spring a->b on node a, stored in the three spring rows at `out` (x, y, z).
+  // The term of spring a->b on node a, b at column offset DJ and row offset DI from a, stored in
+  // the three spring rows at `out` (x, y, z).
+  template <int DJ, int DI>
   POND_KERNEL_INLINE static void spring(const StepView& v, std::size_t na, std::size_t nb,
                                         float rest, float* out) {
-    const F dx = W::sub(W::load(v.x + nb), W::load(v.x + na));
-    const F dy = W::sub(W::load(v.y + nb), W::load(v.y + na));
-    const F dz = W::sub(W::load(v.z + nb), W::load(v.z + na));
+    F dx = W::sub(W::load(v.ux + nb), W::load(v.ux + na));
+    const F dy = W::sub(W::load(v.uy + nb), W::load(v.uy + na));
+    F dz = W::sub(W::load(v.uz + nb), W::load(v.uz + na));
+    if constexpr (DJ != 0) dx = W::add(dx, W::set1(static_cast<float>(DJ)));
+    if constexpr (DI != 0) dz = W::add(dz, W::set1(static_cast<float>(DI)));
     const F l2 = W::add(W::add(W::mul(dx, dx), W::mul(dy, dy)), W::mul(dz, dz));
     const F f = W::sub(W::set1(1.0f), W::mul(W::set1(rest), rsqrt(l2)));
     W::store(out, W::mul(dx, f));
@@ -113,19 +122,19 @@ void block_springs(const StepView& v, int i, int c0, int c1, float* scratch, int
       using K = StepKernel<V, Steps>;
       const std::size_t n = row + j, up = n + C;
       const int s = j + slot0;
-      K::spring(v, n, n + 1, re, h + s);                       // H:  (i,j) -> (i,j+1)
-      K::spring(v, n, up + 1, rd, b + kBandD1 * kSlots + s);  // D1: (i,j) -> (i+1,j+1)
-      K::spring(v, n + 1, up, rd, b + kBandD2 * kSlots + s);  // D2: (i,j+1) -> (i+1,j)
+      K::template spring<1, 0>(v, n, n + 1, re, h + s);                      // H:  (i,j) -> (i,j+1)
+      K::template spring<1, 1>(v, n, up + 1, rd, b + kBandD1 * kSlots + s);  // D1: (i,j) -> (i+1,j+1)
+      K::template spring<-1, 1>(v, n + 1, up, rd, b + kBandD2 * kSlots + s);  // D2: (i,j+1) -> (i+1,j)
     });
     for_chunks<W>(c0, c1, [&]<class V>(int j) {
       const std::size_t n = row + j;
-      StepKernel<V, Steps>::spring(v, n, n + C, re, b + kBandS * kSlots + j + slot0);  // S
+      StepKernel<V, Steps>::template spring<0, 1>(v, n, n + C, re, b + kBandS * kSlots + j + slot0);  // S
 
     });
   } else {
     for_chunks<W>(lo, hi + 1, [&]<class V>(int j) {
       const std::size_t n = row + j;
-      StepKernel<V, Steps>::spring(v, n, n + 1, re, h + j + slot0);
+      StepKernel<V, Steps>::template spring<1, 0>(v, n, n + 1, re, h + j + slot0);
     });
     fill_band(scratch, cur, c1 - c0, -0.0f);
   }
@@ -163,9 +172,9 @@ POND_KERNEL_INLINE typename W::F integrate_at(const StepView& v, int i, int j, i
   const F kc = W::set1(v.k.kc), kd = W::set1(v.k.kd), dt = W::set1(v.k.dt);
   const typename W::M free_h = W::kind_below(v.kinds + n, 1);  // free nodes move horizontally
   const typename W::M free_v = W::kind_below(v.kinds + n, 2);  // free and vertical nodes move in y
-  const float* const pos[3] = {v.x, v.y, v.z};
+  const float* const pos[3] = {v.ux, v.uy, v.uz};
   const float* const vel[3] = {v.vx, v.vy, v.vz};
-  float* const opos[3] = {v.ox, v.oy, v.oz};
+  float* const opos[3] = {v.oux, v.ouy, v.ouz};
   float* const ovel[3] = {v.ovx, v.ovy, v.ovz};
   for (int c = 0; c < 3; ++c) {
     const int o = c * kSlots;

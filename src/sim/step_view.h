@@ -6,10 +6,11 @@
 
 namespace pond::sim {
 
-// Input and output arrays of one substep (SoA, grid units) and the model constants.
+// Input and output arrays of one substep (SoA, grid units: displacements u and velocities v) and
+// the model constants.
 struct StepView {
-  const float *x, *y, *z, *vx, *vy, *vz;
-  float *ox, *oy, *oz, *ovx, *ovy, *ovz;
+  const float *ux, *uy, *uz, *vx, *vy, *vz;
+  float *oux, *ouy, *ouz, *ovx, *ovy, *ovz;
   const std::uint8_t* kinds;
   int rows, cols;
   StepConstants k;

@@ -1,0 +1,149 @@
+// Every backend and every thread count gives the same bits, and the golden hash of the default
+// scene, shared by all of them (and by the IA-32 build and the GPU), is pinned here.
+#include <gtest/gtest.h>
+
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "core/errors.h"
+#include "sim/diagnostics.h"
+#include "test_util.h"
+
+namespace pond::sim {
+namespace {
+
+// The default scene after 1,000 steps, exact math. Changing the model's arithmetic changes it;
+// then every backend, the IA-32 build and the GPU must agree on the new value.
+constexpr std::uint64_t kGoldenDefaultScene1000 = 0x338fc857b8648871ull;
+
+std::vector<Backend> available() {
+  std::vector<Backend> out;
+  for (Backend b : {Backend::scalar, Backend::sse, Backend::avx2})
+    if (cpu_supports(b)) out.push_back(b);
+  return out;
+}
+
+std::string hex(std::uint64_t v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%016" PRIx64, v);
+  return buf;
+}
+
+TEST(Backends, GoldenHashOfTheDefaultScene) {
+  const WaterModel m = build_model(load_scene(""));
+  for (Backend b : available())
+    for (int threads : {1, 2}) {
+      CpuSolver solver(m, b, threads);
+      solver.advance(1000);
+      const std::uint64_t h = state_hash(solver.state(), m);
+      EXPECT_EQ(h, kGoldenDefaultScene1000)
+          << backend_name(b) << " x " << threads << " threads: actual hash " << hex(h);
+    }
+}
+
+struct Case {
+  const char* name;
+  Scene scene;
+  int steps;
+};
+
+std::vector<Case> matrix() {
+  using test::grid_scene;
+  using test::splash;
+  std::vector<Case> cases;
+  {
+    Scene s = grid_scene(50, 50);
+    s.perturbations.push_back(splash(25, 25, 2, 1));
+    cases.push_back({"paper 50x50", s, 400});
+  }
+  {
+    Scene s = grid_scene(41, 67, NodeKind::vertical);
+    s.constraints.push_back({NodeKind::fixed, 10, 15, 20, 30});
+    s.constraints.push_back({NodeKind::vertical, 30, 35, 5, 8});
+    s.perturbations.push_back(splash(20, 40, 3, 2, 0, PerturbTarget::velocity, PerturbMode::add));
+    s.perturbations.push_back(splash(5.5, 10.25, 1.5, 0.5, 37, PerturbTarget::position, PerturbMode::add));
+    s.perturbations.push_back(splash(30, 60, 2, -1, 80, PerturbTarget::velocity, PerturbMode::set));
+    s.perturbations.push_back(splash(12, 3, 2, 0.3, 150, PerturbTarget::position, PerturbMode::set));
+    cases.push_back({"41x67 constraints, every perturbation", s, 300});
+  }
+  {
+    Scene s = grid_scene(3, 97, NodeKind::free);
+    s.perturbations.push_back(splash(1, 50, 4, 1));
+    cases.push_back({"3x97 free border", s, 300});
+  }
+  {
+    Scene s = grid_scene(2, 2, NodeKind::free);
+    s.perturbations.push_back(splash(0.5, 0.5, 1, 0.2, 0, PerturbTarget::position));
+    cases.push_back({"2x2", s, 300});
+  }
+  {
+    Scene s = grid_scene(17, 9, NodeKind::free);
+    s.physics.rest_ratio = 0.9;
+    s.physics.substeps = 3;
+    s.perturbations.push_back(splash(8, 4, 2, 1));
+    cases.push_back({"17x9 pre-tension, substeps", s, 200});
+  }
+  {
+    // Wider than one column block (512) of the kernel, with a splash on the block boundary.
+    Scene s = grid_scene(24, 1100);
+    s.perturbations.push_back(splash(12, 511.5, 3, 1.5));
+    s.perturbations.push_back(splash(5, 1050, 2, 1, 10));
+    cases.push_back({"24x1100 across column blocks", s, 120});
+  }
+  {
+    Scene s = grid_scene(200, 90);  // tall: several row parts for threads
+    s.constraints.push_back({NodeKind::fixed, 99, 101, 0, 89});  // a wall at a part boundary
+    s.perturbations.push_back(splash(100, 45, 4, 2));
+    s.perturbations.push_back(splash(150, 20, 2, 1, 30));
+    cases.push_back({"200x90 wall", s, 150});
+  }
+  return cases;
+}
+
+TEST(Backends, AllBackendsAndThreadCountsAgreeBitForBit) {
+  for (const Case& c : matrix())
+    for (MathMode math : {MathMode::exact, MathMode::fast}) {
+      const WaterModel m = build_model(c.scene, math);
+      CpuSolver reference(m, Backend::scalar, 1);
+      reference.advance(c.steps);
+      const std::uint64_t want = state_hash(reference.state(), m);
+      for (Backend b : available())
+        for (int threads : {1, 2, 3}) {
+          CpuSolver solver(m, b, threads);
+          solver.advance(c.steps);
+          EXPECT_EQ(state_hash(solver.state(), m), want)
+              << c.name << ", " << backend_name(b) << " x " << threads << " threads, "
+              << (math == MathMode::exact ? "exact" : "fast");
+        }
+    }
+}
+
+TEST(Backends, ThreadPartsReallySplitTheRows) {
+  // Large enough for 2 parts: threads are used, so the equality above is not vacuous.
+  const WaterModel m = build_model(test::grid_scene(256, 256));
+  EXPECT_EQ(CpuSolver(m, Backend::scalar, 2).threads(), 2);
+}
+
+TEST(Backends, FastMathStaysCloseToExact) {
+  Scene s = test::grid_scene(50, 50);
+  s.perturbations.push_back(test::splash(25, 25, 2, 1));
+  const WaterState exact = test::run(s, 200, Backend::scalar, 1, MathMode::exact);
+  const WaterState fast = test::run(s, 200, Backend::scalar, 1, MathMode::fast);
+  double worst = 0, peak = 0;
+  for (std::size_t n = 0; n < exact.nodes(); ++n) {
+    worst = std::max(worst, double(std::fabs(exact.uy[n] - fast.uy[n])));
+    peak = std::max(peak, double(std::fabs(exact.uy[n])));
+  }
+  std::printf("fast vs exact after 200 steps: max |dy| %.3g of peak %.3g\n", worst, peak);
+  EXPECT_LT(worst, 1e-3 * peak);
+}
+
+TEST(Backends, ForcingAMissingBackendFailsClearly) {
+  if (cpu_supports(Backend::avx2)) GTEST_SKIP() << "this CPU has AVX2";
+  EXPECT_THROW(CpuSolver(build_model(test::grid_scene(4, 4)), Backend::avx2, 1), InputError);
+}
+
+}  // namespace
+}  // namespace pond::sim

@@ -1,0 +1,143 @@
+// Scene parsing: the contract's keys, defaults, and one-line errors naming the key's path.
+#include <gtest/gtest.h>
+
+#include "core/errors.h"
+#include "sim/scene.h"
+
+namespace pond::sim {
+namespace {
+
+// Parses `json` expecting an InputError whose message contains `needle`.
+std::string error_of(const std::string& json) {
+  try {
+    parse_scene(json, "test.json");
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.find('\n'), std::string::npos) << "multi-line message: " << m;
+    EXPECT_EQ(m.rfind("test.json: ", 0), 0u) << m;
+    return m;
+  }
+  ADD_FAILURE() << "no error for " << json;
+  return "";
+}
+
+TEST(Scene, ContractExampleParses) {
+  const Scene s = parse_scene(R"({
+    "grid":    {"rows": 50, "cols": 40, "spacing": 0.5},
+    "physics": {"mass": 4.0, "stiffness": 7.0, "damping": 0.05, "dt": 0.2},
+    "border":  "vertical",
+    "constraints":   [{"kind": "fixed", "rows": [20, 24], "cols": [30, 34]}],
+    "perturbations": [{"step": 3, "row": 25.5, "col": 25, "radius": 2.0, "amplitude": -1.0,
+                       "target": "position", "mode": "set"}]})",
+                              "x");
+  EXPECT_EQ(s.grid.rows, 50);
+  EXPECT_EQ(s.grid.cols, 40);
+  EXPECT_EQ(s.grid.spacing, 0.5);
+  EXPECT_EQ(s.border, NodeKind::vertical);
+  ASSERT_EQ(s.constraints.size(), 1u);
+  EXPECT_EQ(s.constraints[0].row0, 20);
+  EXPECT_EQ(s.constraints[0].col1, 34);
+  ASSERT_EQ(s.perturbations.size(), 1u);
+  EXPECT_EQ(s.perturbations[0].step, 3);
+  EXPECT_EQ(s.perturbations[0].row, 25.5);
+  EXPECT_EQ(s.perturbations[0].target, PerturbTarget::position);
+  EXPECT_EQ(s.perturbations[0].mode, PerturbMode::set);
+}
+
+TEST(Scene, EmptyObjectGivesTableOneDefaults) {
+  const Scene s = parse_scene("{}", "x");
+  EXPECT_EQ(s.grid.rows, 50);
+  EXPECT_EQ(s.grid.cols, 50);
+  EXPECT_EQ(s.grid.spacing, 1.0);
+  EXPECT_EQ(s.physics.mass, 4.0);
+  EXPECT_EQ(s.physics.stiffness, 7.0);
+  EXPECT_EQ(s.physics.damping, 0.05);
+  EXPECT_EQ(s.physics.dt, 0.4);
+  EXPECT_EQ(s.border, NodeKind::fixed);
+}
+
+TEST(Scene, DefaultSceneHasAnIslandAndASplash) {
+  const Scene s = load_scene("");
+  EXPECT_FALSE(s.constraints.empty());
+  EXPECT_FALSE(s.perturbations.empty());
+}
+
+TEST(Scene, ErrorsNameTheKeyPath) {
+  EXPECT_NE(error_of(R"({"grid": {"rows": 1}})").find("grid.rows must be at least 2"), std::string::npos);
+  EXPECT_NE(error_of(R"({"grid": {"rows": "50"}})").find("grid.rows must be an integer, not a string"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"grid": {"cols": 2.5}})").find("grid.cols must be an integer"), std::string::npos);
+  EXPECT_NE(error_of(R"({"grid": {"spacing": 0}})").find("grid.spacing must be positive"), std::string::npos);
+  EXPECT_NE(error_of(R"({"grid": {"rows": 50, "colums": 3}})").find("grid.colums is not a known key"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"gird": {}})").find("gird is not a known key"), std::string::npos);
+  EXPECT_NE(error_of(R"({"physics": {"mass": 0}})").find("physics.mass must be positive"), std::string::npos);
+  EXPECT_NE(error_of(R"({"physics": {"mass": -1}})").find("physics.mass must be positive"), std::string::npos);
+  EXPECT_NE(error_of(R"({"physics": {"stiffness": -1}})").find("physics.stiffness must not be negative"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"physics": {"damping": -0.1}})").find("physics.damping must not be negative"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"physics": {"dt": 0}})").find("physics.dt must be positive"), std::string::npos);
+  EXPECT_NE(error_of(R"({"border": "wobbly"})").find("border is 'wobbly', expected fixed | vertical | free"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"constraints": [{"kind": "free", "rows": [1, 2], "cols": [1, 2]}]})")
+                .find("constraints[0].kind is 'free', expected fixed | vertical"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"constraints": [{"kind": "fixed", "rows": [1, 50], "cols": [1, 2]}]})")
+                .find("constraints[0].rows [1, 50] is out of range [0, 49]"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"constraints": [{"kind": "fixed", "rows": [5, 2], "cols": [1, 2]}]})")
+                .find("constraints[0].rows [5, 2] is reversed"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"constraints": [{"kind": "fixed", "rows": [-1, 2], "cols": [1, 2]}]})")
+                .find("constraints[0].rows"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"constraints": {"kind": "fixed"}})").find("constraints must be an array"),
+            std::string::npos);
+  const char* splash = R"({"perturbations": [{"row": 5, "col": 5, "radius": %s, "amplitude": 1%s}]})";
+  auto p = [&](const char* radius, const char* extra) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf, splash, radius, extra);
+    return error_of(buf);
+  };
+  EXPECT_NE(p("0", "").find("perturbations[0].radius must be positive"), std::string::npos);
+  EXPECT_NE(p("-2", "").find("perturbations[0].radius must be positive"), std::string::npos);
+  EXPECT_NE(p("1", R"(, "target": "height")").find("perturbations[0].target is 'height'"), std::string::npos);
+  EXPECT_NE(p("1", R"(, "mode": "mul")").find("perturbations[0].mode is 'mul'"), std::string::npos);
+  EXPECT_NE(p("1", R"(, "step": -1)").find("perturbations[0].step must be at least 0"), std::string::npos);
+  EXPECT_NE(error_of(R"({"perturbations": [{"row": 5, "col": 5, "radius": 1}]})")
+                .find("perturbations[0].amplitude is missing"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"perturbations": [{"row": 50, "col": 5, "radius": 1, "amplitude": 1}]})")
+                .find("perturbations[0].row is outside the grid"),
+            std::string::npos);
+}
+
+TEST(Scene, MalformedJsonIsOneLine) {
+  EXPECT_NE(error_of(R"({"grid": {"rows": 50,)").find("invalid JSON"), std::string::npos);
+  EXPECT_NE(error_of("").find("invalid JSON"), std::string::npos);
+  EXPECT_NE(error_of("[1, 2]").find("must be an object"), std::string::npos);
+}
+
+TEST(Scene, HugeGridIsRefusedBeforeAllocating) {
+  EXPECT_NE(error_of(R"({"grid": {"rows": 65536, "cols": 65536}})").find("more than this machine's memory"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"grid": {"rows": 100000, "cols": 10}})").find("grid.rows must be at most"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"grid": {"rows": 1e300, "cols": 10}})").find("grid.rows"), std::string::npos);
+}
+
+TEST(Scene, UnstableTimeStepIsRefusedWithTheBound) {
+  // Table 1: m = 4, c = 7, gamma = 0.05: the bound is 0.5324...
+  const std::string m = error_of(R"({"physics": {"dt": 0.6}})");
+  EXPECT_NE(m.find("physics.dt 0.6 exceeds the explicit-Euler stability bound 0.53363"), std::string::npos) << m;
+  EXPECT_NE(m.find("physics.substeps >= 2"), std::string::npos) << m;
+  // Substeps that bring it inside are accepted.
+  const Scene s = parse_scene(R"({"physics": {"dt": 0.6, "substeps": 2}})", "x");
+  EXPECT_EQ(s.physics.substeps, 2);
+  // Stiffer springs lower the bound.
+  EXPECT_NE(error_of(R"({"physics": {"stiffness": 20}})").find("stability bound"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace pond::sim

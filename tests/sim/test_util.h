@@ -1,0 +1,46 @@
+#pragma once
+// Helpers for the solver tests: scenes built in code and runs of the CPU solver.
+#include <cstdint>
+#include <string>
+
+#include "sim/cpu_solver.h"
+#include "sim/scene.h"
+
+namespace pond::test {
+
+inline sim::Scene grid_scene(int rows, int cols, sim::NodeKind border = sim::NodeKind::fixed) {
+  sim::Scene s;
+  s.grid.rows = rows;
+  s.grid.cols = cols;
+  s.border = border;
+  return s;
+}
+
+inline sim::Perturbation splash(double row, double col, double radius = 2.0, double amplitude = 1.0,
+                                std::int64_t step = 0,
+                                sim::PerturbTarget target = sim::PerturbTarget::velocity,
+                                sim::PerturbMode mode = sim::PerturbMode::add) {
+  sim::Perturbation p;
+  p.step = step;
+  p.row = row;
+  p.col = col;
+  p.radius = radius;
+  p.amplitude = amplitude;
+  p.target = target;
+  p.mode = mode;
+  return p;
+}
+
+inline sim::WaterState run(const sim::Scene& scene, std::int64_t steps,
+                           sim::Backend backend = sim::Backend::scalar, int threads = 1,
+                           sim::MathMode math = sim::MathMode::exact) {
+  sim::CpuSolver solver(sim::build_model(scene, math), backend, threads);
+  solver.advance(steps);
+  return solver.state();
+}
+
+inline std::size_t node(const sim::Scene& s, int i, int j) {
+  return static_cast<std::size_t>(i) * s.grid.cols + j;
+}
+
+}  // namespace pond::test
