@@ -45,9 +45,13 @@ int run_lod(const LodOptions& o) {
   lod::LodBuilder builder(rows, cols);
   std::vector<std::uint32_t> indices(builder.max_indices());
   const auto t0 = std::chrono::steady_clock::now();
-  const std::size_t count =
-      builder.build(lod::interleaved_positions(state.as<float>().data(), rows, cols), camera,
-                    o.tolerance, indices);
+  std::size_t count = 0;
+  try {
+    count = builder.build(lod::interleaved_positions(state.as<float>().data(), rows, cols), camera,
+                          o.tolerance, indices);
+  } catch (const InputError& e) {  // the camera was checked above: this is about the positions
+    throw InputError(o.state + ": " + e.what());
+  }
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 
