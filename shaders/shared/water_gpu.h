@@ -1,0 +1,79 @@
+// Every CPU<->GPU layout of the water compute passes, declared once: the shaders include this file
+// as GLSL, the C++ GPU solver as C++ (src/gpu/water_layout.h adds the static_asserts).
+//
+// Buffers (all std430, 32-bit words):
+//  - state: structure of arrays, six arrays of `stride` floats one after the other:
+//      ux at [0], uy at [stride], uz at [2*stride], vx at [3*stride], vy at [4*stride], vz at [5*stride]
+//    node n = row * cols + col, grid units (world / spacing), u the displacement from the rest
+//    position (j, 0, i), as sim::WaterState. Two of them
+//    (ping-pong): a substep reads one and writes the other.
+//  - kinds: the node kinds (kNodeFree / kNodeVertical / kNodeFixed) packed four per uint, node n in
+//    byte n % 4 of word n / 4 (little end first), so the mask costs a quarter of a load per node.
+//  - perturbations: PerturbEntry[] of every tabulated perturbation of the model, one after the other.
+//  - normals: one vec4 per node (nx, ny, nz, 0): the layout the water vertex shader reads.
+#ifndef POND_WATER_GPU_H
+#define POND_WATER_GPU_H
+
+#include "shared/exact_math.h"
+
+// Macros, not constants: GLSL needs literals in layout(local_size_x = ...) and
+// layout(constant_id = ...). The C++ side reads the same macros to derive group counts.
+#define POND_STEP_LOCAL_X 64       // columns per workgroup of water_step.comp (one per invocation)
+#define POND_STEP_ROWS_PER_INVOCATION 16  // each invocation walks a strip of this many rows
+#define POND_PERTURB_LOCAL_X 64    // table entries per workgroup of water_perturb.comp
+#define POND_NORMALS_LOCAL_X 64    // nodes per workgroup of water_normals.comp
+#define POND_SPEC_FAST_MATH 0      // specialization constant: bool, true = fast math
+#define POND_SPEC_RSQRT_STEPS 1    // specialization constant: int, Newton steps of exact rsqrt
+
+#ifdef __cplusplus
+#define POND_GPU_CONST inline constexpr
+namespace pond::shared {
+#else
+#define POND_GPU_CONST const
+#endif
+
+// Push constants of water_step.comp: one substep.
+struct StepPush {
+  uint rows;
+  uint cols;
+  uint stride;     // floats between the component arrays of a state buffer
+  uint pad0;
+  float kc;        // StepConstants (sim/model.h), bit for bit
+  float kd;
+  float dt;
+  float rest_edge;
+  float rest_diag;
+};
+
+// One tabulated perturbation weight (sim::PerturbationTable, flattened).
+struct PerturbEntry {
+  uint node;
+  float weight;
+};
+
+POND_GPU_CONST uint kPerturbVelocity = 0u;  // target: vy
+POND_GPU_CONST uint kPerturbPosition = 1u;  // target: y
+POND_GPU_CONST uint kPerturbAdd = 0u;       // mode: value + w
+POND_GPU_CONST uint kPerturbSet = 1u;       // mode: w
+
+// Push constants of water_perturb.comp: one perturbation = entries [first, first + count).
+struct PerturbPush {
+  uint first;
+  uint count;
+  uint stride;
+  uint target;
+  uint mode;
+};
+
+// Push constants of water_normals.comp.
+struct NormalsPush {
+  uint rows;
+  uint cols;
+  uint stride;
+};
+
+#ifdef __cplusplus
+}  // namespace pond::shared
+#endif
+#undef POND_GPU_CONST
+#endif

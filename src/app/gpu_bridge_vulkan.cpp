@@ -1,0 +1,28 @@
+// `pond simulate --solver gpu`: the GPU solver behind the one door the CPU-only command code knows.
+#include <cmath>
+#include <string>
+
+#include "app/gpu_bridge.h"
+#include "core/errors.h"
+#include "gpu/context.h"
+#include "gpu/gpu_solver.h"
+
+namespace pond::app {
+
+sim::WaterState simulate_on_gpu(const sim::WaterModel& model, std::int64_t steps, const GpuRunOptions& options) {
+  const gpu::Context ctx(gpu::ContextOptions{.device = options.device, .validation = options.validation});
+  gpu::GpuSolver solver(ctx, model);
+  solver.advance(steps);
+  sim::WaterState state = solver.read_state();
+  // The CPU solver refuses a run that blows up at the step it happens; the GPU does not stop to
+  // check, so it refuses it at the end.
+  for (std::size_t n = 0; n < state.nodes(); ++n)
+    if (!std::isfinite(state.vx[n]) || !std::isfinite(state.vy[n]) || !std::isfinite(state.vz[n]))
+      throw InputError("the water blew up on the GPU (non-finite velocity at node row " +
+                       std::to_string(n / static_cast<std::size_t>(model.cols)) + ", col " +
+                       std::to_string(n % static_cast<std::size_t>(model.cols)) +
+                       "); lower physics.dt, raise physics.substeps or soften the perturbations");
+  return state;
+}
+
+}  // namespace pond::app

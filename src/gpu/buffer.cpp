@@ -1,0 +1,73 @@
+#include "gpu/buffer.h"
+
+#include <bit>
+#include <cstring>
+
+#include "core/errors.h"
+
+namespace pond::gpu {
+
+using MP = vk::MemoryPropertyFlagBits;
+
+std::uint32_t choose_memory_type(const vk::PhysicalDeviceMemoryProperties& props, std::uint32_t type_bits,
+                                 vk::MemoryPropertyFlags required, vk::MemoryPropertyFlags preferred) {
+  int best = -1, best_score = -1;
+  for (std::uint32_t t = 0; t < props.memoryTypeCount; ++t) {
+    const vk::MemoryPropertyFlags flags = props.memoryTypes[t].propertyFlags;
+    if (!(type_bits & (1u << t)) || (flags & required) != required) continue;
+    const int wanted = std::popcount(static_cast<std::uint32_t>(flags & preferred));
+    const int extra = std::popcount(static_cast<std::uint32_t>(flags & ~(required | preferred)));
+    const int score = wanted * 64 + (32 - extra);
+    if (score > best_score) best = static_cast<int>(t), best_score = score;
+  }
+  if (best < 0) throw RuntimeError("no Vulkan memory type with the required properties " + vk::to_string(required));
+  return static_cast<std::uint32_t>(best);
+}
+
+Buffer create_buffer(const Context& ctx, vk::DeviceSize size, vk::BufferUsageFlags usage, MemoryUse use,
+                     const std::string& name) {
+  Buffer b;
+  b.size = size;
+  b.buffer = vk::raii::Buffer(ctx.device(), vk::BufferCreateInfo{.size = size, .usage = usage,
+                                                                 .sharingMode = vk::SharingMode::eExclusive});
+  const vk::MemoryRequirements req = b.buffer.getMemoryRequirements();
+  vk::MemoryPropertyFlags required, preferred;
+  switch (use) {
+    case MemoryUse::device: required = MP::eDeviceLocal; break;
+    case MemoryUse::upload: required = MP::eHostVisible | MP::eHostCoherent; break;
+    case MemoryUse::readback:
+      required = MP::eHostVisible;
+      preferred = MP::eHostCached | MP::eHostCoherent;
+      break;
+  }
+  const vk::PhysicalDeviceMemoryProperties props = ctx.physical().getMemoryProperties();
+  const std::uint32_t type = choose_memory_type(props, req.memoryTypeBits, required, preferred);
+  b.memory = vk::raii::DeviceMemory(ctx.device(), vk::MemoryAllocateInfo{.allocationSize = req.size,
+                                                                         .memoryTypeIndex = type});
+  b.buffer.bindMemory(*b.memory, 0);
+  if (use != MemoryUse::device) {
+    b.mapped = b.memory.mapMemory(0, VK_WHOLE_SIZE);
+    b.coherent = static_cast<bool>(props.memoryTypes[type].propertyFlags & MP::eHostCoherent);
+  }
+  ctx.name(b.buffer, name);
+  ctx.name(b.memory, name + " memory");
+  return b;
+}
+
+void Buffer::invalidate(const Context& ctx) const {
+  if (coherent || !mapped) return;
+  ctx.device().invalidateMappedMemoryRanges(
+      vk::MappedMemoryRange{.memory = *memory, .offset = 0, .size = VK_WHOLE_SIZE});
+}
+
+void upload(const Context& ctx, const Buffer& dst, std::span<const std::byte> bytes) {
+  if (bytes.empty()) return;
+  const Buffer staging = create_buffer(ctx, bytes.size(), vk::BufferUsageFlagBits::eTransferSrc,
+                                       MemoryUse::upload, "upload staging");
+  std::memcpy(staging.mapped, bytes.data(), bytes.size());
+  ctx.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
+    cmd.copyBuffer(*staging.buffer, *dst.buffer, vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = bytes.size()});
+  });
+}
+
+}  // namespace pond::gpu

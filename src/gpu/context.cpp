@@ -1,0 +1,125 @@
+#include "gpu/context.h"
+
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+#include "core/errors.h"
+#include "gpu/device_choice.h"
+
+namespace pond::gpu {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+// vk::raii::Context loads libvulkan.so.1 and throws a bare std::runtime_error without it.
+vk::raii::Context load_vulkan() {
+  try {
+    return vk::raii::Context();
+  } catch (const std::exception& e) {
+    throw RuntimeError(std::string("Vulkan is not available (") + e.what() +
+                       "); the CPU solvers (--solver scalar|sse|avx2) do not need it");
+  }
+}
+
+bool has_extension(const std::vector<vk::ExtensionProperties>& list, const char* name) {
+  return std::any_of(list.begin(), list.end(),
+                     [&](const vk::ExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
+}  // namespace
+
+Context::Context(const ContextOptions& options)
+    : log_(std::make_unique<ValidationLog>()), loader_(load_vulkan()) {
+  std::vector<const char*> layers, extensions;
+  const auto available = loader_.enumerateInstanceExtensionProperties();
+  debug_utils_ = has_extension(available, VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  if (options.validation) {
+    const auto layer_list = loader_.enumerateInstanceLayerProperties();
+    const bool have_layer = std::any_of(layer_list.begin(), layer_list.end(), [](const vk::LayerProperties& l) {
+      return std::strcmp(l.layerName, kValidationLayer) == 0;
+    });
+    if (!have_layer) throw RuntimeError(std::string("validation requested but ") + kValidationLayer + " is not installed");
+    layers.push_back(kValidationLayer);
+    const auto layer_ext = loader_.enumerateInstanceExtensionProperties(std::string(kValidationLayer));
+    if (!has_extension(layer_ext, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME))
+      throw RuntimeError("the validation layer lacks VK_EXT_validation_features (synchronization validation)");
+    extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
+    debug_utils_ = debug_utils_ || has_extension(layer_ext, VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    if (!debug_utils_) throw RuntimeError("validation requested but VK_EXT_debug_utils is not available");
+  }
+  if (debug_utils_) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+
+  const vk::ApplicationInfo app{.pApplicationName = "pond", .applicationVersion = 1,
+                                .pEngineName = "pond", .engineVersion = 1,
+                                .apiVersion = VK_API_VERSION_1_3};
+  // Synchronization validation checks the barriers between the substeps' dispatches.
+  const vk::ValidationFeatureEnableEXT enables[] = {vk::ValidationFeatureEnableEXT::eSynchronizationValidation};
+  vk::DebugUtilsMessengerCreateInfoEXT messenger_info = log_->messenger_info();
+  vk::ValidationFeaturesEXT features{.pNext = &messenger_info, .enabledValidationFeatureCount = 1,
+                                     .pEnabledValidationFeatures = enables};
+  const vk::InstanceCreateInfo info{
+      .pNext = options.validation ? static_cast<const void*>(&features) : nullptr,
+      .pApplicationInfo = &app,
+      .enabledLayerCount = static_cast<std::uint32_t>(layers.size()),
+      .ppEnabledLayerNames = layers.data(),
+      .enabledExtensionCount = static_cast<std::uint32_t>(extensions.size()),
+      .ppEnabledExtensionNames = extensions.data()};
+  try {
+    instance_ = vk::raii::Instance(loader_, info);
+  } catch (const vk::SystemError& e) {
+    throw RuntimeError(std::string("cannot create a Vulkan 1.3 instance: ") + e.what());
+  }
+  if (options.validation) messenger_.emplace(instance_, messenger_info);
+
+  DeviceChoice choice = choose_device(instance_, options.device);
+  physical_ = std::move(choice.physical);
+  family_ = choice.compute_family;
+  device_name_ = std::move(choice.name);
+
+  const float priority = 1.0f;
+  const vk::DeviceQueueCreateInfo queue_info{.queueFamilyIndex = family_, .queueCount = 1,
+                                             .pQueuePriorities = &priority};
+  vk::PhysicalDeviceVulkan13Features features13{.synchronization2 = VK_TRUE};
+  const vk::DeviceCreateInfo device_info{.pNext = &features13, .queueCreateInfoCount = 1,
+                                         .pQueueCreateInfos = &queue_info};
+  try {
+    device_ = vk::raii::Device(physical_, device_info);
+  } catch (const vk::SystemError& e) {
+    throw RuntimeError("cannot create a Vulkan device on " + device_name_ + ": " + e.what());
+  }
+  queue_ = vk::raii::Queue(device_, family_, 0);
+  pool_ = vk::raii::CommandPool(device_, vk::CommandPoolCreateInfo{
+                                             .flags = vk::CommandPoolCreateFlagBits::eTransient,
+                                             .queueFamilyIndex = family_});
+  name(queue_, "pond compute queue");
+  name(pool_, "pond command pool");
+}
+
+Context::~Context() {
+  if (*device_) device_.waitIdle();
+}
+
+void Context::submit_and_wait(const std::function<void(const vk::raii::CommandBuffer&)>& record) const {
+  vk::raii::CommandBuffers buffers(device_, vk::CommandBufferAllocateInfo{
+                                                .commandPool = *pool_,
+                                                .level = vk::CommandBufferLevel::ePrimary,
+                                                .commandBufferCount = 1});
+  const vk::raii::CommandBuffer& cmd = buffers[0];
+  cmd.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
+  record(cmd);
+  cmd.end();
+  const vk::raii::Fence fence(device_, vk::FenceCreateInfo{});
+  const vk::CommandBufferSubmitInfo cmd_info{.commandBuffer = *cmd};
+  queue_.submit2(vk::SubmitInfo2{.commandBufferInfoCount = 1, .pCommandBufferInfos = &cmd_info}, *fence);
+  if (device_.waitForFences(*fence, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
+    throw RuntimeError("waiting for the GPU failed");
+}
+
+void Context::set_name(vk::ObjectType type, std::uint64_t handle, const std::string& text) const {
+  if (!debug_utils_) return;
+  device_.setDebugUtilsObjectNameEXT(
+      vk::DebugUtilsObjectNameInfoEXT{.objectType = type, .objectHandle = handle, .pObjectName = text.c_str()});
+}
+
+}  // namespace pond::gpu

@@ -1,0 +1,232 @@
+#include "gpu/gpu_solver.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "core/errors.h"
+#include "gpu/shaders.h"
+#include "gpu/water_layout.h"
+
+namespace pond::gpu {
+namespace {
+
+using BU = vk::BufferUsageFlagBits;
+
+std::vector<std::uint32_t> pack_kinds(const std::vector<std::uint8_t>& kinds) {
+  std::vector<std::uint32_t> words((kinds.size() + 3) / 4 + 1, 0u);  // +1: never empty
+  for (std::size_t n = 0; n < kinds.size(); ++n) words[n / 4] |= std::uint32_t{kinds[n]} << (8 * (n % 4));
+  return words;
+}
+
+std::vector<float> to_soa_words(const sim::WaterState& s, std::size_t stride) {
+  std::vector<float> words(stride * kComponents, 0.0f);
+  const float* const src[kComponents] = {s.ux.data(), s.uy.data(), s.uz.data(), s.vx.data(), s.vy.data(), s.vz.data()};
+  for (unsigned c = 0; c < kComponents; ++c) std::memcpy(&words[c * stride], src[c], s.nodes() * sizeof(float));
+  return words;
+}
+
+void write_set(const Context& ctx, const vk::raii::DescriptorSet& set, std::initializer_list<const Buffer*> buffers) {
+  std::vector<vk::DescriptorBufferInfo> infos;
+  for (const Buffer* b : buffers) infos.push_back(b->whole());
+  std::vector<vk::WriteDescriptorSet> writes;
+  for (std::uint32_t k = 0; k < infos.size(); ++k)
+    writes.push_back({.dstSet = *set, .dstBinding = k, .descriptorCount = 1,
+                      .descriptorType = vk::DescriptorType::eStorageBuffer, .pBufferInfo = &infos[k]});
+  ctx.device().updateDescriptorSets(writes, nullptr);
+}
+
+}  // namespace
+
+GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model)
+    : ctx_(ctx), model_(std::move(model)), stride_(state_stride(model_.nodes())) {
+  const bool fast = model_.math == sim::MathMode::fast;
+  const SpecConstant step_constants[] = {
+      {POND_SPEC_FAST_MATH, fast ? 1u : 0u},
+      {POND_SPEC_RSQRT_STEPS, static_cast<std::uint32_t>(model_.constants.rsqrt_steps)}};
+  step_pipe_ = create_compute_pipeline(ctx_, water_step_spirv(), 3, sizeof(StepPush), step_constants,
+                                       fast ? "water_step (fast)" : "water_step (exact)");
+  perturb_pipe_ = create_compute_pipeline(ctx_, water_perturb_spirv(), 2, sizeof(PerturbPush), {}, "water_perturb");
+  normals_pipe_ = create_compute_pipeline(ctx_, water_normals_spirv(), 2, sizeof(NormalsPush), {}, "water_normals");
+
+  const vk::DeviceSize state_bytes = stride_ * kComponents * sizeof(float);
+  const auto state_usage = BU::eStorageBuffer | BU::eTransferSrc | BU::eTransferDst;
+  state_[0] = create_buffer(ctx_, state_bytes, state_usage, MemoryUse::device, "water state A");
+  state_[1] = create_buffer(ctx_, state_bytes, state_usage, MemoryUse::device, "water state B");
+
+  const std::vector<std::uint32_t> kinds = pack_kinds(model_.kinds);
+  kinds_ = create_buffer(ctx_, kinds.size() * 4, BU::eStorageBuffer | BU::eTransferDst, MemoryUse::device,
+                         "water node kinds");
+  upload(ctx_, kinds_, std::as_bytes(std::span(kinds)));
+
+  std::vector<PerturbEntry> table;
+  for (const sim::PerturbationTable& t : model_.perturbations) {
+    table_first_.push_back(static_cast<std::uint32_t>(table.size()));
+    for (std::size_t k = 0; k < t.nodes.size(); ++k) table.push_back({t.nodes[k], t.weights[k]});
+  }
+  table_ = create_buffer(ctx_, std::max<std::size_t>(1, table.size()) * sizeof(PerturbEntry),
+                         BU::eStorageBuffer | BU::eTransferDst, MemoryUse::device, "perturbation table");
+  upload(ctx_, table_, std::as_bytes(std::span(table)));
+
+  normals_ = create_buffer(ctx_, std::max<std::size_t>(1, model_.nodes()) * 4 * sizeof(float),
+                           BU::eStorageBuffer | BU::eTransferSrc | BU::eVertexBuffer, MemoryUse::device,
+                           "water normals");
+
+  const vk::DescriptorPoolSize sizes{.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 14};
+  pool_ = vk::raii::DescriptorPool(ctx_.device(), vk::DescriptorPoolCreateInfo{
+                                                      .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
+                                                      .maxSets = 6, .poolSizeCount = 1, .pPoolSizes = &sizes});
+  auto allocate = [&](const ComputePipeline& p) {
+    const vk::DescriptorSetLayout layouts[2] = {*p.set_layout, *p.set_layout};
+    vk::raii::DescriptorSets sets(ctx_.device(), vk::DescriptorSetAllocateInfo{.descriptorPool = *pool_,
+                                                                               .descriptorSetCount = 2,
+                                                                               .pSetLayouts = layouts});
+    return std::vector<vk::raii::DescriptorSet>(std::make_move_iterator(sets.begin()),
+                                                std::make_move_iterator(sets.end()));
+  };
+  step_sets_ = allocate(step_pipe_);
+  perturb_sets_ = allocate(perturb_pipe_);
+  normals_sets_ = allocate(normals_pipe_);
+  for (int c = 0; c < 2; ++c) {
+    write_set(ctx_, step_sets_[c], {&state_[c], &state_[1 - c], &kinds_});
+    write_set(ctx_, perturb_sets_[c], {&state_[c], &table_});
+    write_set(ctx_, normals_sets_[c], {&state_[c], &normals_});
+  }
+  set_state(sim::rest_state(model_), 0);
+}
+
+void GpuSolver::set_state(const sim::WaterState& state, std::int64_t steps_done) {
+  if (state.nodes() != model_.nodes()) throw InputError("GpuSolver::set_state: the state has the wrong node count");
+  const std::vector<float> words = to_soa_words(state, stride_);
+  cur_ = 0;
+  upload(ctx_, state_[0], std::as_bytes(std::span(words)));
+  step_ = steps_done;
+  next_perturbation_ = 0;
+  while (next_perturbation_ < model_.perturbations.size() && model_.perturbations[next_perturbation_].step < step_)
+    ++next_perturbation_;
+}
+
+// Every dispatch reads what the previous one wrote (read-after-write) and overwrites what the one
+// before read (write-after-read); a compute->compute memory barrier orders both. It also makes the
+// uploads and copies of earlier submissions visible (second scope: later commands on the queue).
+void GpuSolver::record_barrier(const vk::raii::CommandBuffer& cmd) const {
+  using S = vk::PipelineStageFlagBits2;
+  using A = vk::AccessFlagBits2;
+  const vk::MemoryBarrier2 barrier{.srcStageMask = S::eComputeShader | S::eTransfer,
+                                   .srcAccessMask = A::eShaderWrite | A::eTransferWrite,
+                                   .dstStageMask = S::eComputeShader | S::eTransfer,
+                                   .dstAccessMask = A::eShaderRead | A::eShaderWrite | A::eTransferRead};
+  cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &barrier});
+}
+
+// One step: its perturbations, then its substeps, each dispatch behind a barrier.
+void GpuSolver::record_step(const vk::raii::CommandBuffer& cmd) {
+  const auto rows = static_cast<std::uint32_t>(model_.rows), cols = static_cast<std::uint32_t>(model_.cols);
+  const auto stride = static_cast<std::uint32_t>(stride_);
+  while (next_perturbation_ < model_.perturbations.size() &&
+         model_.perturbations[next_perturbation_].step == step_) {
+    const sim::PerturbationTable& t = model_.perturbations[next_perturbation_];
+    const PerturbPush push{
+        .first = table_first_[next_perturbation_], .count = static_cast<std::uint32_t>(t.nodes.size()),
+        .stride = stride,
+        .target = t.target == sim::PerturbTarget::velocity ? shared::kPerturbVelocity : shared::kPerturbPosition,
+        .mode = t.mode == sim::PerturbMode::add ? shared::kPerturbAdd : shared::kPerturbSet};
+    ++next_perturbation_;
+    if (push.count == 0) continue;
+    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *perturb_pipe_.pipeline);
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *perturb_pipe_.layout, 0, *perturb_sets_[cur_], nullptr);
+    cmd.pushConstants<PerturbPush>(*perturb_pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+    cmd.dispatch(group_count(push.count, POND_PERTURB_LOCAL_X), 1, 1);
+    record_barrier(cmd);
+  }
+  const sim::StepConstants& k = model_.constants;
+  const StepPush push{.rows = rows, .cols = cols, .stride = stride, .pad0 = 0, .kc = k.kc, .kd = k.kd,
+                      .dt = k.dt, .rest_edge = k.rest_edge, .rest_diag = k.rest_diag};
+  cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *step_pipe_.pipeline);
+  cmd.pushConstants<StepPush>(*step_pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+  for (int s = 0; s < model_.substeps; ++s) {
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *step_pipe_.layout, 0, *step_sets_[cur_], nullptr);
+    cmd.dispatch(group_count(cols, POND_STEP_LOCAL_X), group_count(rows, POND_STEP_ROWS_PER_INVOCATION), 1);
+    record_barrier(cmd);
+    cur_ = 1 - cur_;
+  }
+  ++step_;
+}
+
+void GpuSolver::advance(std::int64_t steps) {
+  const std::int64_t per_step = std::max(1, model_.substeps);
+  const std::int64_t steps_per_submit = std::max<std::int64_t>(1, kMaxDispatchesPerSubmit / per_step);
+  while (steps > 0) {
+    const std::int64_t n = std::min(steps, steps_per_submit);
+    ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
+      record_barrier(cmd);
+      for (std::int64_t s = 0; s < n; ++s) record_step(cmd);
+    });
+    steps -= n;
+  }
+}
+
+sim::WaterState GpuSolver::read_state() const {
+  const Buffer& src = state_[cur_];
+  const Buffer staging = create_buffer(ctx_, src.size, BU::eTransferDst, MemoryUse::readback, "state readback");
+  ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
+    record_barrier(cmd);
+    cmd.copyBuffer(*src.buffer, *staging.buffer, vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = src.size});
+    const vk::MemoryBarrier2 to_host{.srcStageMask = vk::PipelineStageFlagBits2::eTransfer,
+                                     .srcAccessMask = vk::AccessFlagBits2::eTransferWrite,
+                                     .dstStageMask = vk::PipelineStageFlagBits2::eHost,
+                                     .dstAccessMask = vk::AccessFlagBits2::eHostRead};
+    cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_host});
+  });
+  staging.invalidate(ctx_);
+  sim::WaterState s(model_.nodes());
+  const auto* words = static_cast<const float*>(staging.mapped);
+  float* const dst[kComponents] = {s.ux.data(), s.uy.data(), s.uz.data(), s.vx.data(), s.vy.data(), s.vz.data()};
+  for (unsigned c = 0; c < kComponents; ++c) std::memcpy(dst[c], words + c * stride_, model_.nodes() * sizeof(float));
+  return s;
+}
+
+void GpuSolver::compute_normals() {
+  const NormalsPush push{.rows = static_cast<std::uint32_t>(model_.rows),
+                         .cols = static_cast<std::uint32_t>(model_.cols),
+                         .stride = static_cast<std::uint32_t>(stride_)};
+  ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
+    record_barrier(cmd);
+    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *normals_pipe_.pipeline);
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *normals_pipe_.layout, 0, *normals_sets_[cur_], nullptr);
+    cmd.pushConstants<NormalsPush>(*normals_pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+    cmd.dispatch(group_count(static_cast<std::uint32_t>(model_.nodes()), POND_NORMALS_LOCAL_X), 1, 1);
+    // The vertex shader of the renderer reads them next.
+    const vk::MemoryBarrier2 to_vertex{
+        .srcStageMask = vk::PipelineStageFlagBits2::eComputeShader,
+        .srcAccessMask = vk::AccessFlagBits2::eShaderWrite,
+        .dstStageMask = vk::PipelineStageFlagBits2::eVertexShader | vk::PipelineStageFlagBits2::eVertexAttributeInput |
+                        vk::PipelineStageFlagBits2::eTransfer,
+        .dstAccessMask = vk::AccessFlagBits2::eShaderRead | vk::AccessFlagBits2::eVertexAttributeRead |
+                         vk::AccessFlagBits2::eTransferRead};
+    cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_vertex});
+  });
+}
+
+sim::Normals GpuSolver::read_normals() {
+  compute_normals();
+  const Buffer staging = create_buffer(ctx_, normals_.size, BU::eTransferDst, MemoryUse::readback, "normals readback");
+  ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
+    cmd.copyBuffer(*normals_.buffer, *staging.buffer, vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = normals_.size});
+    const vk::MemoryBarrier2 to_host{.srcStageMask = vk::PipelineStageFlagBits2::eTransfer,
+                                     .srcAccessMask = vk::AccessFlagBits2::eTransferWrite,
+                                     .dstStageMask = vk::PipelineStageFlagBits2::eHost,
+                                     .dstAccessMask = vk::AccessFlagBits2::eHostRead};
+    cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_host});
+  });
+  staging.invalidate(ctx_);
+  sim::Normals n;
+  const auto* v = static_cast<const float*>(staging.mapped);
+  for (std::size_t k = 0; k < model_.nodes(); ++k) {
+    n.x.push_back(v[4 * k]);
+    n.y.push_back(v[4 * k + 1]);
+    n.z.push_back(v[4 * k + 2]);
+  }
+  return n;
+}
+
+}  // namespace pond::gpu

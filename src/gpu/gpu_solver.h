@@ -1,0 +1,67 @@
+#pragma once
+// The GPU water solver: the same model and the same step sequence as sim::CpuSolver (perturbations
+// of step s applied just before its substeps), run as compute dispatches over SSBOs.
+//
+//  - The state lives on the GPU in two ping-pong buffers (structure of arrays, water_gpu.h);
+//    a substep reads one and writes the other, so k substeps are k dispatches with a barrier
+//    between each, all in one command buffer. Nothing is read back unless asked.
+//  - Exact math (model.math == exact) gives the CPU solver's bits; fast math (hardware
+//    inversesqrt, contraction allowed) is the same pipeline with a specialization constant.
+//  - Normals are computed on the GPU into normals_buffer(), the buffer the water vertex shader
+//    reads (one vec4 per node).
+#include <cstdint>
+#include <vector>
+
+#include "gpu/buffer.h"
+#include "gpu/compute_pipeline.h"
+#include "gpu/context.h"
+#include "sim/model.h"
+#include "sim/normals.h"
+#include "sim/state.h"
+
+namespace pond::gpu {
+
+class GpuSolver {
+ public:
+  // Starts from rest. The context must outlive the solver.
+  GpuSolver(const Context& ctx, sim::WaterModel model);
+
+  const sim::WaterModel& model() const { return model_; }
+  std::int64_t steps_done() const { return step_; }
+
+  // Advances `steps` steps (recorded in command buffers of at most kMaxDispatchesPerSubmit
+  // dispatches, each submitted and waited for).
+  void advance(std::int64_t steps);
+  // Replaces the state and the step counter (the bisect mode of the parity suite uses it).
+  void set_state(const sim::WaterState& state, std::int64_t steps_done);
+  // Copies the current state back (waits for the GPU).
+  sim::WaterState read_state() const;
+
+  // Computes the normals of the current state into normals_buffer().
+  void compute_normals();
+  // compute_normals() and read them back, as sim::Normals.
+  sim::Normals read_normals();
+  const Buffer& normals_buffer() const { return normals_; }
+  const Buffer& state_buffer() const { return state_[cur_]; }
+
+  static constexpr std::int64_t kMaxDispatchesPerSubmit = 4096;
+
+ private:
+  void record_step(const vk::raii::CommandBuffer& cmd);
+  void record_barrier(const vk::raii::CommandBuffer& cmd) const;
+
+  const Context& ctx_;
+  sim::WaterModel model_;
+  std::size_t stride_ = 0;
+  ComputePipeline step_pipe_, perturb_pipe_, normals_pipe_;
+  Buffer state_[2], kinds_, table_, normals_;
+  std::vector<std::uint32_t> table_first_;  // first entry of each perturbation in table_
+  vk::raii::DescriptorPool pool_ = nullptr;
+  // step_sets_[c]: reads state c, writes 1 - c; perturb_sets_[c], normals_sets_[c] use state c.
+  std::vector<vk::raii::DescriptorSet> step_sets_, perturb_sets_, normals_sets_;
+  int cur_ = 0;
+  std::size_t next_perturbation_ = 0;
+  std::int64_t step_ = 0;
+};
+
+}  // namespace pond::gpu

@@ -1,0 +1,32 @@
+#pragma once
+// The C++ view of shaders/shared/water_gpu.h: the structs are declared there once, for GLSL and
+// C++; this header pins their std430 / push-constant layout so a change on one side cannot
+// silently disagree with the other.
+#include <cstddef>
+
+#include "shared/water_gpu.h"
+
+namespace pond::gpu {
+
+using shared::NormalsPush;
+using shared::PerturbEntry;
+using shared::PerturbPush;
+using shared::StepPush;
+
+static_assert(sizeof(StepPush) == 36);
+static_assert(offsetof(StepPush, rows) == 0 && offsetof(StepPush, cols) == 4 && offsetof(StepPush, stride) == 8);
+static_assert(offsetof(StepPush, kc) == 16 && offsetof(StepPush, kd) == 20 && offsetof(StepPush, dt) == 24);
+static_assert(offsetof(StepPush, rest_edge) == 28 && offsetof(StepPush, rest_diag) == 32);
+static_assert(sizeof(PerturbEntry) == 8 && offsetof(PerturbEntry, weight) == 4);
+static_assert(sizeof(PerturbPush) == 20 && offsetof(PerturbPush, first) == 0 && offsetof(PerturbPush, count) == 4 &&
+              offsetof(PerturbPush, stride) == 8 && offsetof(PerturbPush, target) == 12 &&
+              offsetof(PerturbPush, mode) == 16);
+static_assert(sizeof(NormalsPush) == 12 && offsetof(NormalsPush, stride) == 8);
+
+// Components of the state buffer (structure of arrays), in the order of the shared header.
+enum StateComponent : unsigned { kUx = 0, kUy, kUz, kVx, kVy, kVz, kComponents };
+
+// Floats between the component arrays: the node count rounded up to 16 (64-byte aligned arrays).
+constexpr std::size_t state_stride(std::size_t nodes) { return (nodes + 15) / 16 * 16; }
+
+}  // namespace pond::gpu
