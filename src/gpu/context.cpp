@@ -80,7 +80,9 @@ Context::Context(const ContextOptions& options)
   const float priority = 1.0f;
   const vk::DeviceQueueCreateInfo queue_info{.queueFamilyIndex = family_, .queueCount = 1,
                                              .pQueuePriorities = &priority};
-  vk::PhysicalDeviceVulkan13Features features13{.synchronization2 = VK_TRUE};
+  // Both are required by Vulkan 1.3: synchronization2 for the barriers, maintenance4 because
+  // glslang's SPIR-V 1.6 declares workgroup sizes with LocalSizeId.
+  vk::PhysicalDeviceVulkan13Features features13{.synchronization2 = VK_TRUE, .maintenance4 = VK_TRUE};
   const vk::DeviceCreateInfo device_info{.pNext = &features13, .queueCreateInfoCount = 1,
                                          .pQueueCreateInfos = &queue_info};
   try {
