@@ -65,17 +65,27 @@ void node_budgets(const NodePositions& p, const Camera& c, double tolerance_px, 
   const double cone2 = tx * tx + ty * ty;
   const double per_depth = tolerance_px / b.pixels_per_radian * kBudgetShrink;
   const float infinite = std::numeric_limits<float>::infinity();
-  const std::size_t n = p.nodes();
-  for (std::size_t k = 0; k < n; ++k) {
-    const Vec d = {p.x[k * p.stride] - b.eye[0], p.y[k * p.stride] - b.eye[1],
-                   p.z[k * p.stride] - b.eye[2]};
-    const double depth = dot(d, b.forward);
-    const double sx = dot(d, b.right), sy = dot(d, b.up);
-    bool in_view = depth > 0;
-    if (in_view) {
-      in_view = b.cone ? sx * sx + sy * sy <= cone2 * depth * depth
-                       : std::abs(sx) <= tx * depth && std::abs(sy) <= ty * depth;
+  const std::size_t n = p.nodes(), st = p.stride;
+  const double ex = b.eye[0], ey = b.eye[1], ez = b.eye[2];
+  const double f0 = b.forward[0], f1 = b.forward[1], f2 = b.forward[2];
+  const double r0 = b.right[0], r1 = b.right[1], r2 = b.right[2];
+  const double u0 = b.up[0], u1 = b.up[1], u2 = b.up[2];
+  // Branch-free bodies (& rather than &&) so the compiler can vectorize; the cone case apart.
+  if (b.cone) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const double dx = p.x[k * st] - ex, dy = p.y[k * st] - ey, dz = p.z[k * st] - ez;
+      const double depth = dx * f0 + dy * f1 + dz * f2;
+      const double sx = dx * r0 + dy * r1 + dz * r2, sy = dx * u0 + dy * u1 + dz * u2;
+      const bool in_view = (depth > 0) & (sx * sx + sy * sy <= cone2 * depth * depth);
+      budget[k] = in_view ? static_cast<float>(per_depth * depth) : infinite;
     }
+    return;
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const double dx = p.x[k * st] - ex, dy = p.y[k * st] - ey, dz = p.z[k * st] - ez;
+    const double depth = dx * f0 + dy * f1 + dz * f2;
+    const double sx = dx * r0 + dy * r1 + dz * r2, sy = dx * u0 + dy * u1 + dz * u2;
+    const bool in_view = (depth > 0) & (std::abs(sx) <= tx * depth) & (std::abs(sy) <= ty * depth);
     budget[k] = in_view ? static_cast<float>(per_depth * depth) : infinite;
   }
 }

@@ -1,50 +1,61 @@
 #include "lod/error_bounds.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 
 namespace pond::lod {
 namespace {
 
-// Stored bounds round up by this much: storing a double as float rounds by 6e-8 relative, and the
-// bound must never end below the true distance.
-constexpr double kBoundGrow = 1 + 1e-6;
+// Each sum rounds by at most 6e-8 relative; growing by 1e-5 keeps every bound above the exact
+// value it stands for.
+constexpr float kBoundGrow = 1 + 1e-5f;
 
+// One scale's pass over the vertices of one class: ids step by `dx` along a row and `dy` between
+// rows; the hypotenuse ends are id -+ `e`; the children are id + child[k] (all four inside the
+// grid unless the vertex is within `reach` of the border, then checked one by one).
 struct Pass {
-  const GridHierarchy& grid;
   const float *x, *y, *z;
   const float* budget;
   float* bound;
   float* min_budget;
   const std::uint8_t* always;
+  int rows, cols;
+  float slack;
 
-  double deviation(std::uint32_t v, std::uint32_t e0, std::uint32_t e1) const {
-    const double dx = x[v] - 0.5 * (double(x[e0]) + x[e1]);
-    const double dy = y[v] - 0.5 * (double(y[e0]) + y[e1]);
-    const double dz = z[v] - 0.5 * (double(z[e0]) + z[e1]);
-    return std::sqrt(dx * dx + dy * dy + dz * dz);
+  // In float for speed; `slack` (from the largest coordinate) covers its rounding, so the result
+  // never falls below the exact distance.
+  float deviation(std::size_t v, std::size_t e0, std::size_t e1) const {
+    const float dx = x[v] - 0.5f * (x[e0] + x[e1]);
+    const float dy = y[v] - 0.5f * (y[e0] + y[e1]);
+    const float dz = z[v] - 0.5f * (z[e0] + z[e1]);
+    return std::sqrt(dx * dx + dy * dy + dz * dz) + slack;
   }
 
-  // One split vertex with its children (coordinates; those outside the grid are skipped).
-  void vertex(Point v, const Point* children, int child_count) const {
-    const std::uint32_t id = grid.id(v);
+  // Vertex (vx, vy) with hypotenuse ends id -+ e and children at the given offsets (cx, cy).
+  void vertex(int vx, int vy, std::ptrdiff_t e, const int (*child)[2], int child_count,
+              int reach) const {
+    const std::size_t id = static_cast<std::size_t>(vy) * static_cast<std::size_t>(cols) +
+                           static_cast<std::size_t>(vx);
     if (always[id]) {
       bound[id] = std::numeric_limits<float>::infinity();
       min_budget[id] = budget[id];
       return;
     }
-    const Diamond d = GridHierarchy::diamond(v);
-    double worst_child = 0;
-    float least = budget[id];
+    float worst_child = 0, least = budget[id];
+    const bool interior = vx >= reach && vy >= reach && vx + reach < cols && vy + reach < rows;
     for (int k = 0; k < child_count; ++k) {
-      if (!grid.inside(children[k])) continue;
-      const std::uint32_t c = grid.id(children[k]);
-      worst_child = std::max(worst_child, double(bound[c]));
+      const int cx = vx + child[k][0], cy = vy + child[k][1];
+      if (!interior && (cx < 0 || cy < 0 || cx >= cols || cy >= rows)) continue;
+      const std::size_t c = static_cast<std::size_t>(cy) * static_cast<std::size_t>(cols) +
+                            static_cast<std::size_t>(cx);
+      worst_child = std::max(worst_child, bound[c]);
       least = std::min(least, min_budget[c]);
     }
-    bound[id] = static_cast<float>((deviation(id, grid.id(d.end0), grid.id(d.end1)) + worst_child) *
-                                   kBoundGrow);
+    const float dev = deviation(id, id - static_cast<std::size_t>(e), id + static_cast<std::size_t>(e));
+    bound[id] = (dev + worst_child) * kBoundGrow;
     min_budget[id] = least;
   }
 };
@@ -53,27 +64,35 @@ struct Pass {
 
 void nested_bounds(const GridHierarchy& grid, const NodePositions& p, const float* budget,
                    float* bound, float* min_budget) {
-  const Pass pass{grid, p.x, p.y, p.z, budget, bound, min_budget, grid.always_split().data()};
   const int rows = grid.rows(), cols = grid.cols();
+  // Float rounding of a deviation: each of its ~6 operations errs by at most half an ulp of the
+  // largest magnitude involved (<= 2 * max |coordinate|), so 8 ulps of that is a safe slack.
+  // (On the bit patterns with the sign cleared, which order like the magnitudes and vectorize.)
+  std::uint32_t largest_bits = 0;
+  for (const float* a : {p.x, p.y, p.z})
+    for (std::size_t n = 0; n < p.nodes(); ++n)
+      largest_bits = std::max(largest_bits, std::bit_cast<std::uint32_t>(a[n]) & 0x7fffffffu);
+  const float largest = std::bit_cast<float>(largest_bits);
+  const float slack = 16 * largest * std::numeric_limits<float>::epsilon();
+  const Pass pass{p.x, p.y, p.z, budget, bound, min_budget, grid.always_split().data(), rows, cols,
+                  slack};
+  const std::ptrdiff_t row = cols;
   const int extent = std::max(rows, cols);
   for (int h = 1; h < extent; h *= 2) {
     const int q = h / 2, step = 2 * h;
     // Axis-aligned hypotenuses of length 2h: horizontal (x = h mod 2h, y = 0 mod 2h) and vertical
-    // (x = 0 mod 2h, y = h mod 2h). Their children are diagonal centres of scale h/2.
-    for (int pass_kind = 0; pass_kind < 2; ++pass_kind) {
-      const int x_start = pass_kind == 0 ? h : 0, y_start = pass_kind == 0 ? 0 : h;
-      for (int y = y_start; y < rows; y += step)
-        for (int x = x_start; x < cols; x += step) {
-          const Point children[4] = {{x - q, y - q}, {x + q, y - q}, {x - q, y + q}, {x + q, y + q}};
-          pass.vertex({x, y}, children, q > 0 ? 4 : 0);
-        }
-    }
-    // Diagonal hypotenuses of the squares of side 2h: children are that square's edge midpoints.
+    // (x = 0 mod 2h, y = h mod 2h). Their children are the diagonal centres of scale h/2 around.
+    const int axis_children[4][2] = {{-q, -q}, {q, -q}, {-q, q}, {q, q}};
+    for (int y = 0; y < rows; y += step)
+      for (int x = h; x < cols; x += step) pass.vertex(x, y, h, axis_children, q > 0 ? 4 : 0, q);
     for (int y = h; y < rows; y += step)
-      for (int x = h; x < cols; x += step) {
-        const Point children[4] = {{x - h, y}, {x + h, y}, {x, y - h}, {x, y + h}};
-        pass.vertex({x, y}, children, 4);
-      }
+      for (int x = 0; x < cols; x += step) pass.vertex(x, y, h * row, axis_children, q > 0 ? 4 : 0, q);
+    // Diagonal hypotenuses of the squares of side 2h (main diagonal when the square's index
+    // parity is even, see GridHierarchy::diamond): children are that square's edge midpoints.
+    const int diag_children[4][2] = {{-h, 0}, {h, 0}, {0, -h}, {0, h}};
+    for (int y = h, b = 0; y < rows; y += step, ++b)
+      for (int x = h, a = 0; x < cols; x += step, ++a)
+        pass.vertex(x, y, ((a + b) & 1) == 0 ? h * row + h : h * row - h, diag_children, 4, h);
   }
 }
 

@@ -77,12 +77,17 @@ std::size_t LodBuilder::build(const NodePositions& p, const Camera& camera, doub
                             " indices, needs " + std::to_string(max_indices()));
   stats_ = {};
   const std::size_t n = p.nodes();
+  bool finite = true;
   for (std::size_t k = 0; k < n; ++k) {
-    x_[k] = p.x[k * p.stride], y_[k] = p.y[k * p.stride], z_[k] = p.z[k * p.stride];
-    if (!std::isfinite(x_[k]) || !std::isfinite(y_[k]) || !std::isfinite(z_[k]))
-      throw InputError("node " + std::to_string(k) + " (row " + std::to_string(k / cols()) +
-                       ", col " + std::to_string(k % cols()) + ") has a non-finite position");
+    const float x = p.x[k * p.stride], y = p.y[k * p.stride], z = p.z[k * p.stride];
+    x_[k] = x, y_[k] = y, z_[k] = z;
+    finite &= (x - x == 0) & (y - y == 0) & (z - z == 0);  // false for inf and NaN
   }
+  if (!finite)
+    for (std::size_t k = 0; k < n; ++k)
+      if (!std::isfinite(x_[k]) || !std::isfinite(y_[k]) || !std::isfinite(z_[k]))
+        throw InputError("node " + std::to_string(k) + " (row " + std::to_string(k / cols()) +
+                         ", col " + std::to_string(k % cols()) + ") has a non-finite position");
   const NodePositions own = soa_positions(x_.data(), y_.data(), z_.data(), rows(), cols());
   node_budgets(own, camera, tolerance_px, budget_.data());
   nested_bounds(grid_, own, budget_.data(), bound_.data(), min_budget_.data());
