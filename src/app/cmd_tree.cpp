@@ -94,7 +94,8 @@ int run_tree(const TreeOptions& o) {
     throw InputError("--out '" + o.out + "' must be a file name prefix such as out/tree, not a folder");
   const fs::path vertices_path = o.out + ".vertices.npy";
   const fs::path parents_path = o.out + ".parents.npy";
-  check_output_path(vertices_path);  // the same folder holds both
+  check_output_path(vertices_path);  // before any work: a missing folder writes nothing
+  check_output_path(parents_path);
 
   const tree::Tree t = tree::grow_tree(params);
   const std::size_t vertex_shape[2] = {t.size(), static_cast<std::size_t>(
@@ -120,13 +121,16 @@ Command add_tree_command(CLI::App& app) {
       "tree", "Grow the wind tree and write PREFIX.vertices.npy and PREFIX.parents.npy");
   // Depth and seed are read as text and parsed here, for one-line messages that say what is allowed.
   sub->add_option("--depth", o->depth, "Recursion depth 1..10 ((3^D-1)/2+1 vertices; 7 = 1094)")
-      ->required();
+      ->required()
+      ->type_name("INT");
   sub->add_option("--seed", o->seed, "Random seed, a non-negative integer (same seed, same tree)")
-      ->required();
+      ->required()
+      ->type_name("UINT64");
   sub->add_option("--out", o->out,
                   "Output prefix: writes PREFIX.vertices.npy float32 (V, 12) = position, wind "
                   "vector X, wind vector Z, jitter coefficients; PREFIX.parents.npy int32 (V)")
-      ->required();
+      ->required()
+      ->type_name("PREFIX");
   return {sub, [o] { return run_tree(*o); }};
 }
 

@@ -8,11 +8,7 @@
 
 namespace pond::tree {
 
-using Vec3 = shared::tree_wind::vec3;
-using shared::tree_wind::operator+;
-using shared::tree_wind::operator-;
-using shared::tree_wind::operator*;
-using shared::tree_wind::operator==;
+using Vec3 = shared::tree_wind::vec3;  // its + - * and == are found by argument-dependent lookup
 
 inline float dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline Vec3 cross(Vec3 a, Vec3 b) {

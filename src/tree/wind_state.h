@@ -15,9 +15,9 @@ using TreeWindFrame = shared::tree_wind::TreeWindFrame;
 
 inline constexpr float kMaxWindStrength = 9.0f;
 // The article leaves the unit of its strengths 1..9 open. At unit wind the twig tips of a depth-8
-// tree move about twice the tree's height (its stiffness factors 0.3 + D - level sum up along each
-// chain), so one strength step is 0.05 of a unit: strength 1 is a breeze, 9 a gale that bends the
-// crown by about its own height.
+// tree (3.5 trunk lengths tall) move up to 8.4 trunk lengths: the stiffness factors 0.3 + D - level
+// sum up along each chain. So one strength step is 0.05 of a unit: strength 1 is a breeze (tips move
+// 0.4), 9 a gale that bends the crown by about the tree's height.
 inline constexpr float kWindPerStrength = 0.05f;
 // Inertia steps are at most this long (seconds): see advance_wind.
 inline constexpr double kMaxInertiaStep = 0.1;

@@ -2,7 +2,8 @@
 #   good_run        writes both files with the right .npy headers, shapes and sizes, deterministically
 #   bad_depth       0, 11, abc, 2.5, -3, 7x exit 2 with a one-line message naming --depth, no files
 #   bad_seed        -1, 1.5, abc, 2^64, 1e3 exit 2 with a one-line message naming --seed, no files
-#   missing_folder  exit 2 naming the folder; nothing is written or created
+#   missing_folder  exit 2 naming the folder; nothing is written or created; likewise when one
+#                   output name is taken by a folder
 cmake_minimum_required(VERSION 3.25)
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
@@ -96,6 +97,13 @@ elseif(CASE STREQUAL "missing_folder")
     message(FATAL_ERROR "the missing folder was created")
   endif()
   expect_input_error("--out" --depth 3 --seed 1 --out "${WORK}/")
+  # One of the two outputs cannot be written (a folder sits at its name): neither is written.
+  file(MAKE_DIRECTORY "${WORK}/t.parents.npy")
+  run_pond(--depth 3 --seed 1 --out "${WORK}/t")
+  file(GLOB left "${WORK}/t.vertices.npy*" "${WORK}/t.parents.npy.*")
+  if(NOT rc EQUAL 2 OR left)
+    message(FATAL_ERROR "with t.parents.npy a folder: exit ${rc} (${err}), left behind: ${left}")
+  endif()
 else()
   message(FATAL_ERROR "unknown CASE '${CASE}'")
 endif()
