@@ -16,7 +16,7 @@ bool row_span(const Tri& t, int y, int& x0, int& x1) {
     if (a.y == b.y) {
       if (a.y == y) x0 = std::min({x0, a.x, b.x}), x1 = std::max({x1, a.x, b.x});
     } else if (y >= std::min(a.y, b.y) && y <= std::max(a.y, b.y)) {
-      const int x = a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
+      const int x = a.x + (b.x - a.x) / (b.y - a.y) * (y - a.y);  // slope is 0 or +-1
       x0 = std::min(x0, x), x1 = std::max(x1, x);
     }
   }
@@ -31,7 +31,7 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
   // weights of left and right are plain projections onto them.
   const int lx = t.left.x - t.apex.x, ly = t.left.y - t.apex.y;
   const int rx = t.right.x - t.apex.x, ry = t.right.y - t.apex.y;
-  const double inv_len2 = 1.0 / (lx * lx + ly * ly);
+  const double inv_len2 = 1.0 / (double(lx) * lx + double(ly) * ly);
   const std::uint32_t a = grid.id(t.apex), l = grid.id(t.left), r = grid.id(t.right);
   const double ax = p.x[a], ay = p.y[a], az = p.z[a];
   const double lx3 = p.x[l] - ax, ly3 = p.y[l] - ay, lz3 = p.z[l] - az;
@@ -47,7 +47,8 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
     const int dy = y - t.apex.y;
     for (int x = x0; x <= x1; ++x) {
       const int dx = x - t.apex.x;
-      const double u = (dx * lx + dy * ly) * inv_len2, w = (dx * rx + dy * ry) * inv_len2;
+      const double u = (double(dx) * lx + double(dy) * ly) * inv_len2;
+      const double w = (double(dx) * rx + double(dy) * ry) * inv_len2;
       const std::size_t n = static_cast<std::size_t>(y) * cols + static_cast<std::size_t>(x);
       const double ex = p.x[n] - (ax + u * lx3 + w * rx3);
       const double ey = p.y[n] - (ay + u * ly3 + w * ry3);
