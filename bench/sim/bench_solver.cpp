@@ -1,0 +1,89 @@
+// Node-steps per second of the CPU solver: every backend at 50^2, 256^2 and 1024^2, one thread and
+// all threads, exact and fast math; and the machine's copy bandwidth measured in the same run, the
+// memory-bound ceiling (a substep reads and writes 24 bytes of state per node).
+//
+//   build/bench/sim/bench_solver --benchmark_counters_tabular=true
+#include <benchmark/benchmark.h>
+
+#include <cstring>
+#include <thread>
+#include <vector>
+
+#include "sim/cpu_solver.h"
+#include "sim/scene.h"
+
+namespace {
+using namespace pond::sim;
+
+// A rippled square pond: a fixed shore and several splashes, so every node has a non-trivial state.
+WaterModel rippled_model(int size, MathMode math) {
+  Scene s;
+  s.grid.rows = s.grid.cols = size;
+  for (int k = 0; k < 5; ++k) {
+    Perturbation p;
+    p.row = size * (0.2 + 0.15 * k);
+    p.col = size * (0.7 - 0.1 * k);
+    p.radius = 2.0;
+    p.amplitude = 0.5;
+    s.perturbations.push_back(p);
+  }
+  return build_model(s, math);
+}
+
+void BM_Solver(benchmark::State& state) {
+  const auto backend = static_cast<Backend>(state.range(0));
+  const int size = static_cast<int>(state.range(1));
+  const int threads = static_cast<int>(state.range(2));
+  const auto math = static_cast<MathMode>(state.range(3));
+  if (!cpu_supports(backend)) {
+    state.SkipWithError("backend not supported by this CPU");
+    return;
+  }
+  CpuSolver solver(rippled_model(size, math), backend, threads);
+  solver.advance(20);  // the splashes spread
+  for (auto _ : state) solver.advance(1);
+  const double nodes = double(size) * size;
+  state.counters["node_steps_per_s"] =
+      benchmark::Counter(nodes * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.SetLabel(std::string(backend_name(backend)) + " x" + std::to_string(solver.threads()) +
+                 (math == MathMode::exact ? " exact" : " fast"));
+}
+
+void solver_args(benchmark::internal::Benchmark* b) {
+  const int all = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  for (int size : {50, 256, 1024})
+    for (int backend : {0, 1, 2})
+      for (int threads : {1, all})
+        for (int math : {0, 1}) {
+          if (threads == all && all == 1 && threads != 1) continue;
+          b->Args({backend, size, threads, math});
+        }
+}
+BENCHMARK(BM_Solver)->Apply(solver_args)->ArgNames({"backend", "size", "threads", "fast"})
+    ->Unit(benchmark::kMicrosecond)->UseRealTime()->MinTime(0.3);
+
+// Copy bandwidth with all threads: the bound a memory-limited solver approaches. Reported as
+// bytes/s read + written, and as the node-steps/s it would allow at 48 bytes per node.
+void BM_CopyBandwidth(benchmark::State& state) {
+  const std::size_t bytes = std::size_t{96} << 20;
+  std::vector<char> src(bytes, 1), dst(bytes, 2);
+  const int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  for (auto _ : state) {
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t)
+      pool.emplace_back([&, t] {
+        const std::size_t part = bytes / threads;
+        std::memcpy(dst.data() + part * t, src.data() + part * t, part);
+      });
+    for (auto& t : pool) t.join();
+    benchmark::DoNotOptimize(dst.data());
+  }
+  const double moved = 2.0 * double(bytes) * double(state.iterations());
+  state.counters["bytes_per_s"] = benchmark::Counter(moved, benchmark::Counter::kIsRate);
+  state.counters["node_steps_per_s_bound"] = benchmark::Counter(moved / 48.0, benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_CopyBandwidth)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(0.5);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,25 @@
+#!/bin/sh
+# The IA-32 build (-m32 -msse2 -mfpmath=sse) gives the golden hash of the default scene after
+# 1,000 steps on its scalar and SSE backends, the same bits as the 64-bit build and the GPU.
+# Usage: ia32_golden_test.sh PATH/TO/32-bit/pond EXPECTED_HASH WORKDIR
+set -u
+pond=$1
+want=$2
+work=$3
+rm -rf "$work" && mkdir -p "$work" || exit 1
+file "$pond" 2>/dev/null | grep -q "32-bit" || { echo "FAIL: $pond is not a 32-bit executable"; exit 1; }
+status=0
+for solver in scalar sse; do
+  got=$("$pond" simulate --steps 1000 --solver "$solver" --out "$work/$solver.npy" | sed -n 's/^state hash //p')
+  if [ "$got" != "$want" ]; then
+    echo "FAIL: IA-32 $solver: actual hash $got, golden $want"
+    status=1
+  else
+    echo "IA-32 $solver: $got"
+  fi
+done
+"$pond" simulate --steps 1 --solver avx2 --out "$work/x.npy" 2> "$work/err"
+[ $? -eq 2 ] && grep -q "not in this build" "$work/err" || { echo "FAIL: avx2 in IA-32: $(cat "$work/err")"; status=1; }
+"$pond" simulate --steps 1 --solver gpu --out "$work/x.npy" 2> "$work/err"
+[ $? -eq 2 ] && grep -q "CPU-only" "$work/err" || { echo "FAIL: gpu in IA-32: $(cat "$work/err")"; status=1; }
+exit $status
