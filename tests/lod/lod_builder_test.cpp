@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -78,6 +79,21 @@ TEST(LodBuilder, RectangularRippledGridsAreValidFromEveryCamera) {
 TEST(LodBuilder, SimulatedRainIsValidFromEveryCamera) {
   sweep(65, 65, simulated_pond(65, 65, 60, 6, 10, 3), "rain");
   sweep(49, 70, simulated_pond(49, 70, 20, 2, 25, 4), "splashes");
+}
+
+TEST(LodBuilder, RandomGridsCamerasAndTolerancesAreValid) {
+  std::mt19937 rng(2024);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int rows = 2 + static_cast<int>(u(rng) * 70), cols = 2 + static_cast<int>(u(rng) * 70);
+    const std::vector<float> s = analytic_ripples(rows, cols, 1 + trial % 7, 0.2 + u(rng), 100u + trial);
+    const double span = std::max(rows, cols);
+    CheckCamera cam{{(u(rng) * 3 - 1) * cols, (u(rng) * 2 - 0.7) * span, (u(rng) * 3 - 1) * rows},
+                    {u(rng) * cols, u(rng) - 0.5, u(rng) * rows}, 5 + u(rng) * 120,
+                    100 + static_cast<int>(u(rng) * 1800), 100 + static_cast<int>(u(rng) * 1000)};
+    const double tau = 0.2 + 5 * u(rng);
+    build_and_check(s, rows, cols, cam, tau, "random trial " + std::to_string(trial));
+  }
 }
 
 TEST(LodBuilder, BigRainPondStaysWithinTolerance) {
@@ -185,6 +201,40 @@ TEST(LodBuilder, PapersFigureEightCase) {
       EXPECT_LT(t, 2431u);
     }
   }
+}
+
+}  // namespace
+}  // namespace pond::lod_test
+
+namespace pond::lod_test {
+namespace {
+
+// The checkers themselves must be able to fail: broken meshes are caught.
+TEST(MeshChecker, CatchesBrokenMeshes) {
+  const int rows = 3, cols = 3;  // nodes 0..8, row-major
+  // Full mesh of the 2 x 2 cells, rest normal +y (a, c, d and a, d, b per cell).
+  std::vector<std::uint32_t> full = {0, 3, 4, 0, 4, 1, 1, 4, 5, 1, 5, 2,
+                                     3, 6, 7, 3, 7, 4, 4, 7, 8, 4, 8, 5};
+  EXPECT_EQ(topology_problem(full, rows, cols), "");
+  std::vector<std::uint32_t> missing(full.begin(), full.end() - 3);
+  EXPECT_NE(topology_problem(missing, rows, cols), "");
+  std::vector<std::uint32_t> flipped = full;
+  std::swap(flipped[1], flipped[2]);
+  EXPECT_NE(topology_problem(flipped, rows, cols), "");
+  // A T-junction: the right column as two big triangles whose edge 1-7 runs through node 4,
+  // a vertex of the left column's triangles. Area and orientation are fine; pairing is not.
+  const std::vector<std::uint32_t> t_junction = {0, 3, 4, 0, 4, 1, 3, 6, 7, 3, 7, 4,
+                                                 1, 7, 8, 1, 8, 2};
+  EXPECT_NE(topology_problem(t_junction, rows, cols), "");
+  // Two triangles over a rippled surface: the centre node is far off.
+  std::vector<float> s = flat_pond(rows, cols);
+  s[4 * 6 + 1] = 0.5f;
+  const std::vector<std::uint32_t> coarse = {0, 6, 8, 0, 8, 2};
+  EXPECT_EQ(topology_problem(coarse, rows, cols), "");
+  const CheckCamera cam{{1, 5, -3}, {1, 0, 1}, 60, 640, 480};
+  const ErrorReport e = screen_errors(coarse, rows, cols, s, cam);
+  EXPECT_EQ(e.left_out, 5u);
+  EXPECT_GT(e.max_error_px, 10.0);
 }
 
 }  // namespace
