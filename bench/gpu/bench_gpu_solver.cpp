@@ -1,0 +1,81 @@
+// GPU solver speed on the device pond chooses (lavapipe here): node-steps per second at 256²,
+// 512², 1024², exact and fast math; the cost of one dispatch (1,000 substeps of an 8x8 grid, one
+// command buffer); and the scalar CPU backend on one thread at 1024² in the same run, for the
+// ratio. Validation is off (it would measure the layer).
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <memory>
+
+#include "gpu/context.h"
+#include "gpu/gpu_solver.h"
+#include "sim/cpu_solver.h"
+#include "sim/model.h"
+#include "sim/scene.h"
+
+namespace {
+
+using namespace pond;
+
+// A square pond with a fixed shore, an island and a splash in the middle: every code path of a
+// substep (free, fixed, borders) runs, the waves keep every node busy.
+sim::WaterModel square_pond(int n, int substeps, sim::MathMode math) {
+  sim::Scene s;
+  s.grid.rows = s.grid.cols = n;
+  s.physics.substeps = substeps;
+  s.constraints.push_back({sim::NodeKind::fixed, n / 4, n / 4 + n / 16, n / 2, n / 2 + n / 16});
+  s.perturbations.push_back({.step = 0, .row = n / 2.0, .col = n / 3.0, .radius = n / 32.0 + 1.0,
+                             .amplitude = 1.0, .target = sim::PerturbTarget::velocity,
+                             .mode = sim::PerturbMode::add});
+  return sim::build_model(s, math);
+}
+
+const gpu::Context& context() {
+  static const std::unique_ptr<gpu::Context> ctx = [] {
+    const char* device = std::getenv("POND_BENCH_DEVICE");
+    return std::make_unique<gpu::Context>(gpu::ContextOptions{.device = device ? device : "", .validation = false});
+  }();
+  return *ctx;
+}
+
+void BM_GpuStep(benchmark::State& state, sim::MathMode math) {
+  const int n = static_cast<int>(state.range(0));
+  gpu::GpuSolver solver(context(), square_pond(n, 1, math));
+  constexpr std::int64_t kSteps = 8;
+  solver.advance(kSteps);  // warm-up: pipeline compiled, pages touched
+  for (auto _ : state) solver.advance(kSteps);
+  state.counters["node-steps/s"] = benchmark::Counter(
+      static_cast<double>(n) * n * kSteps * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.SetLabel(context().device_name());
+}
+BENCHMARK_CAPTURE(BM_GpuStep, exact, sim::MathMode::exact)->Arg(256)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_GpuStep, fast, sim::MathMode::fast)->Arg(256)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// 1,000 substeps of an 8x8 grid = 1,000 dispatches + barriers in one command buffer: the fixed
+// cost of a dispatch (recording, submission amortized, the driver's launch, the barrier).
+void BM_GpuDispatchOverhead(benchmark::State& state) {
+  constexpr int kSubsteps = 1000;
+  gpu::GpuSolver solver(context(), square_pond(8, kSubsteps, sim::MathMode::exact));
+  solver.advance(1);
+  for (auto _ : state) solver.advance(1);
+  // Seconds per dispatch (printed with an SI prefix: "19u" = 19 microseconds).
+  state.counters["s/dispatch"] = benchmark::Counter(static_cast<double>(state.iterations()) * kSubsteps,
+                                                    benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_GpuDispatchOverhead)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The reference for the ratio: the scalar CPU backend, one thread, 1024².
+void BM_CpuScalarOneThread(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  sim::CpuSolver solver(square_pond(n, 1, sim::MathMode::exact), sim::Backend::scalar, 1);
+  constexpr std::int64_t kSteps = 2;
+  solver.advance(kSteps);
+  for (auto _ : state) solver.advance(kSteps);
+  state.counters["node-steps/s"] = benchmark::Counter(
+      static_cast<double>(n) * n * kSteps * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_CpuScalarOneThread)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
