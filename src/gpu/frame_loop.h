@@ -1,0 +1,143 @@
+#pragma once
+// The one frame loop of pond, shared by `pond render` (offscreen image) and the windowed demo
+// (swapchain image). One frame is one pass down the pipeline of ARCHITECTURE.md:
+//
+//   substeps (GPU compute or CPU solver) -> normals -> LOD (CPU, from the new positions)
+//     -> draw (dynamic rendering into the caller's image: land, water, LOD wireframe, extra drawables)
+//
+// Synchronization: the compute work (substeps + normals) is submitted and waited for, because the
+// CPU LOD builder needs this frame's positions (read straight from the state memory when it is
+// host-visible, as on lavapipe, else copied back). The draw is recorded into the frame slot's own
+// command buffer; its vertex shader reads the state and normals buffers as storage buffers behind
+// a compute -> vertex-shader barrier, and its end carries a vertex-shader -> compute barrier so the
+// next frame's substeps cannot overwrite a buffer the draw still reads. Index buffers, uniforms and
+// CPU-solver vertex buffers are per frame slot (kFramesInFlight), each slot guarded by its fence:
+// writing frame N+1's indices never waits for frame N's draw.
+//
+// The demo drives it like this (per frame):
+//     acquire swapchain image i (semaphore `acquired[slot]`)
+//     loop.frame(FrameTarget{image, view, format, extent, eUndefined, ePresentSrcKHR,
+//                            acquired[slot], rendered[i]}, view_params);
+//     present image i waiting on rendered[i]
+// and between frames may call set_solver(), splash(), set_physics(), reset().
+#include <array>
+#include <cstdint>
+#include <memory>
+
+#include "gpu/context.h"
+#include "lod/camera_budget.h"
+#include "sim/backends.h"
+#include "sim/model.h"
+#include "sim/scene.h"
+#include "sim/state.h"
+
+namespace pond::gpu {
+
+// The image a frame is drawn into: an offscreen RenderTarget (render_target.h) or a swapchain
+// image. The loop transitions it from `old_layout` (eUndefined: contents discarded, it is cleared)
+// to the color-attachment layout and, at the end, to `final_layout` (ePresentSrcKHR for a
+// swapchain, eTransferSrcOptimal for readback).
+struct FrameTarget {
+  vk::Image image;
+  vk::ImageView view;
+  vk::Format format = vk::Format::eUndefined;
+  vk::Extent2D extent;
+  vk::ImageLayout old_layout = vk::ImageLayout::eUndefined;
+  vk::ImageLayout final_layout = vk::ImageLayout::eTransferSrcOptimal;
+  vk::Semaphore wait_semaphore;    // optional: waited before color output (swapchain acquire)
+  vk::Semaphore signal_semaphore;  // optional: signalled when the frame is drawn (present waits)
+};
+
+// What one frame shows and how far it advances.
+struct FrameView {
+  lod::Camera camera;             // width/height should match the target's extent
+  double lod_tolerance_px = 1.0;  // 0 = the full mesh
+  bool wireframe = false;         // overlay the LOD triangles
+  std::int64_t steps = 1;         // simulation steps this frame (0 = frozen)
+  bool wait = false;              // wait for the draw to finish (headless timing, readback)
+};
+
+// The cost of one frame, by part. draw_ms covers recording and submitting, plus the GPU time when
+// FrameView::wait was set.
+struct FrameStats {
+  double simulate_ms = 0;  // substeps + normals + making the positions visible to the CPU
+  double lod_ms = 0;       // LOD build into the slot's mapped index buffer
+  double draw_ms = 0;
+  std::size_t triangles = 0;       // water triangles drawn
+  std::size_t full_triangles = 0;  // 2 (rows-1)(cols-1)
+  std::size_t land_triangles = 0;  // shore, islands, pool walls
+};
+
+// Which solver advances the water. Switching at run time carries the state over.
+struct SolverChoice {
+  bool gpu = true;
+  sim::Backend backend = sim::Backend::scalar;  // when !gpu
+  int threads = 0;                              // when !gpu; 0 = all cores
+  sim::MathMode math = sim::MathMode::exact;
+};
+
+// The per-frame values a drawable needs to draw into the loop's pass.
+struct FrameInfo {
+  const vk::raii::CommandBuffer& cmd;
+  std::uint32_t slot;           // frame slot in [0, kFramesInFlight): index per-slot resources
+  const float* view_proj;       // column-major 4x4, Vulkan clip space (y down, depth 0..1)
+  std::array<float, 3> eye;
+  vk::Extent2D extent;
+  double seconds;               // simulated time: steps_done * dt
+};
+
+// A second pipeline drawn in the same pass as the water (the wind tree). Its pipeline must be
+// created for FrameLoop::color_format() and FrameLoop::kDepthFormat with dynamic rendering.
+class PassDrawable {
+ public:
+  virtual ~PassDrawable() = default;
+  // Before the pass, with the slot's previous use finished: write per-slot uniforms, etc.
+  virtual void prepare(const FrameInfo& /*frame*/) {}
+  // Inside the pass (viewport, scissor set; depth test on): bind and draw.
+  virtual void draw(const FrameInfo& frame) = 0;
+};
+
+class FrameLoop {
+ public:
+  static constexpr std::uint32_t kFramesInFlight = 2;
+  static constexpr vk::Format kDepthFormat = vk::Format::eD32Sfloat;
+
+  // Starts from rest at step 0. `color_format`: the format of the images frame() draws into
+  // (pipelines are built for it). The context must outlive the loop; its queue must do graphics.
+  FrameLoop(const Context& ctx, const sim::Scene& scene, SolverChoice solver, vk::Format color_format);
+  ~FrameLoop();
+  FrameLoop(const FrameLoop&) = delete;
+  FrameLoop& operator=(const FrameLoop&) = delete;
+
+  // Advances without drawing (pond render --steps N before its frames).
+  void advance(std::int64_t steps);
+  // One frame, see the top of this file.
+  FrameStats frame(const FrameTarget& target, const FrameView& view);
+  // Waits until every submitted frame is drawn (before reading back, resizing, tearing down).
+  void wait_idle() const;
+
+  // ---- Run-time controls (the demo) ----
+  void set_solver(SolverChoice solver);          // the state and step count carry over
+  // A splash applied to the current state now (its `step` is ignored); row/col in grid indices.
+  void splash(const sim::Perturbation& splash);
+  // New physics for the same grid; the state carries over. InputError when unstable.
+  void set_physics(const sim::Physics& physics);
+  void reset();                                  // back to rest at step 0 (scene splashes replay)
+
+  void add_drawable(PassDrawable& drawable);     // drawn after the water, in insertion order
+
+  const sim::Scene& scene() const;
+  const sim::WaterModel& model() const;
+  const SolverChoice& solver() const;
+  std::int64_t steps_done() const;
+  sim::WaterState state() const;                 // a copy (reads back from the GPU if needed)
+  vk::Format color_format() const;
+  // The scene's camera, or a view of the whole pond when the scene has none.
+  lod::Camera default_camera(int width, int height) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace pond::gpu
