@@ -62,6 +62,17 @@ void solver_args(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_Solver)->Apply(solver_args)->ArgNames({"backend", "size", "threads", "fast"})
     ->Unit(benchmark::kMicrosecond)->UseRealTime()->MinTime(0.3);
 
+// The sweep behind docs/solver_speed.png (scripts/plot_solver_speed.sh): exact math, every backend,
+// one thread and all threads, grid sizes from 32^2 to 2048^2.
+void sweep_args(benchmark::internal::Benchmark* b) {
+  const int all = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  for (int size : {32, 64, 128, 256, 512, 1024, 2048})
+    for (int backend : {0, 1, 2})
+      for (int threads : {1, all}) b->Args({backend, size, threads, 0});
+}
+BENCHMARK(BM_Solver)->Name("Sweep")->Apply(sweep_args)->ArgNames({"backend", "size", "threads", "fast"})
+    ->Unit(benchmark::kMicrosecond)->UseRealTime()->MinTime(0.2);
+
 // Copy bandwidth with all threads: the bound a memory-limited solver approaches. Reported as
 // bytes/s read + written, and as the node-steps/s it would allow at 48 bytes per node.
 void BM_CopyBandwidth(benchmark::State& state) {
