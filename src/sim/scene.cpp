@@ -102,6 +102,58 @@ Perturbation parse_perturbation(JsonFields f, const GridSpec& g) {
   return p;
 }
 
+// "key": [x, y, z] of finite numbers.
+std::array<double, 3> vec3(JsonFields& f, const char* key, std::array<double, 3> fallback) {
+  if (!f.has(key)) return fallback;
+  const auto& v = f.array(key);
+  if (v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+    f.fail(key, "must be an array of three numbers [x, y, z]");
+  std::array<double, 3> out{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+  for (double d : out)
+    if (!std::isfinite(d)) f.fail(key, "must be finite");
+  return out;
+}
+
+std::array<double, 3> color(JsonFields& f, const char* key, std::array<double, 3> fallback) {
+  const std::array<double, 3> c = vec3(f, key, fallback);
+  for (double d : c)
+    if (d < 0.0 || d > 1.0) f.fail(key, "must be an RGB colour with components in [0, 1]");
+  return c;
+}
+
+CameraSpec parse_camera(JsonFields f) {
+  CameraSpec c;
+  for (const char* key : {"eye", "target"})
+    if (!f.has(key)) f.fail(key, "is missing");
+  c.eye = vec3(f, "eye", c.eye);
+  c.target = vec3(f, "target", c.target);
+  if (c.eye == c.target) f.fail("target", "must differ from camera.eye");
+  c.fovy_degrees = f.number("fovy", c.fovy_degrees);
+  if (!(c.fovy_degrees > 0.0 && c.fovy_degrees < 180.0)) f.fail("fovy", "must be in (0, 180) degrees");
+  f.finish();
+  return c;
+}
+
+void parse_view(JsonFields f, ViewSpec& v) {
+  v.steps_per_frame = f.integer("steps_per_frame", v.steps_per_frame, 0, 1000000);
+  v.lod_tolerance_px = f.number("lod_tolerance", v.lod_tolerance_px);
+  if (v.lod_tolerance_px < 0.0) f.fail("lod_tolerance", "must not be negative (0 = the full mesh)");
+  v.floor_depth = f.number("floor_depth", v.floor_depth);
+  if (!(v.floor_depth > 0.0)) f.fail("floor_depth", "must be positive");
+  v.land_height = f.number("land_height", v.land_height);
+  if (!(v.land_height > 0.0)) f.fail("land_height", "must be positive");
+  f.finish();
+}
+
+void parse_lighting(JsonFields f, LightingSpec& l) {
+  l.sun = vec3(f, "sun", l.sun);
+  if (l.sun[0] == 0.0 && l.sun[1] == 0.0 && l.sun[2] == 0.0) f.fail("sun", "must not be zero");
+  l.water = color(f, "water", l.water);
+  l.sky = color(f, "sky", l.sky);
+  l.ground = color(f, "ground", l.ground);
+  f.finish();
+}
+
 }  // namespace
 
 std::string_view default_scene_json() { return kDefaultSceneJson; }
@@ -130,6 +182,9 @@ Scene parse_scene(std::string_view json_text, const std::string& source) {
   for (std::size_t i = 0; i < ps.size(); ++i)
     s.perturbations.push_back(parse_perturbation(
         JsonFields(ps[i], "perturbations[" + std::to_string(i) + "]", source), s.grid));
+  if (f.has("camera")) s.camera = parse_camera(JsonFields(f.object("camera"), "camera", source));
+  parse_view(JsonFields(f.object("view"), "view", source), s.view);
+  parse_lighting(JsonFields(f.object("lighting"), "lighting", source), s.lighting);
   f.finish();
   return s;
 }

@@ -1,7 +1,9 @@
 #pragma once
 // A scene as the user writes it (world units), parsed from the JSON contract in README.md.
 // Parsing checks types, unknown keys and ranges and names the key's path in its InputError.
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -44,6 +46,31 @@ struct Perturbation {
   PerturbMode mode = PerturbMode::add;
 };
 
+// How the scene is looked at (pond render, the demo); optional keys, world units.
+// "camera": {"eye": [x, y, z], "target": [x, y, z], "fovy": degrees}; absent = a view of the whole
+// pond chosen from the grid size.
+struct CameraSpec {
+  std::array<double, 3> eye{0, 10, 0};
+  std::array<double, 3> target{0, 0, 1};
+  double fovy_degrees = 45.0;
+};
+
+// "view": what a rendered frame advances and how the pond around the water is shaped.
+struct ViewSpec {
+  std::int64_t steps_per_frame = 1;  // simulation steps per rendered frame
+  double lod_tolerance_px = 1.0;     // LOD screen-space error bound; 0 = the full mesh
+  double floor_depth = 3.0;          // the pool floor lies this far below the rest surface
+  double land_height = 0.6;          // shore, islands and pool rim rise this far above it
+};
+
+// "lighting": the sun and the colours the water shader mixes (linear RGB in [0, 1]).
+struct LightingSpec {
+  std::array<double, 3> sun{-0.45, 0.6, -0.65};   // direction toward the sun (normalized on use)
+  std::array<double, 3> water{0.015, 0.11, 0.13};  // deep water (what light through it tends to)
+  std::array<double, 3> sky{0.45, 0.65, 0.9};      // sky at the zenith (the horizon is lighter)
+  std::array<double, 3> ground{0.55, 0.47, 0.33};  // pool floor, shore and islands
+};
+
 struct Scene {
   std::string name;
   GridSpec grid;
@@ -51,6 +78,9 @@ struct Scene {
   NodeKind border = NodeKind::fixed;
   std::vector<ConstraintRect> constraints;
   std::vector<Perturbation> perturbations;
+  std::optional<CameraSpec> camera;
+  ViewSpec view;
+  LightingSpec lighting;
 };
 
 // Parses and validates; `source` names the file in messages. Throws InputError.

@@ -139,5 +139,58 @@ TEST(Scene, UnstableTimeStepIsRefusedWithTheBound) {
   EXPECT_NE(error_of(R"({"physics": {"stiffness": 20}})").find("stability bound"), std::string::npos);
 }
 
+
+// The rendering keys (pond render, the demo): camera, view, lighting.
+TEST(Scene, RenderKeysParse) {
+  const Scene s = parse_scene(R"({"camera": {"eye": [1, 2, 3], "target": [4, 0, 5], "fovy": 50},
+                                  "view": {"steps_per_frame": 3, "lod_tolerance": 0, "floor_depth": 2.5,
+                                           "land_height": 1},
+                                  "lighting": {"sun": [0, 1, 0], "water": [0, 0.1, 0.2], "sky": [1, 1, 1],
+                                               "ground": [0.5, 0.5, 0.5]}})",
+                              "x");
+  ASSERT_TRUE(s.camera.has_value());
+  EXPECT_EQ(s.camera->eye, (std::array<double, 3>{1, 2, 3}));
+  EXPECT_EQ(s.camera->target, (std::array<double, 3>{4, 0, 5}));
+  EXPECT_EQ(s.camera->fovy_degrees, 50);
+  EXPECT_EQ(s.view.steps_per_frame, 3);
+  EXPECT_EQ(s.view.lod_tolerance_px, 0);
+  EXPECT_EQ(s.view.floor_depth, 2.5);
+  EXPECT_EQ(s.view.land_height, 1);
+  EXPECT_EQ(s.lighting.sun, (std::array<double, 3>{0, 1, 0}));
+  EXPECT_EQ(s.lighting.sky, (std::array<double, 3>{1, 1, 1}));
+  // Absent: no camera (the renderer frames the pond), defaults elsewhere.
+  const Scene d = parse_scene("{}", "x");
+  EXPECT_FALSE(d.camera.has_value());
+  EXPECT_EQ(d.view.steps_per_frame, ViewSpec{}.steps_per_frame);
+  EXPECT_EQ(d.view.lod_tolerance_px, ViewSpec{}.lod_tolerance_px);
+}
+
+TEST(Scene, RenderKeyErrorsNameThePath) {
+  auto has = [](const char* json, const char* text) {
+    const std::string m = error_of(json);
+    return m.find(text) != std::string::npos ? ::testing::AssertionSuccess()
+                                             : ::testing::AssertionFailure() << m;
+  };
+  EXPECT_TRUE(has(R"({"camera": {"eye": [1, 2], "target": [0, 0, 0]}})", "camera.eye must be an array of three numbers"));
+  EXPECT_TRUE(has(R"({"camera": {"eye": [1, 2, "3"], "target": [0, 0, 0]}})", "camera.eye must be an array of three"));
+  EXPECT_TRUE(has(R"({"camera": {"eye": 3, "target": [0, 0, 0]}})", "camera.eye must be an array, not a number"));
+  EXPECT_TRUE(has(R"({"camera": {"target": [0, 0, 0]}})", "camera.eye is missing"));
+  EXPECT_TRUE(has(R"({"camera": {"eye": [0, 0, 0], "target": [0, 0, 0]}})", "camera.target must differ"));
+  EXPECT_TRUE(has(R"({"camera": {"eye": [0, 1, 0], "target": [0, 0, 0], "fovy": 180}})", "camera.fovy must be in (0, 180)"));
+  EXPECT_TRUE(has(R"({"camera": {"eye": [0, 1, 0], "target": [0, 0, 0], "fov": 60}})", "camera.fov is not a known key"));
+  EXPECT_TRUE(has(R"({"camera": [1, 2, 3]})", "camera must be an object, not an array"));
+  EXPECT_TRUE(has(R"({"view": {"steps_per_frame": -1}})", "view.steps_per_frame must be at least 0"));
+  EXPECT_TRUE(has(R"({"view": {"steps_per_frame": 1.5}})", "view.steps_per_frame must be an integer"));
+  EXPECT_TRUE(has(R"({"view": {"lod_tolerance": -1}})", "view.lod_tolerance must not be negative"));
+  EXPECT_TRUE(has(R"({"view": {"lod_tolerance": "1"}})", "view.lod_tolerance must be a number, not a string"));
+  EXPECT_TRUE(has(R"({"view": {"floor_depth": 0}})", "view.floor_depth must be positive"));
+  EXPECT_TRUE(has(R"({"view": {"land_height": -1}})", "view.land_height must be positive"));
+  EXPECT_TRUE(has(R"({"view": {"wireframe": true}})", "view.wireframe is not a known key"));
+  EXPECT_TRUE(has(R"({"lighting": {"sun": [0, 0, 0]}})", "lighting.sun must not be zero"));
+  EXPECT_TRUE(has(R"({"lighting": {"water": [0, 2, 0]}})", "lighting.water must be an RGB colour"));
+  EXPECT_TRUE(has(R"({"lighting": {"sky": "blue"}})", "lighting.sky must be an array"));
+  EXPECT_TRUE(has(R"({"lighting": {"moon": [0, 1, 0]}})", "lighting.moon is not a known key"));
+}
+
 }  // namespace
 }  // namespace pond::sim
