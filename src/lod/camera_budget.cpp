@@ -1,5 +1,6 @@
 #include "lod/camera_budget.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -21,8 +22,8 @@ Vec scale(const Vec& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
 // The frustum is widened by this relative amount so that a node a double-precision checker finds
 // just inside the viewport is never treated as outside.
 constexpr double kFrustumSlack = 1e-4;
-// Budgets shrink by this much: float storage of a budget rounds by 6e-8 relative.
-constexpr double kBudgetShrink = 1 - 1e-6;
+// Budgets shrink by this much: the few float products of a budget round by 6e-8 relative each.
+constexpr double kBudgetShrink = 1 - 1e-5;
 
 }  // namespace
 
@@ -59,34 +60,53 @@ ViewBasis view_basis(const Camera& c) {
   return b;
 }
 
-void node_budgets(const NodePositions& p, const Camera& c, double tolerance_px, float* budget) {
+void node_budgets(const NodePositions& p, const Camera& c, double tolerance_px, float largest,
+                  float* budget) {
   const ViewBasis b = view_basis(c);
-  const double tx = b.tan_x * (1 + kFrustumSlack), ty = b.tan_y * (1 + kFrustumSlack);
-  const double cone2 = tx * tx + ty * ty;
-  const double per_depth = tolerance_px / b.pixels_per_radian * kBudgetShrink;
+  const double eye_max = std::max({std::abs(b.eye[0]), std::abs(b.eye[1]), std::abs(b.eye[2])});
+  const float delta = static_cast<float>(32 * std::max(double(largest), eye_max) *
+                                         std::numeric_limits<float>::epsilon());
+  const float tx = static_cast<float>(b.tan_x * (1 + kFrustumSlack));
+  const float ty = static_cast<float>(b.tan_y * (1 + kFrustumSlack));
+  const float cone2 = tx * tx + ty * ty;
+  const float per_depth = static_cast<float>(tolerance_px / b.pixels_per_radian * kBudgetShrink);
   const float infinite = std::numeric_limits<float>::infinity();
-  const std::size_t n = p.nodes(), st = p.stride;
-  const double ex = b.eye[0], ey = b.eye[1], ez = b.eye[2];
-  const double f0 = b.forward[0], f1 = b.forward[1], f2 = b.forward[2];
-  const double r0 = b.right[0], r1 = b.right[1], r2 = b.right[2];
-  const double u0 = b.up[0], u1 = b.up[1], u2 = b.up[2];
-  // Branch-free bodies (& rather than &&) so the compiler can vectorize; the cone case apart.
+  const float ex = float(b.eye[0]), ey = float(b.eye[1]), ez = float(b.eye[2]);
+  const float f0 = float(b.forward[0]), f1 = float(b.forward[1]), f2 = float(b.forward[2]);
+  const float r0 = float(b.right[0]), r1 = float(b.right[1]), r2 = float(b.right[2]);
+  const float u0 = float(b.up[0]), u1 = float(b.up[1]), u2 = float(b.up[2]);
+  const float* px = p.x;
+  const float* py = p.y;
+  const float* pz = p.z;
+  const std::size_t n = p.nodes();
+  // Branch-free bodies (& rather than &&, selects) so the compiler vectorizes; the cone apart.
+  // A node counts as in view when it might be (widened by delta); its budget uses the lowest
+  // depth it might have, clamped at 0.
   if (b.cone) {
     for (std::size_t k = 0; k < n; ++k) {
-      const double dx = p.x[k * st] - ex, dy = p.y[k * st] - ey, dz = p.z[k * st] - ez;
-      const double depth = dx * f0 + dy * f1 + dz * f2;
-      const double sx = dx * r0 + dy * r1 + dz * r2, sy = dx * u0 + dy * u1 + dz * u2;
-      const bool in_view = (depth > 0) & (sx * sx + sy * sy <= cone2 * depth * depth);
-      budget[k] = in_view ? static_cast<float>(per_depth * depth) : infinite;
+      const float dx = px[k] - ex, dy = py[k] - ey, dz = pz[k] - ez;
+      const float depth = dx * f0 + dy * f1 + dz * f2;
+      const float sx = std::abs(dx * r0 + dy * r1 + dz * r2) - delta;
+      const float sy = std::abs(dx * u0 + dy * u1 + dz * u2) - delta;
+      const float far = depth + delta;
+      const float sxp = std::max(sx, 0.0f), syp = std::max(sy, 0.0f);
+      const float sx2 = sxp * sxp, sy2 = syp * syp;
+      const bool in_view = (far > 0) & (sx2 + sy2 <= cone2 * far * far);
+      const float low = depth - delta;
+      const float own = per_depth * std::max(low, 0.0f);
+      budget[k] = in_view ? own : infinite;
     }
     return;
   }
   for (std::size_t k = 0; k < n; ++k) {
-    const double dx = p.x[k * st] - ex, dy = p.y[k * st] - ey, dz = p.z[k * st] - ez;
-    const double depth = dx * f0 + dy * f1 + dz * f2;
-    const double sx = dx * r0 + dy * r1 + dz * r2, sy = dx * u0 + dy * u1 + dz * u2;
-    const bool in_view = (depth > 0) & (std::abs(sx) <= tx * depth) & (std::abs(sy) <= ty * depth);
-    budget[k] = in_view ? static_cast<float>(per_depth * depth) : infinite;
+    const float dx = px[k] - ex, dy = py[k] - ey, dz = pz[k] - ez;
+    const float depth = dx * f0 + dy * f1 + dz * f2;
+    const float sx = dx * r0 + dy * r1 + dz * r2, sy = dx * u0 + dy * u1 + dz * u2;
+    const float far = depth + delta;
+    const bool in_view = (far > 0) & (std::abs(sx) <= tx * far + delta) & (std::abs(sy) <= ty * far + delta);
+    const float low = depth - delta;
+    const float own = per_depth * std::max(low, 0.0f);
+    budget[k] = in_view ? own : infinite;
   }
 }
 

@@ -33,9 +33,11 @@ struct ViewBasis {
 };
 ViewBasis view_basis(const Camera& camera);
 
-// Writes budget[n] (world units, already shrunk by a small relative margin so that float
-// rounding never lets a node past tau) for every node of `positions`.
+// Writes budget[n] (world units) for every node of `positions` (stride 1). Computed in float
+// (vectorized) and kept conservative: `largest` must bound every |coordinate| of the positions;
+// depth and screen offsets are then known within delta = 32 eps max(largest, |eye|), so the
+// frustum is widened and the depth lowered by delta before the budget is taken.
 void node_budgets(const NodePositions& positions, const Camera& camera, double tolerance_px,
-                  float* budget);
+                  float largest, float* budget);
 
 }  // namespace pond::lod

@@ -1,7 +1,6 @@
 #include "lod/error_bounds.h"
 
 #include <algorithm>
-#include <bit>
 #include <cstdint>
 #include <cmath>
 #include <limits>
@@ -14,14 +13,14 @@ namespace {
 constexpr float kBoundGrow = 1 + 1e-5f;
 
 // One scale's pass over the vertices of one class: ids step by `dx` along a row and `dy` between
-// rows; the hypotenuse ends are id -+ `e`; the children are id + child[k] (all four inside the
-// grid unless the vertex is within `reach` of the border, then checked one by one).
+// rows; the hypotenuse ends are id -+ `e` (inside the grid: the loops stop before vertices whose
+// hypotenuse would leave it, which are tile corners); the children are at offsets child[k] (all
+// four inside the grid unless the vertex is within `reach` of the border, then checked one by one).
 struct Pass {
   const float *x, *y, *z;
   const float* budget;
   float* bound;
   float* min_budget;
-  const std::uint8_t* always;
   int rows, cols;
   float slack;
 
@@ -39,11 +38,6 @@ struct Pass {
               int reach) const {
     const std::size_t id = static_cast<std::size_t>(vy) * static_cast<std::size_t>(cols) +
                            static_cast<std::size_t>(vx);
-    if (always[id]) {
-      bound[id] = std::numeric_limits<float>::infinity();
-      min_budget[id] = budget[id];
-      return;
-    }
     float worst_child = 0, least = budget[id];
     const bool interior = vx >= reach && vy >= reach && vx + reach < cols && vy + reach < rows;
     for (int k = 0; k < child_count; ++k) {
@@ -62,19 +56,13 @@ struct Pass {
 
 }  // namespace
 
-void nested_bounds(const GridHierarchy& grid, const NodePositions& p, const float* budget,
-                   float* bound, float* min_budget) {
+void nested_bounds(const GridHierarchy& grid, const NodePositions& p, float largest,
+                   const float* budget, float* bound, float* min_budget) {
   const int rows = grid.rows(), cols = grid.cols();
   // Float rounding of a deviation: each of its ~6 operations errs by at most half an ulp of the
-  // largest magnitude involved (<= 2 * max |coordinate|), so 8 ulps of that is a safe slack.
-  // (On the bit patterns with the sign cleared, which order like the magnitudes and vectorize.)
-  std::uint32_t largest_bits = 0;
-  for (const float* a : {p.x, p.y, p.z})
-    for (std::size_t n = 0; n < p.nodes(); ++n)
-      largest_bits = std::max(largest_bits, std::bit_cast<std::uint32_t>(a[n]) & 0x7fffffffu);
-  const float largest = std::bit_cast<float>(largest_bits);
+  // largest magnitude involved (<= 2 * largest), so 16 ulps of `largest` is a safe slack.
   const float slack = 16 * largest * std::numeric_limits<float>::epsilon();
-  const Pass pass{p.x, p.y, p.z, budget, bound, min_budget, grid.always_split().data(), rows, cols,
+  const Pass pass{p.x, p.y, p.z, budget, bound, min_budget, rows, cols,
                   slack};
   const std::ptrdiff_t row = cols;
   const int extent = std::max(rows, cols);
@@ -83,16 +71,39 @@ void nested_bounds(const GridHierarchy& grid, const NodePositions& p, const floa
     // Axis-aligned hypotenuses of length 2h: horizontal (x = h mod 2h, y = 0 mod 2h) and vertical
     // (x = 0 mod 2h, y = h mod 2h). Their children are the diagonal centres of scale h/2 around.
     const int axis_children[4][2] = {{-q, -q}, {q, -q}, {-q, q}, {q, q}};
+    if (h == 1) {  // half of all nodes: no children, so a plain loop over contiguous triples
+      for (int y = 0; y < rows; y += 2)
+        for (int x = 1; x + 1 < cols; x += 2) {
+          const std::size_t id = static_cast<std::size_t>(y) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(x);
+          bound[id] = pass.deviation(id, id - 1, id + 1) * kBoundGrow;
+          min_budget[id] = budget[id];
+        }
+      const std::size_t r = static_cast<std::size_t>(cols);
+      for (int y = 1; y + 1 < rows; y += 2)
+        for (int x = 0; x < cols; x += 2) {
+          const std::size_t id = static_cast<std::size_t>(y) * r + static_cast<std::size_t>(x);
+          bound[id] = pass.deviation(id, id - r, id + r) * kBoundGrow;
+          min_budget[id] = budget[id];
+        }
+    } else {
     for (int y = 0; y < rows; y += step)
-      for (int x = h; x < cols; x += step) pass.vertex(x, y, h, axis_children, q > 0 ? 4 : 0, q);
-    for (int y = h; y < rows; y += step)
-      for (int x = 0; x < cols; x += step) pass.vertex(x, y, h * row, axis_children, q > 0 ? 4 : 0, q);
+      for (int x = h; x + h < cols; x += step) pass.vertex(x, y, h, axis_children, 4, q);
+    for (int y = h; y + h < rows; y += step)
+      for (int x = 0; x < cols; x += step) pass.vertex(x, y, h * row, axis_children, 4, q);
+    }
     // Diagonal hypotenuses of the squares of side 2h (main diagonal when the square's index
     // parity is even, see GridHierarchy::diamond): children are that square's edge midpoints.
     const int diag_children[4][2] = {{-h, 0}, {h, 0}, {0, -h}, {0, h}};
-    for (int y = h, b = 0; y < rows; y += step, ++b)
-      for (int x = h, a = 0; x < cols; x += step, ++a)
+    for (int y = h, b = 0; y + h < rows; y += step, ++b)
+      for (int x = h, a = 0; x + h < cols; x += step, ++a)
         pass.vertex(x, y, ((a + b) & 1) == 0 ? h * row + h : h * row - h, diag_children, 4, h);
+  }
+  // Always-split vertices are never tested. Their bounds were computed from meaningless
+  // hypotenuses (tile corners) but are read only by their parents, which are always split too.
+  // Loops skip the vertices whose hypotenuse leaves the grid: those are tile corners.
+  for (std::uint32_t id : grid.always_split_ids()) {
+    bound[id] = std::numeric_limits<float>::infinity();
+    min_budget[id] = budget[id];
   }
 }
 

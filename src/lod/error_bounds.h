@@ -17,7 +17,8 @@ namespace pond::lod {
 
 // positions: stride 1 (the builder's own copy). bound, min_budget: one float per node; always-split
 // vertices get bound = +infinity (they are never tested).
-void nested_bounds(const GridHierarchy& grid, const NodePositions& positions, const float* budget,
-                   float* bound, float* min_budget);
+// `largest` bounds every |coordinate| (it sizes the float rounding slack).
+void nested_bounds(const GridHierarchy& grid, const NodePositions& positions, float largest,
+                   const float* budget, float* bound, float* min_budget);
 
 }  // namespace pond::lod

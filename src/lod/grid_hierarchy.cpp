@@ -69,6 +69,8 @@ GridHierarchy::GridHierarchy(int rows, int cols) : rows_(rows), cols_(cols) {
       if (corner_[id({x, y})] && (x | y) != 0)
         for (Point p : diamond({x, y}).parents)
           if (inside(p)) force(p);
+  for (std::uint32_t k = 0; k < always_.size(); ++k)
+    if (always_[k]) always_ids_.push_back(k);
 }
 
 void GridHierarchy::add_tile(int x0, int y0, int side) {

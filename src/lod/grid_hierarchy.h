@@ -57,6 +57,7 @@ class GridHierarchy {
   const std::vector<Tri>& roots() const { return roots_; }
   // Per node: 1 when the node is a vertex of every mesh (tile corners and what they force).
   const std::vector<std::uint8_t>& always_split() const { return always_; }
+  const std::vector<std::uint32_t>& always_split_ids() const { return always_ids_; }
 
   // Only for nodes that are not tile corners.
   static Diamond diamond(Point v);
@@ -68,6 +69,7 @@ class GridHierarchy {
   std::vector<Tri> roots_;
   std::vector<std::uint8_t> always_;
   std::vector<std::uint8_t> corner_;
+  std::vector<std::uint32_t> always_ids_;
 };
 
 // The hypotenuse midpoint of t; false when the hypotenuse is a cell diagonal (no node there).

@@ -1,5 +1,7 @@
 #include "lod/lod_builder.h"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -77,23 +79,28 @@ std::size_t LodBuilder::build(const NodePositions& p, const Camera& camera, doub
                             " indices, needs " + std::to_string(max_indices()));
   stats_ = {};
   const std::size_t n = p.nodes();
-  bool finite = true;
+  // The copy also finds the largest magnitude (on the bit patterns with the sign cleared, which
+  // order like the magnitudes; inf and NaN compare above every finite value).
+  std::uint32_t largest_bits = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const float x = p.x[k * p.stride], y = p.y[k * p.stride], z = p.z[k * p.stride];
     x_[k] = x, y_[k] = y, z_[k] = z;
-    finite &= (x - x == 0) & (y - y == 0) & (z - z == 0);  // false for inf and NaN
+    largest_bits = std::max({largest_bits, std::bit_cast<std::uint32_t>(x) & 0x7fffffffu,
+                             std::bit_cast<std::uint32_t>(y) & 0x7fffffffu,
+                             std::bit_cast<std::uint32_t>(z) & 0x7fffffffu});
   }
-  if (!finite)
+  const float largest = std::bit_cast<float>(largest_bits);
+  if (!std::isfinite(largest))
     for (std::size_t k = 0; k < n; ++k)
       if (!std::isfinite(x_[k]) || !std::isfinite(y_[k]) || !std::isfinite(z_[k]))
         throw InputError("node " + std::to_string(k) + " (row " + std::to_string(k / cols()) +
                          ", col " + std::to_string(k % cols()) + ") has a non-finite position");
   const NodePositions own = soa_positions(x_.data(), y_.data(), z_.data(), rows(), cols());
-  node_budgets(own, camera, tolerance_px, budget_.data());
-  nested_bounds(grid_, own, budget_.data(), bound_.data(), min_budget_.data());
+  node_budgets(own, camera, tolerance_px, largest, budget_.data());
+  nested_bounds(grid_, own, largest, budget_.data(), bound_.data(), min_budget_.data());
 
-  const std::vector<std::uint8_t>& always = grid_.always_split();
-  for (std::size_t k = 0; k < n; ++k) state_[k] = always[k] ? kActive : 0;
+  std::fill(state_.begin(), state_.end(), std::uint8_t{0});
+  for (std::uint32_t id : grid_.always_split_ids()) state_[id] = kActive;
   work_.assign(grid_.roots().begin(), grid_.roots().end());
   while (!work_.empty()) {
     const Tri t = work_.back();
