@@ -1,5 +1,7 @@
 // The LOD builder's speed and value. Scenes: a pond seen from 35 units up at 1280x720, looking
-// across it; "rain" = splashes all over the pond, "splashes" = a few rings spreading.
+// across it. "rain": one drop per 160 nodes over 20 steps (vertical velocity 0.03-0.1 each),
+// waves everywhere up to about 1 unit high; "storm": the same drops ten times stronger (waves up to
+// 4 units); "splashes": six strong splashes spreading for 60 steps.
 #include <benchmark/benchmark.h>
 #include <meshoptimizer.h>
 
@@ -21,17 +23,19 @@ struct Pond {
   std::vector<float> state;
 };
 
-// Rain: drops per 4 x 4 nodes... scaled with the area, over the last 20 steps.
-const Pond& rain(int side) {
-  static std::map<int, Pond> cache;
-  auto it = cache.find(side);
+const Pond& drops_everywhere(int side, double amplitude) {
+  static std::map<std::pair<int, double>, Pond> cache;
+  auto it = cache.find({side, amplitude});
   if (it == cache.end()) {
     const int drops = side * side / 160;
-    it = cache.emplace(side, Pond{side, pond::lod_test::simulated_pond(side, side, drops,
-                                                                       std::max(1, drops / 20), 15, 1)}).first;
+    it = cache.emplace(std::pair{side, amplitude},
+                       Pond{side, pond::lod_test::simulated_pond(side, side, drops, std::max(1, drops / 20),
+                                                                 15, 1, amplitude)}).first;
   }
   return it->second;
 }
+const Pond& rain(int side) { return drops_everywhere(side, 0.1); }
+const Pond& storm(int side) { return drops_everywhere(side, 1.0); }
 
 const Pond& splashes(int side) {
   static std::map<int, Pond> cache;
@@ -98,6 +102,20 @@ void BM_BuildSplashes(benchmark::State& st) {
 }
 BENCHMARK(BM_BuildSplashes)->Arg(257)->Unit(benchmark::kMillisecond);
 
+void BM_BuildStorm(benchmark::State& st) {
+  const int side = static_cast<int>(st.range(0));
+  const Pond& p = storm(side);
+  pond::lod::LodBuilder b(side, side);
+  std::vector<std::uint32_t> out(b.max_indices());
+  std::size_t n = 0;
+  for (auto _ : st) {
+    n = b.build(pond::lod::interleaved_positions(p.state.data(), side, side), lod_camera(view(side)), 1.0, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+  report_counts(st, n / 3, side);
+}
+BENCHMARK(BM_BuildStorm)->Arg(257)->Unit(benchmark::kMillisecond);
+
 // Triangle counts against tolerance (x10: 5 = 0.5 px), rain-covered and few-splashes 257^2.
 void BM_CountsRain(benchmark::State& st) {
   const double tau = static_cast<double>(st.range(0)) / 10;
@@ -114,6 +132,14 @@ void BM_CountsSplashes(benchmark::State& st) {
   report_counts(st, n, 257);
 }
 BENCHMARK(BM_CountsSplashes)->Arg(5)->Arg(10)->Arg(20)->Arg(40)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+void BM_CountsStorm(benchmark::State& st) {
+  const double tau = static_cast<double>(st.range(0)) / 10;
+  std::size_t n = 0;
+  for (auto _ : st) n = build(storm(257), view(257), tau).size() / 3;
+  report_counts(st, n, 257);
+}
+BENCHMARK(BM_CountsStorm)->Arg(5)->Arg(10)->Arg(20)->Arg(40)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 // Vertex-cache efficiency (ACMR, FIFO of 16) of our Sierpinski order against
 // meshopt_optimizeVertexCache on the very same triangles.

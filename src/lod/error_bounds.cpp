@@ -19,8 +19,7 @@ constexpr float kBoundGrow = 1 + 1e-5f;
 struct Pass {
   const float *x, *y, *z;
   const float* budget;
-  float* bound;
-  float* min_budget;
+  NestedBound* out;
   int rows, cols;
   float slack;
 
@@ -45,24 +44,23 @@ struct Pass {
       if (!interior && (cx < 0 || cy < 0 || cx >= cols || cy >= rows)) continue;
       const std::size_t c = static_cast<std::size_t>(cy) * static_cast<std::size_t>(cols) +
                             static_cast<std::size_t>(cx);
-      worst_child = std::max(worst_child, bound[c]);
-      least = std::min(least, min_budget[c]);
+      worst_child = std::max(worst_child, out[c].error);
+      least = std::min(least, out[c].min_budget);
     }
     const float dev = deviation(id, id - static_cast<std::size_t>(e), id + static_cast<std::size_t>(e));
-    bound[id] = (dev + worst_child) * kBoundGrow;
-    min_budget[id] = least;
+    out[id] = {(dev + worst_child) * kBoundGrow, least};
   }
 };
 
 }  // namespace
 
 void nested_bounds(const GridHierarchy& grid, const NodePositions& p, float largest,
-                   const float* budget, float* bound, float* min_budget) {
+                   const float* budget, NestedBound* bounds) {
   const int rows = grid.rows(), cols = grid.cols();
   // Float rounding of a deviation: each of its ~6 operations errs by at most half an ulp of the
   // largest magnitude involved (<= 2 * largest), so 16 ulps of `largest` is a safe slack.
   const float slack = 16 * largest * std::numeric_limits<float>::epsilon();
-  const Pass pass{p.x, p.y, p.z, budget, bound, min_budget, rows, cols,
+  const Pass pass{p.x, p.y, p.z, budget, bounds, rows, cols,
                   slack};
   const std::ptrdiff_t row = cols;
   const int extent = std::max(rows, cols);
@@ -75,15 +73,13 @@ void nested_bounds(const GridHierarchy& grid, const NodePositions& p, float larg
       for (int y = 0; y < rows; y += 2)
         for (int x = 1; x + 1 < cols; x += 2) {
           const std::size_t id = static_cast<std::size_t>(y) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(x);
-          bound[id] = pass.deviation(id, id - 1, id + 1) * kBoundGrow;
-          min_budget[id] = budget[id];
+          bounds[id] = {pass.deviation(id, id - 1, id + 1) * kBoundGrow, budget[id]};
         }
       const std::size_t r = static_cast<std::size_t>(cols);
       for (int y = 1; y + 1 < rows; y += 2)
         for (int x = 0; x < cols; x += 2) {
           const std::size_t id = static_cast<std::size_t>(y) * r + static_cast<std::size_t>(x);
-          bound[id] = pass.deviation(id, id - r, id + r) * kBoundGrow;
-          min_budget[id] = budget[id];
+          bounds[id] = {pass.deviation(id, id - r, id + r) * kBoundGrow, budget[id]};
         }
     } else {
     for (int y = 0; y < rows; y += step)
@@ -102,8 +98,7 @@ void nested_bounds(const GridHierarchy& grid, const NodePositions& p, float larg
   // hypotenuses (tile corners) but are read only by their parents, which are always split too.
   // Loops skip the vertices whose hypotenuse leaves the grid: those are tile corners.
   for (std::uint32_t id : grid.always_split_ids()) {
-    bound[id] = std::numeric_limits<float>::infinity();
-    min_budget[id] = budget[id];
+    bounds[id] = {std::numeric_limits<float>::infinity(), budget[id]};
   }
 }
 

@@ -15,10 +15,16 @@
 
 namespace pond::lod {
 
-// positions: stride 1 (the builder's own copy). bound, min_budget: one float per node; always-split
-// vertices get bound = +infinity (they are never tested).
+// positions: stride 1 (the builder's own copy). One NestedBound per node; always-split vertices
+// get error = +infinity (they are never tested).
+// Both numbers of a split vertex side by side: the refinement reads them together.
+struct NestedBound {
+  float error;       // bound(v)
+  float min_budget;  // min_budget(v)
+};
+
 // `largest` bounds every |coordinate| (it sizes the float rounding slack).
 void nested_bounds(const GridHierarchy& grid, const NodePositions& positions, float largest,
-                   const float* budget, float* bound, float* min_budget);
+                   const float* budget, NestedBound* bounds);
 
 }  // namespace pond::lod

@@ -28,7 +28,7 @@ int side_of(const Tri& t, Point m) {
 LodBuilder::LodBuilder(int rows, int cols) : grid_(rows, cols) {
   const std::size_t n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
   x_.resize(n), y_.resize(n), z_.resize(n);
-  budget_.resize(n), bound_.resize(n), min_budget_.resize(n);
+  budget_.resize(n), bounds_.resize(n);
   state_.resize(n);
 }
 
@@ -38,7 +38,7 @@ std::size_t LodBuilder::max_indices() const {
 
 bool LodBuilder::leaf_is_fine(const Tri& t, std::uint32_t mid) {
   ++stats_.tested;
-  if (bound_[mid] <= min_budget_[mid]) {
+  if (bounds_[mid].error <= bounds_[mid].min_budget) {
     ++stats_.proved;
     return true;
   }
@@ -97,7 +97,7 @@ std::size_t LodBuilder::build(const NodePositions& p, const Camera& camera, doub
                          ", col " + std::to_string(k % cols()) + ") has a non-finite position");
   const NodePositions own = soa_positions(x_.data(), y_.data(), z_.data(), rows(), cols());
   node_budgets(own, camera, tolerance_px, largest, budget_.data());
-  nested_bounds(grid_, own, largest, budget_.data(), bound_.data(), min_budget_.data());
+  nested_bounds(grid_, own, largest, budget_.data(), bounds_.data());
 
   std::fill(state_.begin(), state_.end(), std::uint8_t{0});
   for (std::uint32_t id : grid_.always_split_ids()) state_[id] = kActive;
@@ -111,8 +111,7 @@ std::size_t LodBuilder::build(const NodePositions& p, const Camera& camera, doub
     std::uint8_t& s = state_[mid];
     if (!(s & kActive)) {
       if (leaf_is_fine(t, mid)) continue;
-      activate(m);  // queues t again, now with an active midpoint
-      continue;
+      activate(m);  // queues t again (expanded below, so that copy is skipped) and its neighbour
     }
     const std::uint8_t bit = kExpanded[side_of(t, m)];
     if (s & bit) continue;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "lod/camera_budget.h"
+#include "lod/error_bounds.h"
 #include "lod/grid_hierarchy.h"
 #include "lod/node_positions.h"
 
@@ -57,7 +58,8 @@ class LodBuilder {
 
   GridHierarchy grid_;
   std::vector<float> x_, y_, z_;  // this frame's positions, structure of arrays
-  std::vector<float> budget_, bound_, min_budget_;
+  std::vector<float> budget_;
+  std::vector<NestedBound> bounds_;
   std::vector<std::uint8_t> state_;  // per node: kActive | kExpanded* bits
   std::vector<Tri> work_;
   BuildStats stats_;

@@ -45,22 +45,27 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
     int x0, x1;
     if (!row_span(t, y, x0, x1)) continue;
     const int dy = y - t.apex.y;
-    for (int x = x0; x <= x1; ++x) {
-      const int dx = x - t.apex.x;
-      const double u = (double(dx) * lx + double(dy) * ly) * inv_len2;
-      const double w = (double(dx) * rx + double(dy) * ry) * inv_len2;
-      const std::size_t n = static_cast<std::size_t>(y) * cols + static_cast<std::size_t>(x);
-      const double ex = p.x[n] - (ax + u * lx3 + w * rx3);
-      const double ey = p.y[n] - (ay + u * ly3 + w * ry3);
-      const double ez = p.z[n] - (az + u * lz3 + w * rz3);
-      const double b = budget[n];
-      if (ex * ex + ey * ey + ez * ez > b * b) {
-        ok = false;
-        count += x - x0 + 1;
-        break;
-      }
+    // Weights along the row are linear in x; the row is tested whole (no early exit inside, so
+    // the loop vectorizes) and the scan stops after the first row with a node over budget.
+    const double u0 = (double(x0 - t.apex.x) * lx + double(dy) * ly) * inv_len2, du = lx * inv_len2;
+    const double w0 = (double(x0 - t.apex.x) * rx + double(dy) * ry) * inv_len2, dw = rx * inv_len2;
+    const std::size_t base = static_cast<std::size_t>(y) * cols + static_cast<std::size_t>(x0);
+    const float* px = p.x + base;
+    const float* py = p.y + base;
+    const float* pz = p.z + base;
+    const float* pb = budget + base;
+    const int len = x1 - x0 + 1;
+    int over = 0;
+    for (int k = 0; k < len; ++k) {
+      const double u = u0 + k * du, w = w0 + k * dw;
+      const double ex = px[k] - (ax + u * lx3 + w * rx3);
+      const double ey = py[k] - (ay + u * ly3 + w * ry3);
+      const double ez = pz[k] - (az + u * lz3 + w * rz3);
+      const double b = pb[k];
+      over |= ex * ex + ey * ey + ez * ez > b * b;
     }
-    if (ok) count += x1 - x0 + 1;
+    count += len;
+    ok = over == 0;
   }
   if (visited) *visited += count;
   return ok;

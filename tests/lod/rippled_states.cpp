@@ -9,11 +9,11 @@
 namespace pond::lod_test {
 
 std::vector<float> simulated_pond(int rows, int cols, int drops, int per_step, int settle,
-                                  std::uint32_t seed) {
+                                  std::uint32_t seed, double amplitude) {
   sim::Scene scene;
   scene.grid = {rows, cols, 1.0};
   std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> row(1, rows - 2), col(1, cols - 2), amp(0.3, 1.0),
+  std::uniform_real_distribution<double> row(1, rows - 2), col(1, cols - 2), amp(0.3 * amplitude, amplitude),
       radius(1.0, 2.0);
   const int steps_raining = (drops + per_step - 1) / per_step;
   for (int k = 0; k < drops; ++k) {
