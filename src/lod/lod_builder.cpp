@@ -51,7 +51,7 @@ bool LodBuilder::leaf_is_fine(const Tri& t, std::uint32_t mid) {
   if (dx * dx + dy * dy + dz * dz > b * b) return false;
   ++stats_.scanned;
   return within_budget(grid_, soa_positions(x_.data(), y_.data(), z_.data(), rows(), cols()),
-                       budget_.data(), t, &stats_.scanned_nodes);
+                       budget_.data(), largest_, t, &stats_.scanned_nodes);
 }
 
 // Activates v and, first, its parents (the dependency closure that keeps the mesh conforming),
@@ -90,6 +90,7 @@ std::size_t LodBuilder::build(const NodePositions& p, const Camera& camera, doub
                              std::bit_cast<std::uint32_t>(z) & 0x7fffffffu});
   }
   const float largest = std::bit_cast<float>(largest_bits);
+  largest_ = largest;
   if (!std::isfinite(largest))
     for (std::size_t k = 0; k < n; ++k)
       if (!std::isfinite(x_[k]) || !std::isfinite(y_[k]) || !std::isfinite(z_[k]))

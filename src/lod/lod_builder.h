@@ -58,6 +58,7 @@ class LodBuilder {
 
   GridHierarchy grid_;
   std::vector<float> x_, y_, z_;  // this frame's positions, structure of arrays
+  float largest_ = 0;  // this frame's largest |coordinate|
   std::vector<float> budget_;
   std::vector<NestedBound> bounds_;
   std::vector<std::uint8_t> state_;  // per node: kActive | kExpanded* bits

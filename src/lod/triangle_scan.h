@@ -7,8 +7,9 @@
 
 namespace pond::lod {
 
-// positions: stride 1. Counts the nodes visited into *visited (statistics).
+// positions: stride 1; `largest` bounds every |coordinate| (it sizes the float rounding margin).
+// Counts the nodes visited into *visited (statistics).
 bool within_budget(const GridHierarchy& grid, const NodePositions& positions, const float* budget,
-                   const Tri& t, long long* visited);
+                   float largest, const Tri& t, long long* visited);
 
 }  // namespace pond::lod
