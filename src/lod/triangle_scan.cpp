@@ -7,22 +7,43 @@
 namespace pond::lod {
 namespace {
 
-// The columns where row y meets the closed triangle: the edges of hierarchy triangles run at 0,
-// 45 or 90 degrees, so every crossing is an integer column.
-bool row_span(const Tri& t, int y, int& x0, int& x1) {
-  x0 = INT_MAX, x1 = INT_MIN;
-  const Point v[3] = {t.apex, t.left, t.right};
-  for (int k = 0; k < 3; ++k) {
-    const Point a = v[k], b = v[(k + 1) % 3];
-    if (a.y == b.y) {
-      if (a.y == y) x0 = std::min({x0, a.x, b.x}), x1 = std::max({x1, a.x, b.x});
-    } else if (y >= std::min(a.y, b.y) && y <= std::max(a.y, b.y)) {
-      const int x = a.x + (b.x - a.x) / (b.y - a.y) * (y - a.y);  // slope is 0 or +-1
-      x0 = std::min(x0, x), x1 = std::max(x1, x);
+// The columns where each row meets the closed triangle. The edges of hierarchy triangles run at
+// 0, 45 or 90 degrees, so every crossing is an integer column: x = x_at_y0 + slope * (y - y0).
+class RowSpans {
+ public:
+  explicit RowSpans(const Tri& t) {
+    const Point v[3] = {t.apex, t.left, t.right};
+    for (int k = 0; k < 3; ++k) {
+      const Point a = v[k], b = v[(k + 1) % 3];
+      Edge& e = edges_[k];
+      e.flat = a.y == b.y;
+      e.y_low = std::min(a.y, b.y), e.y_high = std::max(a.y, b.y);
+      e.x_low = std::min(a.x, b.x), e.x_high = std::max(a.x, b.x);
+      e.slope = e.flat ? 0 : (b.x - a.x) / (b.y - a.y);
+      e.x0 = a.x - e.slope * a.y;
     }
   }
-  return x0 <= x1;
-}
+  bool span(int y, int& x0, int& x1) const {
+    x0 = INT_MAX, x1 = INT_MIN;
+    for (const Edge& e : edges_) {
+      if (y < e.y_low || y > e.y_high) continue;
+      if (e.flat) {
+        x0 = std::min(x0, e.x_low), x1 = std::max(x1, e.x_high);
+      } else {
+        const int x = e.x0 + e.slope * y;
+        x0 = std::min(x0, x), x1 = std::max(x1, x);
+      }
+    }
+    return x0 <= x1;
+  }
+
+ private:
+  struct Edge {
+    bool flat;
+    int y_low, y_high, x_low, x_high, slope, x0;
+  };
+  Edge edges_[3];
+};
 
 }  // namespace
 
@@ -42,9 +63,10 @@ bool within_budget_double(const GridHierarchy& grid, const NodePositions& p, con
   const int y0 = std::min({t.apex.y, t.left.y, t.right.y});
   const int y1 = std::max({t.apex.y, t.left.y, t.right.y});
   const std::size_t cols = static_cast<std::size_t>(grid.cols());
+  const RowSpans spans(t);
   for (int y = y0; y <= y1; ++y) {
     int x0, x1;
-    if (!row_span(t, y, x0, x1)) continue;
+    if (!spans.span(y, x0, x1)) continue;
     const int dy = y - t.apex.y;
     for (int x = x0; x <= x1; ++x) {
       const int dx = x - t.apex.x;
@@ -86,9 +108,10 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
   long long count = 0;
   bool ok = true;
   int undecided = 0;
+  const RowSpans spans(t);
   for (int y = y0; y <= y1 && ok; ++y) {
     int x0, x1;
-    if (!row_span(t, y, x0, x1)) continue;
+    if (!spans.span(y, x0, x1)) continue;
     const int dy = y - t.apex.y;
     // Weights along the row are linear in x; the row is tested whole (no early exit inside, so
     // the loop vectorizes) and the scan stops after the first row with a node over budget.
