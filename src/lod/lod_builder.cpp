@@ -42,13 +42,19 @@ bool LodBuilder::leaf_is_fine(const Tri& t, std::uint32_t mid) {
     ++stats_.proved;
     return true;
   }
-  // Quick reject: the midpoint itself is over budget.
-  const std::uint32_t l = grid_.id(t.left), r = grid_.id(t.right);
-  const double dx = x_[mid] - 0.5 * (double(x_[l]) + x_[r]);
-  const double dy = y_[mid] - 0.5 * (double(y_[l]) + y_[r]);
-  const double dz = z_[mid] - 0.5 * (double(z_[l]) + z_[r]);
-  const double b = budget_[mid];
-  if (dx * dx + dy * dy + dz * dz > b * b) return false;
+  // Quick rejects: the midpoint, then the midpoints of the legs (the children's midpoints), each
+  // against the interpolation of the edge it halves.
+  const auto over = [&](Point e0, Point e1) {
+    const int sx = e0.x + e1.x, sy = e0.y + e1.y;
+    if ((sx | sy) & 1) return false;  // a cell diagonal: no node halfway
+    const std::uint32_t v = grid_.id({sx / 2, sy / 2}), a = grid_.id(e0), b = grid_.id(e1);
+    const double dx = x_[v] - 0.5 * (double(x_[a]) + x_[b]);
+    const double dy = y_[v] - 0.5 * (double(y_[a]) + y_[b]);
+    const double dz = z_[v] - 0.5 * (double(z_[a]) + z_[b]);
+    const double bv = budget_[v];
+    return dx * dx + dy * dy + dz * dz > bv * bv;
+  };
+  if (over(t.left, t.right) || over(t.apex, t.left) || over(t.apex, t.right)) return false;
   ++stats_.scanned;
   return within_budget(grid_, soa_positions(x_.data(), y_.data(), z_.data(), rows(), cols()),
                        budget_.data(), largest_, t, &stats_.scanned_nodes);
