@@ -82,9 +82,13 @@ Context::Context(const ContextOptions& options)
                                              .pQueuePriorities = &priority};
   // Both are required by Vulkan 1.3: synchronization2 for the barriers, maintenance4 because
   // glslang's SPIR-V 1.6 declares workgroup sizes with LocalSizeId.
-  vk::PhysicalDeviceVulkan13Features features13{.synchronization2 = VK_TRUE, .maintenance4 = VK_TRUE};
+  // dynamicRendering: the renderer draws into offscreen and swapchain images without render passes.
+  // fillModeNonSolid (where supported): the LOD wireframe overlay.
+  vk::PhysicalDeviceVulkan13Features features13{.synchronization2 = VK_TRUE, .dynamicRendering = VK_TRUE,
+                                                .maintenance4 = VK_TRUE};
+  const vk::PhysicalDeviceFeatures core_features{.fillModeNonSolid = physical_.getFeatures().fillModeNonSolid};
   const vk::DeviceCreateInfo device_info{.pNext = &features13, .queueCreateInfoCount = 1,
-                                         .pQueueCreateInfos = &queue_info};
+                                         .pQueueCreateInfos = &queue_info, .pEnabledFeatures = &core_features};
   try {
     device_ = vk::raii::Device(physical_, device_info);
   } catch (const vk::SystemError& e) {

@@ -25,8 +25,13 @@ int type_rank(vk::PhysicalDeviceType t) {
   }
 }
 
+// A family with compute, preferably one that also does graphics: the renderer records its draws on
+// the same queue right behind the solver's dispatches.
 std::optional<std::uint32_t> compute_family(const vk::raii::PhysicalDevice& d) {
   const auto families = d.getQueueFamilyProperties();
+  const auto both = vk::QueueFlagBits::eCompute | vk::QueueFlagBits::eGraphics;
+  for (std::uint32_t f = 0; f < families.size(); ++f)
+    if ((families[f].queueFlags & both) == both) return f;
   for (std::uint32_t f = 0; f < families.size(); ++f)
     if (families[f].queueFlags & vk::QueueFlagBits::eCompute) return f;
   return std::nullopt;

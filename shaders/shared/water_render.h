@@ -1,0 +1,66 @@
+// The water renderer's CPU<->GPU layouts, declared once: included by shaders/water.vert,
+// water.frag, water_wire.frag, land.vert, land.frag as GLSL and by src/gpu/render_layout.h as C++
+// (which pins sizes and offsets with static_asserts).
+//
+// Bindings of the one descriptor set every pass of the water renderer uses (set 0):
+//   0: uniform WaterFrame (std140), per frame slot
+//   1: storage buffer, the water state (structure of arrays, water_gpu.h): ux | uy | uz | ...,
+//      each `stride` floats, grid units, displacement from the rest position (j, 0, i)
+//   2: storage buffer, the normals: one vec4 per node
+// The water is drawn with vertex pulling: the index buffer holds node indices n = row * cols + col
+// (the LOD builder's output as is), the vertex shader reads the state at gl_VertexIndex.
+// The land (shore, islands, pool rim) is an ordinary vertex buffer of LandVertex.
+#ifndef POND_WATER_RENDER_H
+#define POND_WATER_RENDER_H
+
+#ifdef __cplusplus
+#include <cstdint>
+namespace pond::shared::water_render {
+// Just enough of GLSL's types for the declarations below (std140: vec4 and mat4 are 16-aligned,
+// which these plain arrays of floats reproduce as long as every member is a vec4 or a mat4).
+using uint = std::uint32_t;
+struct vec4 {
+  float x = 0, y = 0, z = 0, w = 0;
+};
+struct uvec4 {
+  uint x = 0, y = 0, z = 0, w = 0;
+};
+struct mat4 {
+  float m[16] = {};  // column-major, as GLSL
+};
+#define POND_RENDER_CONST inline constexpr
+#else
+#define POND_RENDER_CONST const
+#endif
+
+#define POND_RENDER_BINDING_FRAME 0
+#define POND_RENDER_BINDING_STATE 1
+#define POND_RENDER_BINDING_NORMALS 2
+
+// WaterFrame.grid.w flags.
+POND_RENDER_CONST uint kRenderEncodeSrgb = 1u;  // the target is UNORM: the shader encodes sRGB itself
+
+// Everything a frame's shaders need, one uniform block (std140), written per frame slot.
+struct WaterFrame {
+  mat4 view_proj;  // world -> clip, Vulkan conventions (y down, depth 0..1)
+  vec4 eye;        // xyz: camera position (world); w: grid spacing h
+  vec4 sun;        // xyz: unit direction toward the sun; w: unused
+  vec4 sky;        // rgb: sky colour at the zenith (linear); w: unused
+  vec4 water;      // rgb: deep water colour (linear); w: unused
+  vec4 ground;     // rgb: pool floor, shore and island colour (linear); w: unused
+  vec4 pool;       // x: floor depth below the rest surface; y: land height above it (world); zw: 0
+  vec4 wire;       // rgb: LOD wireframe colour; a: its opacity
+  uvec4 grid;      // x: rows; y: cols; z: stride of the state arrays (floats); w: flags
+};
+
+// One vertex of the land mesh: position (world, w = 1) and normal (w = 0).
+struct LandVertex {
+  vec4 position;
+  vec4 normal;
+};
+
+#ifdef __cplusplus
+}  // namespace pond::shared::water_render
+#endif
+#undef POND_RENDER_CONST
+#endif

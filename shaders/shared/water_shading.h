@@ -1,0 +1,24 @@
+// GLSL helpers shared by the water and land fragment shaders (GLSL only; kept under shared/ so that
+// cmake/Shaders.cmake rebuilds every shader when it changes).
+
+// The sky in direction `d`: lighter towards the horizon, with a glow around the sun.
+vec3 sky_color(vec3 zenith, vec3 d, vec3 sun) {
+  const float up = clamp(d.y, 0.0, 1.0);
+  const vec3 horizon = mix(zenith, vec3(1.0), 0.55);
+  const vec3 base = mix(horizon, zenith, sqrt(up));
+  const float glow = pow(max(dot(d, sun), 0.0), 24.0);
+  return base + glow * vec3(1.0, 0.9, 0.7) * 0.6;
+}
+
+// Linear colour -> the target: tone-clamped, and encoded to sRGB by hand when the target format
+// does not do it (flags & kRenderEncodeSrgb).
+vec4 finish_color(vec3 c, uint flags) {
+  c = c / (vec3(1.0) + max(c - vec3(0.8), vec3(0.0)));  // soft shoulder above 0.8
+  c = clamp(c, 0.0, 1.0);
+  if ((flags & kRenderEncodeSrgb) != 0u) {
+    const vec3 lo = c * 12.92;
+    const vec3 hi = 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055;
+    c = mix(hi, lo, lessThanEqual(c, vec3(0.0031308)));
+  }
+  return vec4(c, 1.0);
+}

@@ -1,0 +1,55 @@
+#version 460
+// Water shading. The paper's term is the diffuse one (N.L); what makes it read as water:
+//  - a Fresnel (Schlick, f0 = 0.02) mix between what is seen through the water and the sky reflected
+//    in it, so it is clear looking down and a mirror at grazing angles;
+//  - the refracted view ray continued to the pool floor (flat, view.floor_depth below the rest
+//    surface): the floor's pattern wobbles with the waves, and the colour tends to the deep water
+//    colour with the path length through the water (depth tint, Beer-Lambert absorption);
+//  - a sharp specular highlight of the sun.
+// The floor is analytic (not a second pass reading a depth buffer): one opaque pass, no sorting.
+#extension GL_GOOGLE_include_directive : require
+
+#include "shared/water_render.h"
+#include "shared/water_shading.h"
+
+layout(std140, set = 0, binding = POND_RENDER_BINDING_FRAME) uniform Frame { WaterFrame f; };
+
+layout(location = 0) in vec3 in_world;
+layout(location = 1) in vec3 in_normal;
+layout(location = 0) out vec4 out_color;
+
+// The pool floor at a world point: sand with soft tiles one grid cell across, so refraction shows.
+vec3 floor_color(vec2 xz) {
+  const vec2 cell = xz / f.eye.w;
+  const vec2 d = abs(fract(cell * 0.5) - 0.5);  // 0 at tile centres, 0.5 at edges (2-cell tiles)
+  const float line = smoothstep(0.40, 0.5, max(d.x, d.y));
+  return f.ground.rgb * (0.92 - 0.22 * line) * (0.45 + 0.55 * max(f.sun.y, 0.0));
+}
+
+void main() {
+  vec3 n = normalize(in_normal);
+  const vec3 v = normalize(f.eye.xyz - in_world);
+  if (!gl_FrontFacing && dot(n, v) < 0.0) n = -n;  // folded wave crests seen from below
+  const vec3 l = f.sun.xyz;
+
+  const float diffuse = max(dot(n, l), 0.0);  // the paper's term
+  const float cos_v = clamp(dot(n, v), 0.0, 1.0);
+  const float fresnel = 0.02 + 0.98 * pow(1.0 - cos_v, 5.0);
+
+  // Seen through the water: the refracted ray to the floor (air -> water, 1 / 1.33).
+  const vec3 t = refract(-v, n, 1.0 / 1.33);
+  const float depth_here = in_world.y + f.pool.x;  // water column under this point
+  const float path = max(depth_here, 0.0) / max(-t.y, 0.08);
+  const vec3 floor_hit = in_world + t * path;
+  const vec3 absorb = (vec3(1.0) - f.water.rgb) * 0.45 / f.eye.w;  // per world unit
+  const vec3 transmit = exp(-absorb * path);
+  const vec3 body = f.water.rgb * (0.35 + 0.65 * diffuse);  // scattered light: diffuse-lit water colour
+  const vec3 seen_through = floor_color(floor_hit.xz) * transmit + body * (vec3(1.0) - transmit);
+
+  const vec3 r = reflect(-v, n);
+  const vec3 reflected = sky_color(f.sky.rgb, r, l);
+  const float spec = pow(max(dot(r, l), 0.0), 400.0) * 6.0 + pow(max(dot(r, l), 0.0), 40.0) * 0.25;
+
+  vec3 color = mix(seen_through, reflected, fresnel) + spec * vec3(1.0, 0.95, 0.85) * fresnel * 4.0;
+  out_color = finish_color(color, f.grid.w);
+}

@@ -1,0 +1,25 @@
+#version 460
+// The water surface, pulled straight from the solver's buffers: the index buffer holds node indices
+// (the LOD builder's output), the state and normal buffers are the ones the compute passes (or the
+// CPU solver) wrote this frame. No vertex attributes, no CPU copy of the vertex data.
+#extension GL_GOOGLE_include_directive : require
+
+#include "shared/water_render.h"
+
+layout(std140, set = 0, binding = POND_RENDER_BINDING_FRAME) uniform Frame { WaterFrame f; };
+layout(std430, set = 0, binding = POND_RENDER_BINDING_STATE) restrict readonly buffer State { float state[]; };
+layout(std430, set = 0, binding = POND_RENDER_BINDING_NORMALS) restrict readonly buffer Normals { vec4 normals[]; };
+
+layout(location = 0) out vec3 out_world;
+layout(location = 1) out vec3 out_normal;
+
+void main() {
+  const uint n = uint(gl_VertexIndex);
+  const uint cols = f.grid.y, stride = f.grid.z;
+  const vec3 rest = vec3(float(n % cols), 0.0, float(n / cols));
+  const vec3 u = vec3(state[n], state[stride + n], state[2u * stride + n]);
+  const vec3 world = (rest + u) * f.eye.w;  // grid units -> world
+  out_world = world;
+  out_normal = normals[n].xyz;
+  gl_Position = f.view_proj * vec4(world, 1.0);
+}

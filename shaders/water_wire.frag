@@ -1,0 +1,18 @@
+#version 460
+// The LOD wireframe overlay: the water's triangles drawn again as lines (polygon mode line, a small
+// depth bias towards the camera), blended over the shaded water.
+#extension GL_GOOGLE_include_directive : require
+
+#include "shared/water_render.h"
+
+layout(std140, set = 0, binding = POND_RENDER_BINDING_FRAME) uniform Frame { WaterFrame f; };
+
+layout(location = 0) in vec3 in_world;
+layout(location = 1) in vec3 in_normal;
+layout(location = 0) out vec4 out_color;
+
+void main() {
+  vec3 c = f.wire.rgb;
+  if ((f.grid.w & kRenderEncodeSrgb) != 0u) c = pow(c, vec3(1.0 / 2.2));
+  out_color = vec4(c, f.wire.a);
+}

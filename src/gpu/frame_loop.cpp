@@ -1,0 +1,359 @@
+#include "gpu/frame_loop.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+#include "core/errors.h"
+#include "gpu/buffer.h"
+#include "gpu/land_mesh.h"
+#include "gpu/render_layout.h"
+#include "gpu/render_target.h"
+#include "gpu/view_projection.h"
+#include "gpu/water_pipeline.h"
+#include "gpu/water_source.h"
+#include "lod/lod_builder.h"
+#include "sim/perturbation.h"
+#include "sim/stability.h"
+
+namespace pond::gpu {
+namespace {
+
+using S = vk::PipelineStageFlagBits2;
+using A = vk::AccessFlagBits2;
+using BU = vk::BufferUsageFlagBits;
+
+// The full mesh, 2 (R-1)(C-1) triangles with one diagonal direction, counter-clockwise from +y.
+std::vector<std::uint32_t> full_mesh_indices(int rows, int cols) {
+  std::vector<std::uint32_t> idx;
+  idx.reserve(static_cast<std::size_t>(rows - 1) * (cols - 1) * 6);
+  for (int i = 0; i + 1 < rows; ++i)
+    for (int j = 0; j + 1 < cols; ++j) {
+      const auto a = static_cast<std::uint32_t>(i * cols + j), b = a + 1, c = a + static_cast<std::uint32_t>(cols), d = c + 1;
+      idx.insert(idx.end(), {a, c, b, b, c, d});
+    }
+  return idx;
+}
+
+vk::ImageMemoryBarrier2 layout_barrier(vk::Image image, vk::ImageAspectFlags aspect, vk::ImageLayout from,
+                                       vk::ImageLayout to, vk::PipelineStageFlags2 src_stage, vk::AccessFlags2 src_access,
+                                       vk::PipelineStageFlags2 dst_stage, vk::AccessFlags2 dst_access) {
+  return {.srcStageMask = src_stage, .srcAccessMask = src_access, .dstStageMask = dst_stage, .dstAccessMask = dst_access,
+          .oldLayout = from, .newLayout = to, .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+          .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .image = image,
+          .subresourceRange = {.aspectMask = aspect, .baseMipLevel = 0, .levelCount = 1, .baseArrayLayer = 0, .layerCount = 1}};
+}
+
+shared::water_render::vec4 v4(const std::array<double, 3>& a, double w = 0) {
+  return {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2]), static_cast<float>(w)};
+}
+
+bool is_srgb(vk::Format f) {
+  return f == vk::Format::eR8G8B8A8Srgb || f == vk::Format::eB8G8R8A8Srgb || f == vk::Format::eA8B8G8R8SrgbPack32;
+}
+
+double ms_since(std::chrono::steady_clock::time_point& t) {
+  const auto now = std::chrono::steady_clock::now();
+  const double ms = std::chrono::duration<double, std::milli>(now - t).count();
+  t = now;
+  return ms;
+}
+
+}  // namespace
+
+// One frame slot: everything a frame in flight owns.
+struct Slot {
+  vk::raii::CommandBuffer cmd = nullptr;
+  vk::raii::Fence done = nullptr;  // signalled when the slot's last draw finished
+  Buffer uniforms, indices;        // host-visible: WaterFrame, the LOD's indices
+  vk::raii::DescriptorSet set = nullptr;
+  Image depth;
+};
+
+struct FrameLoop::Impl {
+  const Context& ctx;
+  sim::Scene scene;
+  sim::WaterModel model;
+  SolverChoice choice;
+  vk::Format color_format;
+  std::unique_ptr<WaterSource> water;
+  lod::LodBuilder lod;
+  WaterPipelines pipes;
+  Buffer land, full_indices;
+  std::uint32_t land_vertices = 0, full_index_count = 0;
+  vk::raii::CommandPool pool = nullptr;
+  vk::raii::DescriptorPool descriptor_pool = nullptr;
+  std::vector<Slot> slots;
+  std::uint32_t next = 0;
+  std::vector<PassDrawable*> drawables;
+
+  Impl(const Context& c, const sim::Scene& scene_in, SolverChoice solver, vk::Format format)
+      : ctx(c), scene(scene_in), model(sim::build_model(scene_in, solver.math)), choice(solver), color_format(format),
+        lod(model.rows, model.cols), pipes(create_water_pipelines(c, format, kDepthFormat)) {
+    water = std::make_unique<WaterSource>(ctx, model, choice, kFramesInFlight);
+    create_static_geometry();
+    pool = vk::raii::CommandPool(ctx.device(), vk::CommandPoolCreateInfo{
+                                                   .flags = vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
+                                                   .queueFamilyIndex = ctx.queue_family()});
+    const vk::DescriptorPoolSize sizes[] = {{.type = vk::DescriptorType::eUniformBuffer, .descriptorCount = kFramesInFlight},
+                                            {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 2 * kFramesInFlight}};
+    descriptor_pool = vk::raii::DescriptorPool(
+        ctx.device(), vk::DescriptorPoolCreateInfo{.flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
+                                                   .maxSets = kFramesInFlight, .poolSizeCount = 2, .pPoolSizes = sizes});
+    vk::raii::CommandBuffers cmds(ctx.device(), vk::CommandBufferAllocateInfo{.commandPool = *pool,
+                                                                              .level = vk::CommandBufferLevel::ePrimary,
+                                                                              .commandBufferCount = kFramesInFlight});
+    for (std::uint32_t k = 0; k < kFramesInFlight; ++k) {
+      Slot s;
+      s.cmd = std::move(cmds[k]);
+      s.done = vk::raii::Fence(ctx.device(), vk::FenceCreateInfo{.flags = vk::FenceCreateFlagBits::eSignaled});
+      s.uniforms = create_buffer(ctx, sizeof(WaterFrame), BU::eUniformBuffer, MemoryUse::upload,
+                                 "water frame uniforms, slot " + std::to_string(k));
+      s.indices = create_buffer(ctx, std::max<std::size_t>(1, lod.max_indices()) * 4, BU::eIndexBuffer,
+                                MemoryUse::upload, "water LOD indices, slot " + std::to_string(k));
+      const vk::DescriptorSetLayout layout = *pipes.set_layout;
+      s.set = std::move(vk::raii::DescriptorSets(ctx.device(), vk::DescriptorSetAllocateInfo{
+                                                                   .descriptorPool = *descriptor_pool,
+                                                                   .descriptorSetCount = 1, .pSetLayouts = &layout})[0]);
+      slots.push_back(std::move(s));
+    }
+  }
+
+  void create_static_geometry() {
+    const std::vector<LandVertex> mesh = build_land_mesh(model, scene.view.floor_depth, scene.view.land_height);
+    land_vertices = static_cast<std::uint32_t>(mesh.size());
+    land = create_buffer(ctx, mesh.size() * sizeof(LandVertex), BU::eVertexBuffer | BU::eTransferDst, MemoryUse::device,
+                         "land vertices");
+    upload(ctx, land, std::as_bytes(std::span(mesh)));
+    const std::vector<std::uint32_t> full = full_mesh_indices(model.rows, model.cols);
+    full_index_count = static_cast<std::uint32_t>(full.size());
+    full_indices = create_buffer(ctx, std::max<std::size_t>(1, full.size()) * 4, BU::eIndexBuffer | BU::eTransferDst,
+                                 MemoryUse::device, "water full-mesh indices");
+    upload(ctx, full_indices, std::as_bytes(std::span(full)));
+  }
+
+  void wait(const Slot& s) const {
+    if (ctx.device().waitForFences(*s.done, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
+      throw RuntimeError("waiting for a frame failed");
+  }
+  void wait_all() const {
+    for (const Slot& s : slots) wait(s);
+  }
+
+  // ---- The frame loop ----
+  FrameStats frame(const FrameTarget& target, const FrameView& view) {
+    Slot& s = slots[next];
+    const std::uint32_t slot = next;
+    next = (next + 1) % kFramesInFlight;
+    wait(s);  // the slot's previous draw is done: its buffers may be rewritten
+    FrameStats st;
+    st.full_triangles = full_index_count / 3;
+    st.land_triangles = land_vertices / 3;
+    auto t = std::chrono::steady_clock::now();
+
+    water->advance(view.steps);                                         // 1. substeps
+    const WaterSource::DrawBuffers bufs = water->prepare(slot);        // 2. normals, positions -> CPU
+    st.simulate_ms = ms_since(t);
+
+    lod::Camera camera = view.camera;                                   // 3. LOD into the slot's indices
+    camera.width = static_cast<int>(target.extent.width);
+    camera.height = static_cast<int>(target.extent.height);
+    const bool full = view.lod_tolerance_px <= 0;
+    const std::size_t index_count =
+        full ? full_index_count
+             : lod.build(water->positions(), camera, view.lod_tolerance_px,
+                         std::span(static_cast<std::uint32_t*>(s.indices.mapped), lod.max_indices()));
+    st.triangles = index_count / 3;
+    st.lod_ms = ms_since(t);
+
+    const std::array<float, 16> view_proj = view_projection(camera, model);  // 4. draw
+    write_frame_uniforms(s, camera, view_proj, bufs.stride, target.format);
+    bind_buffers(s, bufs);
+    ensure_depth(s, target.extent);
+    const FrameInfo info{s.cmd, slot, view_proj.data(),
+                         {static_cast<float>(camera.eye[0]), static_cast<float>(camera.eye[1]), static_cast<float>(camera.eye[2])},
+                         target.extent, static_cast<double>(water->steps_done()) * model.physics.dt};
+    for (PassDrawable* d : drawables) d->prepare(info);
+    record(s, target, info, full ? full_indices : s.indices, static_cast<std::uint32_t>(index_count), view.wireframe);
+    submit(s, target);
+    if (view.wait) wait(s);
+    st.draw_ms = ms_since(t);
+    return st;
+  }
+
+  void write_frame_uniforms(const Slot& s, const lod::Camera& camera, const std::array<float, 16>& view_proj,
+                            std::uint32_t stride, vk::Format format) const {
+    const sim::LightingSpec& l = scene.lighting;
+    const double sl = std::sqrt(l.sun[0] * l.sun[0] + l.sun[1] * l.sun[1] + l.sun[2] * l.sun[2]);
+    WaterFrame f;
+    std::memcpy(f.view_proj.m, view_proj.data(), sizeof f.view_proj.m);
+    f.eye = v4(camera.eye, model.spacing);
+    f.sun = v4({l.sun[0] / sl, l.sun[1] / sl, l.sun[2] / sl});
+    f.sky = v4(l.sky);
+    f.water = v4(l.water);
+    f.ground = v4(l.ground);
+    f.pool = {static_cast<float>(scene.view.floor_depth), static_cast<float>(scene.view.land_height), 0, 0};
+    f.wire = {0.02f, 0.05f, 0.08f, 0.55f};
+    f.grid = {static_cast<std::uint32_t>(model.rows), static_cast<std::uint32_t>(model.cols), stride,
+              is_srgb(format) ? 0u : shared::water_render::kRenderEncodeSrgb};
+    std::memcpy(s.uniforms.mapped, &f, sizeof f);
+  }
+
+  // The slot's descriptor set points at this frame's buffers (the GPU solver's current ping-pong
+  // buffer, or the slot's CPU copies); the slot is idle, so updating it is allowed.
+  void bind_buffers(const Slot& s, const WaterSource::DrawBuffers& b) const {
+    const vk::DescriptorBufferInfo infos[] = {s.uniforms.whole(), b.state->whole(), b.normals->whole()};
+    const vk::WriteDescriptorSet writes[] = {
+        {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_FRAME, .descriptorCount = 1,
+         .descriptorType = vk::DescriptorType::eUniformBuffer, .pBufferInfo = &infos[0]},
+        {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_STATE, .descriptorCount = 1,
+         .descriptorType = vk::DescriptorType::eStorageBuffer, .pBufferInfo = &infos[1]},
+        {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_NORMALS, .descriptorCount = 1,
+         .descriptorType = vk::DescriptorType::eStorageBuffer, .pBufferInfo = &infos[2]}};
+    ctx.device().updateDescriptorSets(writes, nullptr);
+  }
+
+  void ensure_depth(Slot& s, vk::Extent2D extent) const {
+    if (*s.depth.image && s.depth.extent == extent) return;
+    s.depth = create_image(ctx, extent, kDepthFormat, vk::ImageUsageFlagBits::eDepthStencilAttachment,
+                           vk::ImageAspectFlagBits::eDepth, "depth");
+  }
+
+  void record(const Slot& s, const FrameTarget& target, const FrameInfo& info, const Buffer& indices,
+              std::uint32_t index_count, bool wireframe) const {
+    const vk::raii::CommandBuffer& cmd = s.cmd;
+    cmd.reset();
+    cmd.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
+    // Compute (substeps, normals) -> vertex shader reads of state and normals. The color barrier
+    // waits at color output, where the swapchain's acquire semaphore is waited.
+    const vk::MemoryBarrier2 compute_to_vertex{.srcStageMask = S::eComputeShader, .srcAccessMask = A::eShaderWrite,
+                                               .dstStageMask = S::eVertexShader, .dstAccessMask = A::eShaderRead};
+    const vk::ImageMemoryBarrier2 begin_images[] = {
+        layout_barrier(target.image, vk::ImageAspectFlagBits::eColor, target.old_layout,
+                       vk::ImageLayout::eColorAttachmentOptimal, S::eColorAttachmentOutput, {},
+                       S::eColorAttachmentOutput, A::eColorAttachmentWrite | A::eColorAttachmentRead),
+        layout_barrier(*s.depth.image, vk::ImageAspectFlagBits::eDepth, vk::ImageLayout::eUndefined,
+                       vk::ImageLayout::eDepthAttachmentOptimal, S::eLateFragmentTests, A::eDepthStencilAttachmentWrite,
+                       S::eEarlyFragmentTests | S::eLateFragmentTests,
+                       A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite)};
+    cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &compute_to_vertex,
+                                            .imageMemoryBarrierCount = 2, .pImageMemoryBarriers = begin_images});
+
+    const vk::RenderingAttachmentInfo color{
+        .imageView = target.view, .imageLayout = vk::ImageLayout::eColorAttachmentOptimal,
+        .loadOp = vk::AttachmentLoadOp::eClear, .storeOp = vk::AttachmentStoreOp::eStore,
+        .clearValue = vk::ClearValue{.color = {.float32 = std::array<float, 4>{0.6f, 0.75f, 0.92f, 1.0f}}}};
+    const vk::RenderingAttachmentInfo depth{
+        .imageView = *s.depth.view, .imageLayout = vk::ImageLayout::eDepthAttachmentOptimal,
+        .loadOp = vk::AttachmentLoadOp::eClear, .storeOp = vk::AttachmentStoreOp::eDontCare,
+        .clearValue = vk::ClearValue{.depthStencil = {.depth = 1.0f, .stencil = 0}}};
+    cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, target.extent}, .layerCount = 1,
+                                         .colorAttachmentCount = 1, .pColorAttachments = &color,
+                                         .pDepthAttachment = &depth});
+    cmd.setViewport(0, vk::Viewport{0, 0, static_cast<float>(target.extent.width),
+                                    static_cast<float>(target.extent.height), 0, 1});
+    cmd.setScissor(0, vk::Rect2D{{0, 0}, target.extent});
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *s.set, nullptr);
+    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.land);
+    cmd.bindVertexBuffers(0, *land.buffer, vk::DeviceSize{0});
+    cmd.draw(land_vertices, 1, 0, 0);
+    cmd.bindIndexBuffer(*indices.buffer, 0, vk::IndexType::eUint32);
+    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.water);
+    cmd.drawIndexed(index_count, 1, 0, 0, 0);
+    if (wireframe && *pipes.wire) {
+      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.wire);
+      cmd.drawIndexed(index_count, 1, 0, 0, 0);
+    }
+    for (PassDrawable* d : drawables) d->draw(info);
+    cmd.endRendering();
+
+    // The image to its final layout; and the next frame's substeps must not overwrite the state
+    // or normals while this draw reads them (write-after-read: an execution dependency).
+    const bool present = target.final_layout == vk::ImageLayout::ePresentSrcKHR;
+    const vk::ImageMemoryBarrier2 end_image = layout_barrier(
+        target.image, vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eColorAttachmentOptimal, target.final_layout,
+        S::eColorAttachmentOutput, A::eColorAttachmentWrite, present ? S::eNone : S::eCopy,
+        present ? A::eNone : A::eTransferRead);
+    const vk::MemoryBarrier2 vertex_to_compute{.srcStageMask = S::eVertexShader, .dstStageMask = S::eComputeShader | S::eCopy};
+    cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &vertex_to_compute,
+                                            .imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &end_image});
+    cmd.end();
+  }
+
+  void submit(const Slot& s, const FrameTarget& target) const {
+    ctx.device().resetFences(*s.done);
+    const vk::CommandBufferSubmitInfo cmd_info{.commandBuffer = *s.cmd};
+    const vk::SemaphoreSubmitInfo wait_info{.semaphore = target.wait_semaphore, .stageMask = S::eColorAttachmentOutput};
+    const vk::SemaphoreSubmitInfo signal_info{.semaphore = target.signal_semaphore, .stageMask = S::eAllCommands};
+    ctx.queue().submit2(vk::SubmitInfo2{.waitSemaphoreInfoCount = target.wait_semaphore ? 1u : 0u,
+                                        .pWaitSemaphoreInfos = &wait_info,
+                                        .commandBufferInfoCount = 1, .pCommandBufferInfos = &cmd_info,
+                                        .signalSemaphoreInfoCount = target.signal_semaphore ? 1u : 0u,
+                                        .pSignalSemaphoreInfos = &signal_info},
+                        *s.done);
+  }
+
+  // Replaces the solver (new choice or new model), carrying the state and step count over.
+  void rebuild_water(const sim::WaterState& state, std::int64_t steps) {
+    wait_all();
+    water.reset();
+    water = std::make_unique<WaterSource>(ctx, model, choice, kFramesInFlight);
+    water->set_state(state, steps);
+  }
+};
+
+FrameLoop::FrameLoop(const Context& ctx, const sim::Scene& scene, SolverChoice solver, vk::Format color_format)
+    : impl_(std::make_unique<Impl>(ctx, scene, solver, color_format)) {}
+
+FrameLoop::~FrameLoop() {
+  if (impl_) impl_->wait_all();
+}
+
+void FrameLoop::advance(std::int64_t steps) { impl_->water->advance(steps); }
+FrameStats FrameLoop::frame(const FrameTarget& target, const FrameView& view) { return impl_->frame(target, view); }
+void FrameLoop::wait_idle() const { impl_->wait_all(); }
+
+void FrameLoop::set_solver(SolverChoice solver) {
+  const sim::WaterState state = impl_->water->state();
+  const std::int64_t steps = impl_->water->steps_done();
+  if (solver.math != impl_->choice.math) impl_->model = sim::build_model(impl_->scene, solver.math);
+  impl_->choice = solver;
+  impl_->rebuild_water(state, steps);
+}
+
+void FrameLoop::splash(const sim::Perturbation& splash) {
+  sim::WaterState state = impl_->water->state();
+  sim::apply_perturbation(sim::tabulate(splash, impl_->model), state);
+  impl_->wait_all();
+  impl_->water->set_state(state, impl_->water->steps_done());
+}
+
+void FrameLoop::set_physics(const sim::Physics& physics) {
+  const double bound = sim::stability_bound(physics.mass, physics.stiffness, physics.damping);
+  if (!(physics.mass > 0 && physics.stiffness >= 0 && physics.damping >= 0 && physics.dt > 0 && physics.substeps >= 1))
+    throw InputError("physics: mass and dt must be positive, stiffness and damping not negative, substeps >= 1");
+  if (!(physics.dt / physics.substeps < bound))
+    throw InputError("physics: dt / substeps must stay below the stability bound " + std::to_string(bound));
+  const sim::WaterState state = impl_->water->state();
+  const std::int64_t steps = impl_->water->steps_done();
+  impl_->scene.physics = physics;
+  impl_->model = sim::build_model(impl_->scene, impl_->choice.math);
+  impl_->rebuild_water(state, steps);
+}
+
+void FrameLoop::reset() { impl_->rebuild_water(sim::rest_state(impl_->model), 0); }
+
+void FrameLoop::add_drawable(PassDrawable& drawable) { impl_->drawables.push_back(&drawable); }
+
+const sim::Scene& FrameLoop::scene() const { return impl_->scene; }
+const sim::WaterModel& FrameLoop::model() const { return impl_->model; }
+const SolverChoice& FrameLoop::solver() const { return impl_->choice; }
+std::int64_t FrameLoop::steps_done() const { return impl_->water->steps_done(); }
+sim::WaterState FrameLoop::state() const { return impl_->water->state(); }
+vk::Format FrameLoop::color_format() const { return impl_->color_format; }
+
+lod::Camera FrameLoop::default_camera(int width, int height) const {
+  return scene_camera(impl_->scene, impl_->model, width, height);
+}
+
+}  // namespace pond::gpu

@@ -1,0 +1,56 @@
+#pragma once
+// The solver behind the frame loop, CPU or GPU, and what a frame needs from it after advancing:
+//  - the buffers the water vertex shader reads (state: ux | uy | uz arrays of `stride` floats;
+//    normals: one vec4 per node);
+//  - the node positions in world units on the CPU, for the LOD builder.
+// GPU: the solver's own buffers (no copy for drawing); the normals pass runs on the GPU and the three
+//      displacement arrays are copied into a host-readable buffer (about 0.8 MB at 257^2).
+// CPU: the state and the CPU normals are written into the frame slot's host-visible buffers
+//      (per slot, so a frame in flight keeps reading its own).
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "gpu/buffer.h"
+#include "gpu/frame_loop.h"
+#include "gpu/gpu_solver.h"
+#include "lod/node_positions.h"
+#include "sim/cpu_solver.h"
+
+namespace pond::gpu {
+
+class WaterSource {
+ public:
+  WaterSource(const Context& ctx, const sim::WaterModel& model, const SolverChoice& choice, std::uint32_t slots);
+
+  void advance(std::int64_t steps);
+
+  struct DrawBuffers {
+    const Buffer* state;
+    const Buffer* normals;
+    std::uint32_t stride;  // floats between the state's component arrays
+  };
+  // Normals of the current state, positions made visible to the CPU, and the buffers frame slot
+  // `slot` draws from.
+  DrawBuffers prepare(std::uint32_t slot);
+  // World positions of the state prepare() last saw.
+  lod::NodePositions positions() const;
+
+  sim::WaterState state() const;
+  std::int64_t steps_done() const;
+  void set_state(const sim::WaterState& state, std::int64_t steps_done);
+
+ private:
+  void to_world(const float* ux, const float* uy, const float* uz);
+
+  const Context& ctx_;
+  const sim::WaterModel& model_;
+  std::optional<GpuSolver> gpu_;
+  std::optional<sim::CpuSolver> cpu_;
+  Buffer readback_;                          // GPU: the displacements, host-readable
+  std::vector<Buffer> slot_state_, slot_normals_;  // CPU: per slot
+  std::vector<float> x_, y_, z_;             // world positions for the LOD
+};
+
+}  // namespace pond::gpu
