@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "gpu/context.h"
+#include "gpu/headless.h"
 #include "gpu/gpu_solver.h"
 #include "sim/cpu_solver.h"
 #include "sim/model.h"
@@ -33,7 +34,7 @@ sim::WaterModel square_pond(int n, int substeps, sim::MathMode math) {
 const gpu::Context& context() {
   static const std::unique_ptr<gpu::Context> ctx = [] {
     const char* device = std::getenv("POND_BENCH_DEVICE");
-    return std::make_unique<gpu::Context>(gpu::ContextOptions{.device = device ? device : "", .validation = false});
+    return std::make_unique<gpu::Context>(gpu::headless_options(device ? device : "", false));
   }();
   return *ctx;
 }

@@ -5,12 +5,13 @@
 #include "app/gpu_bridge.h"
 #include "core/errors.h"
 #include "gpu/context.h"
+#include "gpu/headless.h"
 #include "gpu/gpu_solver.h"
 
 namespace pond::app {
 
 sim::WaterState simulate_on_gpu(const sim::WaterModel& model, std::int64_t steps, const GpuRunOptions& options) {
-  const gpu::Context ctx(gpu::ContextOptions{.device = options.device, .validation = options.validation});
+  const gpu::Context ctx(gpu::headless_options(options.device, options.validation));
   gpu::GpuSolver solver(ctx, model);
   solver.advance(steps);
   sim::WaterState state = solver.read_state();

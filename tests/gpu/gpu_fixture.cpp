@@ -21,7 +21,7 @@ const bool kEnvironmentSet = [] {
 
 void GpuTest::SetUp() {
   ASSERT_TRUE(kEnvironmentSet);
-  ctx_ = std::make_unique<gpu::Context>(gpu::ContextOptions{.device = "", .validation = true});
+  ctx_ = std::make_unique<gpu::Context>(gpu::headless_options("", true));
 }
 
 void GpuTest::TearDown() {

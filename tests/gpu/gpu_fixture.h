@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "gpu/context.h"
+#include "gpu/headless.h"
 
 namespace pond::test {
 

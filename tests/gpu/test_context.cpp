@@ -5,6 +5,7 @@
 
 #include "core/errors.h"
 #include "gpu/buffer.h"
+#include "gpu/headless.h"
 #include "gpu_fixture.h"
 
 namespace pond::test {
@@ -21,14 +22,14 @@ TEST_F(ContextTest, DeviceBySubstringIsCaseInsensitive) {
   const std::string name = ctx().device_name();
   std::string upper = name.substr(0, 4);
   for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  const gpu::Context other(gpu::ContextOptions{.device = upper, .validation = true});
+  const gpu::Context other(gpu::headless_options(upper, true));
   EXPECT_EQ(other.device_name(), name);
   EXPECT_TRUE(other.validation_log().messages().empty());
 }
 
 TEST_F(ContextTest, UnknownDeviceIsAnInputErrorListingTheDevices) {
   try {
-    gpu::Context other(gpu::ContextOptions{.device = "no-such-gpu-xyz", .validation = false});
+    gpu::Context other(gpu::headless_options("no-such-gpu-xyz", false));
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find(ctx().device_name()), std::string::npos) << e.what();
@@ -38,7 +39,7 @@ TEST_F(ContextTest, UnknownDeviceIsAnInputErrorListingTheDevices) {
 // The messenger is live: a deliberate misuse is reported into the log (and this test then clears
 // the expectation by checking the log of a separate context).
 TEST(ContextValidation, MessengerReportsMisuse) {
-  gpu::Context bad(gpu::ContextOptions{.device = "", .validation = true});
+  gpu::Context bad(gpu::headless_options("", true));
   // A zero-sized buffer is invalid usage (VUID-VkBufferCreateInfo-size-00912).
   try {
     const vk::raii::Buffer b(bad.device(), vk::BufferCreateInfo{.size = 0, .usage = vk::BufferUsageFlagBits::eStorageBuffer});
