@@ -14,7 +14,7 @@ constexpr float kBoundGrow = 1 + 1e-5f;
 
 // One scale's pass over the vertices of one class: ids step by `dx` along a row and `dy` between
 // rows; the hypotenuse ends are id -+ `e` (inside the grid: the loops stop before vertices whose
-// hypotenuse would leave it, which are tile corners); the children are at offsets child[k] (all
+// hypotenuse would leave it); the children are at offsets child[k] (all
 // four inside the grid unless the vertex is within `reach` of the border, then checked one by one).
 struct Pass {
   const float *x, *y, *z;
@@ -60,6 +60,10 @@ void nested_bounds(const GridHierarchy& grid, const NodePositions& p, float larg
   // Float rounding of a deviation: each of its ~6 operations errs by at most half an ulp of the
   // largest magnitude involved (<= 2 * largest), so 16 ulps of `largest` is a safe slack.
   const float slack = 16 * largest * std::numeric_limits<float>::epsilon();
+  // Vertices whose hypotenuse leaves the grid (their triangles are clipped, and always scanned)
+  // keep "nothing proved": an infinite bound and a zero budget, so their parents prove nothing
+  // from them either.
+  std::fill(bounds, bounds + p.nodes(), NestedBound{std::numeric_limits<float>::infinity(), 0.0f});
   const Pass pass{p.x, p.y, p.z, budget, bounds, rows, cols,
                   slack};
   const std::ptrdiff_t row = cols;
@@ -93,12 +97,6 @@ void nested_bounds(const GridHierarchy& grid, const NodePositions& p, float larg
     for (int y = h, b = 0; y + h < rows; y += step, ++b)
       for (int x = h, a = 0; x + h < cols; x += step, ++a)
         pass.vertex(x, y, ((a + b) & 1) == 0 ? h * row + h : h * row - h, diag_children, 4, h);
-  }
-  // Always-split vertices are never tested. Their bounds were computed from meaningless
-  // hypotenuses (tile corners) but are read only by their parents, which are always split too.
-  // Loops skip the vertices whose hypotenuse leaves the grid: those are tile corners.
-  for (std::uint32_t id : grid.always_split_ids()) {
-    bounds[id] = {std::numeric_limits<float>::infinity(), budget[id]};
   }
 }
 

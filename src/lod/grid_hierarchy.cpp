@@ -1,19 +1,12 @@
 #include "lod/grid_hierarchy.h"
 
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 #include <string>
 
 namespace pond::lod {
 namespace {
-
-// n split into powers of two, largest first: 49 -> {32, 16, 1}.
-std::vector<int> power_of_two_parts(int n) {
-  std::vector<int> parts;
-  for (int bit = 30; bit >= 0; --bit)
-    if (n & (1 << bit)) parts.push_back(1 << bit);
-  return parts;
-}
 
 int lowest_bit(int v) { return v & -v; }
 
@@ -45,37 +38,22 @@ Diamond GridHierarchy::diamond(Point v) {
 }
 
 GridHierarchy::GridHierarchy(int rows, int cols) : rows_(rows), cols_(cols) {
-  if (rows < 2 || cols < 2 || static_cast<long long>(rows) * cols > (1ll << 31))
-    throw std::invalid_argument("LOD grid must be at least 2 x 2 and below 2^31 nodes, got " +
+  if (rows < 2 || cols < 2 || rows > (1 << 16) || cols > (1 << 16))
+    throw std::invalid_argument("LOD grid must be between 2 x 2 and 65536 x 65536 nodes, got " +
                                 std::to_string(rows) + " x " + std::to_string(cols));
-  const std::size_t n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
-  always_.assign(n, 0);
-  corner_.assign(n, 0);
-  int y0 = 0;
-  for (int hy : power_of_two_parts(rows - 1)) {
-    int x0 = 0;
-    for (int wx : power_of_two_parts(cols - 1)) {
-      const int side = std::min(hy, wx);
-      for (int y = y0; y < y0 + hy; y += side)
-        for (int x = x0; x < x0 + wx; x += side) add_tile(x, y, side);
-      x0 += wx;
-    }
-    y0 += hy;
-  }
-  // A tile corner inside a bigger neighbour's edge: the neighbour's triangles must split down to
-  // it, i.e. the corner's parents (and theirs) are always active.
-  for (int y = 0; y < rows; ++y)
-    for (int x = 0; x < cols; ++x)
-      if (corner_[id({x, y})] && (x | y) != 0)
-        for (Point p : diamond({x, y}).parents)
-          if (inside(p)) force(p);
-  for (std::uint32_t k = 0; k < always_.size(); ++k)
-    if (always_[k]) always_ids_.push_back(k);
+  const int wide = std::bit_ceil(static_cast<unsigned>(cols - 1));
+  const int high = std::bit_ceil(static_cast<unsigned>(rows - 1));
+  domain_cols_ = wide + 1, domain_rows_ = high + 1;
+  const int side = std::min(wide, high);
+  for (int y = 0; y < high; y += side)
+    for (int x = 0; x < wide; x += side) add_tile(x, y, side);
+  std::sort(always_ids_.begin(), always_ids_.end());
+  always_ids_.erase(std::unique(always_ids_.begin(), always_ids_.end()), always_ids_.end());
 }
 
 void GridHierarchy::add_tile(int x0, int y0, int side) {
   const Point a{x0, y0}, b{x0 + side, y0}, c{x0, y0 + side}, d{x0 + side, y0 + side};
-  for (Point p : {a, b, c, d}) corner_[id(p)] = always_[id(p)] = 1;
+  for (Point p : {a, b, c, d}) always_ids_.push_back(domain_id(p));
   const bool main = (((x0 / side) + (y0 / side)) & 1) == 0;
   if (main) {  // diagonal a-d
     roots_.push_back(oriented(b, a, d));
@@ -86,11 +64,50 @@ void GridHierarchy::add_tile(int x0, int y0, int side) {
   }
 }
 
-void GridHierarchy::force(Point v) {
-  if (always_[id(v)]) return;
-  always_[id(v)] = 1;
-  for (Point p : diamond(v).parents)
-    if (inside(p)) force(p);
+namespace {
+
+// Sutherland-Hodgman against one border: keeps the side where sign * (coordinate - limit) <= 0.
+// Crossings are exact integers: edges run at 0, 45 or 90 degrees.
+int clip_against(const Point* in, int n, Point* out, bool vertical_line, int limit) {
+  int m = 0;
+  const auto excess = [&](Point p) { return (vertical_line ? p.x : p.y) - limit; };
+  for (int k = 0; k < n; ++k) {
+    const Point a = in[k], b = in[(k + 1) % n];
+    const int ea = excess(a), eb = excess(b);
+    if (ea <= 0) out[m++] = a;
+    if ((ea < 0 && eb > 0) || (ea > 0 && eb < 0)) {
+      if (vertical_line)
+        out[m++] = {limit, a.y + (b.y - a.y) / (b.x - a.x) * (limit - a.x)};
+      else
+        out[m++] = {a.x + (b.x - a.x) / (b.y - a.y) * (limit - a.y), limit};
+    }
+  }
+  return m;
+}
+
+}  // namespace
+
+GridPolygon clip_to_grid(const Tri& t, int rows, int cols) {
+  Point first[8] = {t.apex, t.left, t.right};
+  Point second[8];
+  // The padded domain only reaches past the right and the far border.
+  const int n1 = clip_against(first, 3, second, true, cols - 1);
+  const int n2 = clip_against(second, n1, first, false, rows - 1);
+  GridPolygon poly;
+  for (int k = 0; k < n2; ++k) {
+    const Point p = first[k];
+    if (poly.count > 0 && poly.corner[poly.count - 1] == p) continue;
+    poly.corner[poly.count++] = p;
+  }
+  while (poly.count > 1 && poly.corner[poly.count - 1] == poly.corner[0]) --poly.count;
+  // A polygon of no area (t touches the grid along a border) is no polygon.
+  long long twice_area = 0;
+  for (int k = 0; k < poly.count; ++k) {
+    const Point a = poly.corner[k], b = poly.corner[(k + 1) % poly.count];
+    twice_area += static_cast<long long>(a.x) * b.y - static_cast<long long>(b.x) * a.y;
+  }
+  if (twice_area == 0) poly.count = 0;
+  return poly;
 }
 
 }  // namespace pond::lod

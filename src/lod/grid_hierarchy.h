@@ -2,14 +2,14 @@
 // The longest-edge-bisection (4-8) hierarchy over an R x C grid of any size, in index space:
 // x = column, y = row. Everything here depends only on the grid size, so it is built once.
 //
-// Any size: the rectangle [0, C-1] x [0, R-1] is tiled by dyadic squares (side 2^k, corners at
-// multiples of 2^k): C-1 and R-1 are split into powers of two, largest first, so every block
-// starts at a multiple of its own size. Each square is two root triangles of ONE global 4-8
-// hierarchy (a square's diagonal always runs through its parent square's centre), so a node's
-// place in the hierarchy (the hypotenuse it splits, its two parents, its four children) follows
-// from its coordinates alone, across tile seams too. Tile corners are always vertices; where a
-// small tile's corner lies in the middle of a bigger tile's edge, the bigger tile must be split
-// down to it, which the static closure below records.
+// Any size: the hierarchy lives on a padded domain, [0, 2^a] x [0, 2^b] with 2^a >= C-1 and
+// 2^b >= R-1, tiled by squares of side 2^min(a, b). Each square is two root triangles of ONE
+// global 4-8 hierarchy (a square's diagonal always runs through its parent square's centre), so a
+// node's place in the hierarchy (the hypotenuse it splits, its two parents, its four children)
+// follows from its coordinates alone. Nodes of the padded domain outside the grid are virtual:
+// a triangle reaching past the grid is clipped to it (clip_to_grid), which gives a convex polygon
+// whose corners are all grid nodes (edges run at 0, 45 and 90 degrees and the grid's borders lie
+// on integer lines), and the polygon is drawn as a fan. A triangle wholly outside is dropped.
 //
 // A mesh of the hierarchy is a set of "active" (split) vertices. It is conforming (no cracks,
 // no T-junctions) exactly when the set is closed under "a vertex's parents are active"
@@ -47,16 +47,31 @@ class GridHierarchy {
 
   int rows() const { return rows_; }
   int cols() const { return cols_; }
+  // Grid nodes: index row * cols + col.
   std::uint32_t id(Point p) const {
     return static_cast<std::uint32_t>(p.y) * static_cast<std::uint32_t>(cols_) +
            static_cast<std::uint32_t>(p.x);
   }
   bool inside(Point p) const { return p.x >= 0 && p.y >= 0 && p.x < cols_ && p.y < rows_; }
+  // Nodes of the padded domain (grid nodes and virtual ones).
+  std::size_t domain_nodes() const {
+    return static_cast<std::size_t>(domain_rows_) * static_cast<std::size_t>(domain_cols_);
+  }
+  std::uint32_t domain_id(Point p) const {
+    return static_cast<std::uint32_t>(p.y) * static_cast<std::uint32_t>(domain_cols_) +
+           static_cast<std::uint32_t>(p.x);
+  }
+  bool in_domain(Point p) const {
+    return p.x >= 0 && p.y >= 0 && p.x < domain_cols_ && p.y < domain_rows_;
+  }
+  // All three vertices are grid nodes (then so is every node of the triangle).
+  bool within_grid(const Tri& t) const {
+    return inside(t.apex) && inside(t.left) && inside(t.right);
+  }
 
   // Root triangles, tile by tile, two per tile.
   const std::vector<Tri>& roots() const { return roots_; }
-  // Per node: 1 when the node is a vertex of every mesh (tile corners and what they force).
-  const std::vector<std::uint8_t>& always_split() const { return always_; }
+  // Domain ids of the nodes that are vertices of every mesh (the tile corners).
   const std::vector<std::uint32_t>& always_split_ids() const { return always_ids_; }
 
   // Only for nodes that are not tile corners.
@@ -64,13 +79,20 @@ class GridHierarchy {
 
  private:
   void add_tile(int x0, int y0, int side);
-  void force(Point v);
   int rows_, cols_;
+  int domain_rows_ = 0, domain_cols_ = 0;
   std::vector<Tri> roots_;
-  std::vector<std::uint8_t> always_;
-  std::vector<std::uint8_t> corner_;
   std::vector<std::uint32_t> always_ids_;
 };
+
+// The part of t inside the grid [0, cols-1] x [0, rows-1], as a convex polygon in t's (clockwise)
+// order without repeated corners; fewer than 3 corners when t only touches the grid or misses it.
+// Holds up to 7 corners.
+struct GridPolygon {
+  Point corner[8];
+  int count = 0;
+};
+GridPolygon clip_to_grid(const Tri& t, int rows, int cols);
 
 // The hypotenuse midpoint of t; false when the hypotenuse is a cell diagonal (no node there).
 inline bool midpoint(const Tri& t, Point& m) {

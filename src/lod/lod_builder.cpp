@@ -29,7 +29,7 @@ LodBuilder::LodBuilder(int rows, int cols) : grid_(rows, cols) {
   const std::size_t n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
   x_.resize(n), y_.resize(n), z_.resize(n);
   budget_.resize(n), bounds_.resize(n);
-  state_.resize(n);
+  state_.resize(grid_.domain_nodes());
 }
 
 std::size_t LodBuilder::max_indices() const {
@@ -60,17 +60,24 @@ bool LodBuilder::leaf_is_fine(const Tri& t, std::uint32_t mid) {
                        budget_.data(), largest_, t, &stats_.scanned_nodes);
 }
 
+bool LodBuilder::clipped_leaf_is_fine(const GridPolygon& polygon) {
+  ++stats_.tested;
+  ++stats_.scanned;
+  return fan_within_budget(polygon, soa_positions(x_.data(), y_.data(), z_.data(), rows(), cols()),
+                           budget_.data(), &stats_.scanned_nodes);
+}
+
 // Activates v and, first, its parents (the dependency closure that keeps the mesh conforming),
 // then queues the triangles of v's diamond so that their new children get tested.
 void LodBuilder::activate(Point v) {
-  std::uint8_t& s = state_[grid_.id(v)];
+  std::uint8_t& s = state_[grid_.domain_id(v)];
   if (s & kActive) return;
   s |= kActive;
   const Diamond d = GridHierarchy::diamond(v);
   for (Point p : d.parents)
-    if (grid_.inside(p)) activate(p);
+    if (grid_.in_domain(p)) activate(p);
   for (Point p : d.parents)
-    if (grid_.inside(p)) work_.push_back(oriented(p, d.end0, d.end1));
+    if (grid_.in_domain(p)) work_.push_back(oriented(p, d.end0, d.end1));
 }
 
 std::size_t LodBuilder::build(const NodePositions& p, const Camera& camera, double tolerance_px,
@@ -114,10 +121,14 @@ std::size_t LodBuilder::build(const NodePositions& p, const Camera& camera, doub
     work_.pop_back();
     Point m;
     if (!midpoint(t, m)) continue;  // a half cell: no node inside
-    const std::uint32_t mid = grid_.id(m);
-    std::uint8_t& s = state_[mid];
+    std::uint8_t& s = state_[grid_.domain_id(m)];
     if (!(s & kActive)) {
-      if (leaf_is_fine(t, mid)) continue;
+      if (grid_.within_grid(t)) {
+        if (leaf_is_fine(t, grid_.id(m))) continue;
+      } else {
+        const GridPolygon polygon = clip_to_grid(t, rows(), cols());
+        if (polygon.count < 3 || clipped_leaf_is_fine(polygon)) continue;  // outside, or fine
+      }
       activate(m);  // queues t again (expanded below, so that copy is skipped) and its neighbour
     }
     const std::uint8_t bit = kExpanded[side_of(t, m)];
@@ -138,7 +149,7 @@ std::size_t LodBuilder::build(const NodePositions& p, const Camera& camera, doub
 // form a Sierpinski curve, so consecutive triangles share vertices.
 void LodBuilder::emit(const Tri& t, bool enter_left, std::uint32_t*& out) const {
   Point m;
-  if (midpoint(t, m) && (state_[grid_.id(m)] & kActive)) {
+  if (midpoint(t, m) && (state_[grid_.domain_id(m)] & kActive)) {
     if (enter_left) {
       emit(child_left(t, m), false, out);
       emit(child_right(t, m), false, out);
@@ -148,9 +159,18 @@ void LodBuilder::emit(const Tri& t, bool enter_left, std::uint32_t*& out) const 
     }
     return;
   }
-  *out++ = grid_.id(t.apex);
-  *out++ = grid_.id(t.left);
-  *out++ = grid_.id(t.right);
+  if (grid_.within_grid(t)) {
+    *out++ = grid_.id(t.apex);
+    *out++ = grid_.id(t.left);
+    *out++ = grid_.id(t.right);
+    return;
+  }
+  const GridPolygon polygon = clip_to_grid(t, rows(), cols());  // empty when t lies outside
+  for (int k = 1; k + 1 < polygon.count; ++k) {
+    *out++ = grid_.id(polygon.corner[0]);
+    *out++ = grid_.id(polygon.corner[k]);
+    *out++ = grid_.id(polygon.corner[k + 1]);
+  }
 }
 
 }  // namespace pond::lod

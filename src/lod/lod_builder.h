@@ -53,6 +53,7 @@ class LodBuilder {
 
  private:
   bool leaf_is_fine(const Tri& t, std::uint32_t mid);
+  bool clipped_leaf_is_fine(const GridPolygon& polygon);
   void activate(Point v);
   void emit(const Tri& t, bool enter_left, std::uint32_t*& out) const;
 
@@ -61,7 +62,7 @@ class LodBuilder {
   float largest_ = 0;  // this frame's largest |coordinate|
   std::vector<float> budget_;
   std::vector<NestedBound> bounds_;
-  std::vector<std::uint8_t> state_;  // per node: kActive | kExpanded* bits
+  std::vector<std::uint8_t> state_;  // per domain node: kActive | kExpanded* bits
   std::vector<Tri> work_;
   BuildStats stats_;
 };

@@ -145,4 +145,34 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
   return ok;
 }
 
+bool fan_within_budget(const GridPolygon& poly, const NodePositions& p, const float* budget,
+                       long long* visited) {
+  const std::size_t cols = static_cast<std::size_t>(p.cols);
+  const auto node = [&](Point q) { return static_cast<std::size_t>(q.y) * cols + static_cast<std::size_t>(q.x); };
+  for (int k = 1; k + 1 < poly.count; ++k) {
+    const Point a = poly.corner[0], b = poly.corner[k], c = poly.corner[k + 1];
+    const long long det = static_cast<long long>(b.x - a.x) * (c.y - a.y) -
+                          static_cast<long long>(b.y - a.y) * (c.x - a.x);
+    if (det == 0) continue;
+    const std::size_t na = node(a), nb = node(b), nc = node(c);
+    for (int y = std::min({a.y, b.y, c.y}); y <= std::max({a.y, b.y, c.y}); ++y)
+      for (int x = std::min({a.x, b.x, c.x}); x <= std::max({a.x, b.x, c.x}); ++x) {
+        // Barycentric weights times det, exact in integers; inside when all have det's sign.
+        const long long wb = static_cast<long long>(x - a.x) * (c.y - a.y) - static_cast<long long>(y - a.y) * (c.x - a.x);
+        const long long wc = static_cast<long long>(b.x - a.x) * (y - a.y) - static_cast<long long>(b.y - a.y) * (x - a.x);
+        const long long wa = det - wb - wc;
+        if (det > 0 ? (wa < 0 || wb < 0 || wc < 0) : (wa > 0 || wb > 0 || wc > 0)) continue;
+        if (visited) ++*visited;
+        const double fa = double(wa) / double(det), fb = double(wb) / double(det), fc = double(wc) / double(det);
+        const std::size_t n = node({x, y});
+        const double ex = p.x[n] - (fa * p.x[na] + fb * p.x[nb] + fc * p.x[nc]);
+        const double ey = p.y[n] - (fa * p.y[na] + fb * p.y[nb] + fc * p.y[nc]);
+        const double ez = p.z[n] - (fa * p.z[na] + fb * p.z[nb] + fc * p.z[nc]);
+        const double bud = budget[n];
+        if (ex * ex + ey * ey + ez * ez > bud * bud) return false;
+      }
+  }
+  return true;
+}
+
 }  // namespace pond::lod

@@ -12,4 +12,8 @@ namespace pond::lod {
 bool within_budget(const GridHierarchy& grid, const NodePositions& positions, const float* budget,
                    float largest, const Tri& t, long long* visited);
 
+// The same test for the fan (corner[0], corner[k], corner[k+1]) of a clipped triangle, in double.
+bool fan_within_budget(const GridPolygon& polygon, const NodePositions& positions,
+                       const float* budget, long long* visited);
+
 }  // namespace pond::lod
