@@ -9,6 +9,8 @@
 //     in it is within budget, or, failing that, when an exact scan of its nodes shows it; else its
 //     midpoint is activated together with its ancestors in the dependency DAG (so the mesh stays
 //     conforming), and every triangle created that way is tested in turn, forced ones included;
+//     Triangles reaching past the grid (sizes other than 2^k + 1) are tested and drawn as their
+//     clipped fans, exactly (triangle_scan.h), and dropped when wholly outside;
 //  4. the leaves are written depth first, which walks a Sierpinski curve (vertex-cache friendly).
 // Every leaf passed the test, and every left-out node lies in leaves only (no T-junctions), so
 // every left-out node in the frustum is within tau pixels: a strict bound, not a heuristic.
