@@ -16,7 +16,7 @@ void main() {
   const vec3 n = normalize(in_normal);
   const float diffuse = max(dot(n, f.sun.xyz), 0.0);
   const float top = smoothstep(0.7, 0.95, n.y);
-  const vec3 grass = vec3(0.20, 0.36, 0.12);
+  const vec3 grass = vec3(0.12, 0.2, 0.07);
   vec3 albedo = mix(f.ground.rgb, grass, top);
   const float wet = clamp(-in_world.y / max(f.pool.y, 1e-3) + 0.3, 0.0, 1.0);  // darker below the rim top
   albedo *= 1.0 - 0.45 * wet * (1.0 - top);

@@ -18,12 +18,11 @@ layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;
 layout(location = 0) out vec4 out_color;
 
-// The pool floor at a world point: sand with soft tiles one grid cell across, so refraction shows.
+// The pool floor at a world point: sand with soft ripples a few cells across, so refraction shows.
 vec3 floor_color(vec2 xz) {
-  const vec2 cell = xz / f.eye.w;
-  const vec2 d = abs(fract(cell * 0.5) - 0.5);  // 0 at tile centres, 0.5 at edges (2-cell tiles)
-  const float line = smoothstep(0.40, 0.5, max(d.x, d.y));
-  return f.ground.rgb * (0.92 - 0.22 * line) * (0.45 + 0.55 * max(f.sun.y, 0.0));
+  const vec2 p = xz / f.eye.w;
+  const float ripple = sin(p.x * 1.3 + 1.7 * sin(p.y * 0.45)) * sin(p.y * 1.1 + 1.3 * sin(p.x * 0.37));
+  return f.ground.rgb * (0.85 + 0.15 * ripple) * (0.45 + 0.55 * max(f.sun.y, 0.0));
 }
 
 void main() {
@@ -48,7 +47,7 @@ void main() {
 
   const vec3 r = reflect(-v, n);
   const vec3 reflected = sky_color(f.sky.rgb, r, l);
-  const float spec = pow(max(dot(r, l), 0.0), 400.0) * 6.0 + pow(max(dot(r, l), 0.0), 40.0) * 0.25;
+  const float spec = pow(max(dot(r, l), 0.0), 2000.0) * 3.0;
 
   vec3 color = mix(seen_through, reflected, fresnel) + spec * vec3(1.0, 0.95, 0.85) * fresnel * 4.0;
   out_color = finish_color(color, f.grid.w);

@@ -219,6 +219,13 @@ struct FrameLoop::Impl {
                            vk::ImageAspectFlagBits::eDepth, "depth");
   }
 
+  // The sky at the horizon (water_shading.h's sky_color at d.y = 0): the background.
+  std::array<float, 4> horizon_color() const {
+    const auto& z = scene.lighting.sky;
+    auto c = [&](int k) { return static_cast<float>(z[k] + (1.0 - z[k]) * 0.55); };
+    return {c(0), c(1), c(2), 1.0f};
+  }
+
   void record(const Slot& s, const FrameTarget& target, const FrameInfo& info, const Buffer& indices,
               std::uint32_t index_count, bool wireframe) const {
     const vk::raii::CommandBuffer& cmd = s.cmd;
@@ -242,7 +249,7 @@ struct FrameLoop::Impl {
     const vk::RenderingAttachmentInfo color{
         .imageView = target.view, .imageLayout = vk::ImageLayout::eColorAttachmentOptimal,
         .loadOp = vk::AttachmentLoadOp::eClear, .storeOp = vk::AttachmentStoreOp::eStore,
-        .clearValue = vk::ClearValue{.color = {.float32 = std::array<float, 4>{0.6f, 0.75f, 0.92f, 1.0f}}}};
+        .clearValue = vk::ClearValue{.color = {.float32 = horizon_color()}}};
     const vk::RenderingAttachmentInfo depth{
         .imageView = *s.depth.view, .imageLayout = vk::ImageLayout::eDepthAttachmentOptimal,
         .loadOp = vk::AttachmentLoadOp::eClear, .storeOp = vk::AttachmentStoreOp::eDontCare,

@@ -48,8 +48,8 @@ lod::Camera scene_camera(const sim::Scene& scene, const sim::WaterModel& model, 
   }
   const double h = model.spacing;
   const double w = (model.cols - 1) * h, d = (model.rows - 1) * h, size = std::max(w, d);
-  c.eye = {w * 0.38, size * 0.62, d + size * 0.62};
-  c.target = {w * 0.5, -size * 0.06, d * 0.45};
+  c.eye = {w * 0.42, size * 0.3, d + size * 0.3};
+  c.target = {w * 0.5, -size * 0.06, d * 0.4};
   c.fovy_degrees = 45.0;
   return c;
 }

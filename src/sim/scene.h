@@ -60,14 +60,14 @@ struct ViewSpec {
   std::int64_t steps_per_frame = 1;  // simulation steps per rendered frame
   double lod_tolerance_px = 1.0;     // LOD screen-space error bound; 0 = the full mesh
   double floor_depth = 3.0;          // the pool floor lies this far below the rest surface
-  double land_height = 0.6;          // shore, islands and pool rim rise this far above it
+  double land_height = 1.0;          // shore, islands and pool rim rise this far above it
 };
 
 // "lighting": the sun and the colours the water shader mixes (linear RGB in [0, 1]).
 struct LightingSpec {
-  std::array<double, 3> sun{-0.45, 0.6, -0.65};   // direction toward the sun (normalized on use)
+  std::array<double, 3> sun{-0.3, 0.38, -0.87};   // direction toward the sun (normalized on use)
   std::array<double, 3> water{0.015, 0.11, 0.13};  // deep water (what light through it tends to)
-  std::array<double, 3> sky{0.45, 0.65, 0.9};      // sky at the zenith (the horizon is lighter)
+  std::array<double, 3> sky{0.28, 0.52, 0.9};      // sky at the zenith (the horizon is lighter)
   std::array<double, 3> ground{0.55, 0.47, 0.33};  // pool floor, shore and islands
 };
 

@@ -1,0 +1,169 @@
+// Golden images of the water renderer on lavapipe (labels image, gpu), validation on (any message
+// fails). Each case renders 256x160 through the same FrameLoop `pond render` and the demo use.
+//
+// Tolerance: an image matches its golden when at most kShare of its pixels differ by more than
+// kLevels (of 255) in some channel; a failure writes <name>.actual.png and <name>.diff.png (red =
+// differing) into the build tree's tests/render/out. Regenerate after a deliberate change:
+//   POND_REGENERATE_GOLDENS=1 ctest --test-dir <build> -L image
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "gpu/frame_loop.h"
+#include "gpu/png.h"
+#include "gpu/render_target.h"
+#include "gpu_fixture.h"
+#include "image_compare.h"
+#include "sim/scene.h"
+
+namespace pond::test {
+namespace {
+
+constexpr int kWidth = 256, kHeight = 160;
+constexpr int kLevels = 4;        // channel difference still counted as equal
+constexpr double kShare = 0.005;  // share of pixels allowed to differ by more
+// LOD at 1 px against the full mesh (same state, same camera): at most this share of pixels differs
+// by more than kLodLevels. A 1 px error bound moves edges and shading by about a pixel.
+constexpr int kLodLevels = 16;
+constexpr double kLodShare = 0.02;
+
+struct RenderCase {
+  std::int64_t steps = 0;
+  double tolerance = 1.0;
+  bool wireframe = false;
+  gpu::SolverChoice solver{};
+  std::string json{};  // empty: the embedded default scene
+};
+
+// The scenes: the embedded default (island + splash), and small variations of it.
+const char* kIslands = R"({"grid": {"rows": 50, "cols": 50},
+  "constraints": [{"kind": "fixed", "rows": [12, 20], "cols": [28, 38]},
+                  {"kind": "fixed", "rows": [30, 33], "cols": [10, 14]}],
+  "perturbations": [{"step": 0, "row": 26, "col": 24, "radius": 2.0, "amplitude": 1.2}]})";
+const char* kPool = R"({"grid": {"rows": 50, "cols": 50}, "border": "vertical",
+  "perturbations": [{"step": 0, "row": 24.5, "col": 24.5, "radius": 2.5, "amplitude": 1.5}]})";
+const char* kAllVertical = R"({"grid": {"rows": 50, "cols": 50}, "border": "vertical",
+  "constraints": [{"kind": "vertical", "rows": [0, 49], "cols": [0, 49]}],
+  "perturbations": [{"step": 0, "row": 18, "col": 16, "radius": 2.0, "amplitude": 1.5},
+                    {"step": 0, "row": 30, "col": 34, "radius": 2.0, "amplitude": 1.5}]})";
+const char* kRippled129 = R"({"grid": {"rows": 129, "cols": 129},
+  "constraints": [{"kind": "fixed", "rows": [70, 82], "cols": [80, 95]}],
+  "perturbations": [{"step": 0, "row": 40, "col": 40, "radius": 3.0, "amplitude": 1.5},
+                    {"step": 10, "row": 90, "col": 50, "radius": 2.0, "amplitude": 1.0},
+                    {"step": 20, "row": 50, "col": 100, "radius": 2.5, "amplitude": -1.2}]})";
+
+class RenderTest : public GpuTest {
+ protected:
+  Rgba render(const RenderCase& c) {
+    const sim::Scene scene = sim::parse_scene(c.json.empty() ? std::string(sim::default_scene_json()) : c.json, "test");
+    gpu::FrameLoop loop(ctx(), scene, c.solver, gpu::RenderTarget::kFormat);
+    const gpu::RenderTarget target(ctx(), kWidth, kHeight);
+    loop.advance(c.steps);
+    gpu::FrameView view;
+    view.camera = loop.default_camera(kWidth, kHeight);
+    view.lod_tolerance_px = c.tolerance;
+    view.wireframe = c.wireframe;
+    view.steps = 0;
+    view.wait = true;
+    last_ = loop.frame(target.frame_target(), view);
+    return Rgba{kWidth, kHeight, target.read_rgba()};
+  }
+
+  void expect_golden(const std::string& name, const Rgba& img) {
+    const std::filesystem::path golden = std::filesystem::path(POND_GOLDEN_DIR) / (name + ".png");
+    const std::filesystem::path out = POND_TEST_OUT_DIR;
+    std::filesystem::create_directories(out);
+    gpu::write_png(out / (name + ".actual.png"), img.width, img.height, img.pixels);
+    if (std::getenv("POND_REGENERATE_GOLDENS")) {
+      gpu::write_png(golden, img.width, img.height, img.pixels);
+      std::printf("regenerated %s\n", golden.c_str());
+      return;
+    }
+    const Rgba expected = read_png(golden);
+    ASSERT_GT(expected.width, 0) << "missing golden " << golden
+                                 << "; regenerate: POND_REGENERATE_GOLDENS=1 ctest --test-dir <build> -L image";
+    const ImageDiff d = compare(expected, img, kLevels);
+    if (d.share > kShare) {
+      if (d.diff.width) gpu::write_png(out / (name + ".diff.png"), d.diff.width, d.diff.height, d.diff.pixels);
+      ADD_FAILURE() << name << ": " << 100 * d.share << "% of pixels differ by more than " << kLevels
+                    << " levels (allowed " << 100 * kShare << "%), max difference " << d.max_difference
+                    << "; see " << (out / (name + ".diff.png")) << " and .actual.png";
+    }
+  }
+
+  gpu::FrameStats last_;
+};
+
+TEST_F(RenderTest, PondAtRest) { expect_golden("rest", render({.steps = 0})); }
+
+TEST_F(RenderTest, RingsAfterASplash) { expect_golden("rings", render({.steps = 24})); }
+
+TEST_F(RenderTest, Islands) { expect_golden("islands", render({.steps = 30, .json = kIslands})); }
+
+TEST_F(RenderTest, VerticalOnlyPool) { expect_golden("pool", render({.steps = 30, .json = kPool})); }
+
+TEST_F(RenderTest, AllVerticalWavesPassThrough) {
+  expect_golden("all_vertical", render({.steps = 26, .json = kAllVertical}));
+}
+
+TEST_F(RenderTest, LodOnAndOffAndTheirDifferenceIsBounded) {
+  const Rgba lod = render({.steps = 60, .tolerance = 1.0, .json = kRippled129});
+  const std::size_t lod_triangles = last_.triangles;
+  const Rgba full = render({.steps = 60, .tolerance = 0.0, .json = kRippled129});
+  EXPECT_EQ(last_.triangles, last_.full_triangles);
+  EXPECT_LT(lod_triangles, last_.full_triangles);
+  expect_golden("lod_1px", lod);
+  expect_golden("lod_full", full);
+  const ImageDiff d = compare(full, lod, kLodLevels);
+  std::printf("LOD 1 px vs full mesh: %zu of %zu triangles, %.3f%% of pixels differ by more than %d levels\n",
+              lod_triangles, last_.full_triangles, 100 * d.share, kLodLevels);
+  EXPECT_LE(d.share, kLodShare);
+}
+
+TEST_F(RenderTest, LodWireframeOverlay) {
+  expect_golden("lod_wireframe", render({.steps = 60, .tolerance = 1.0, .wireframe = true, .json = kRippled129}));
+}
+
+// The CPU solver gives the GPU's bits (the parity suite), so the frame loop must draw the same
+// picture from either, and switching solvers mid-run carries the state over.
+TEST_F(RenderTest, CpuSolverDrawsTheSamePictureAndSwitchingCarriesTheState) {
+  const Rgba gpu_img = render({.steps = 24});
+  const Rgba cpu_img = render({.steps = 24, .solver = {.gpu = false}});
+  EXPECT_EQ(compare(gpu_img, cpu_img, 0).share, 0.0);
+
+  const sim::Scene scene = sim::load_scene("");
+  gpu::FrameLoop loop(ctx(), scene, {.gpu = false}, gpu::RenderTarget::kFormat);
+  const gpu::RenderTarget target(ctx(), kWidth, kHeight);
+  gpu::FrameView view;
+  view.camera = loop.default_camera(kWidth, kHeight);
+  view.steps = 4;
+  view.wait = true;
+  loop.advance(8);
+  loop.frame(target.frame_target(), view);   // 12 steps on the CPU
+  loop.set_solver({.gpu = true});
+  loop.frame(target.frame_target(), view);   // 16 on the GPU
+  loop.set_solver({.gpu = false});
+  loop.advance(4);
+  loop.frame(target.frame_target(), view);   // 24 on the CPU
+  EXPECT_EQ(loop.steps_done(), 24);
+  EXPECT_EQ(compare(gpu_img, Rgba{kWidth, kHeight, target.read_rgba()}, 0).share, 0.0);
+}
+
+// A splash added at run time is the scene's perturbation applied now: same picture.
+TEST_F(RenderTest, RunTimeSplashEqualsTheScenePerturbation) {
+  const char* no_splash = R"({"constraints": [{"kind": "fixed", "rows": [30, 35], "cols": [30, 36]}]})";
+  const sim::Scene scene = sim::parse_scene(no_splash, "test");
+  gpu::FrameLoop loop(ctx(), scene, {}, gpu::RenderTarget::kFormat);
+  const gpu::RenderTarget target(ctx(), kWidth, kHeight);
+  loop.splash(sim::load_scene("").perturbations.at(0));
+  loop.advance(24);
+  gpu::FrameView view;
+  view.camera = loop.default_camera(kWidth, kHeight);
+  view.steps = 0;
+  view.wait = true;
+  loop.frame(target.frame_target(), view);
+  EXPECT_EQ(compare(render({.steps = 24}), Rgba{kWidth, kHeight, target.read_rgba()}, 0).share, 0.0);
+}
+
+}  // namespace
+}  // namespace pond::test
