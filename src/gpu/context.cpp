@@ -27,9 +27,21 @@ bool has_extension(const std::vector<vk::ExtensionProperties>& list, const char*
                      [&](const vk::ExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
 
+// With a window the one queue must also present: keep the chosen family when it can, else take
+// another compute + graphics family that can.
+std::uint32_t present_family(const vk::raii::PhysicalDevice& physical, vk::SurfaceKHR surface,
+                             std::uint32_t chosen, const std::string& device_name) {
+  if (physical.getSurfaceSupportKHR(chosen, surface)) return chosen;
+  const auto families = physical.getQueueFamilyProperties();
+  const auto both = vk::QueueFlagBits::eCompute | vk::QueueFlagBits::eGraphics;
+  for (std::uint32_t f = 0; f < families.size(); ++f)
+    if ((families[f].queueFlags & both) == both && physical.getSurfaceSupportKHR(f, surface)) return f;
+  throw RuntimeError("the Vulkan device " + device_name + " cannot present to the window (choose another with --device)");
+}
+
 }  // namespace
 
-Context::Context(const ContextOptions& options)
+Context::Context(const ContextOptions& options, const WindowSurface& window)
     : log_(std::make_unique<ValidationLog>()), loader_(load_vulkan()) {
   std::vector<const char*> layers, extensions;
   const auto available = loader_.enumerateInstanceExtensionProperties();
@@ -49,6 +61,10 @@ Context::Context(const ContextOptions& options)
     if (!debug_utils_) throw RuntimeError("validation requested but VK_EXT_debug_utils is not available");
   }
   if (debug_utils_) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  for (const std::string& e : window.instance_extensions) {
+    if (!has_extension(available, e.c_str())) throw RuntimeError("the Vulkan instance lacks " + e + ", needed by the window");
+    extensions.push_back(e.c_str());
+  }
 
   const vk::ApplicationInfo app{.pApplicationName = "pond", .applicationVersion = 1,
                                 .pEngineName = "pond", .engineVersion = 1,
@@ -71,11 +87,17 @@ Context::Context(const ContextOptions& options)
     throw RuntimeError(std::string("cannot create a Vulkan 1.3 instance: ") + e.what());
   }
   if (options.validation) messenger_.emplace(instance_, messenger_info);
+  if (window.make_surface) surface_ = vk::raii::SurfaceKHR(instance_, window.make_surface(*instance_));
 
   DeviceChoice choice = choose_device(instance_, options.device);
   physical_ = std::move(choice.physical);
   family_ = choice.compute_family;
   device_name_ = std::move(choice.name);
+  std::vector<const char*> device_extensions;
+  if (*surface_) {
+    family_ = present_family(physical_, *surface_, family_, device_name_);
+    device_extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  }
 
   const float priority = 1.0f;
   const vk::DeviceQueueCreateInfo queue_info{.queueFamilyIndex = family_, .queueCount = 1,
@@ -88,7 +110,9 @@ Context::Context(const ContextOptions& options)
                                                 .maintenance4 = VK_TRUE};
   const vk::PhysicalDeviceFeatures core_features{.fillModeNonSolid = physical_.getFeatures().fillModeNonSolid};
   const vk::DeviceCreateInfo device_info{.pNext = &features13, .queueCreateInfoCount = 1,
-                                         .pQueueCreateInfos = &queue_info, .pEnabledFeatures = &core_features};
+                                         .pQueueCreateInfos = &queue_info,
+                                         .enabledExtensionCount = static_cast<std::uint32_t>(device_extensions.size()),
+                                         .ppEnabledExtensionNames = device_extensions.data(), .pEnabledFeatures = &core_features};
   try {
     device_ = vk::raii::Device(physical_, device_info);
   } catch (const vk::SystemError& e) {

@@ -1,7 +1,8 @@
 #pragma once
 // The Vulkan context of pond: instance (with the validation layer, synchronization validation and
 // a debug-utils messenger when asked), the chosen device, one compute queue and a command pool.
-// Headless: no surface or swapchain extension is required; a window adds those later.
+// Headless by default; with a WindowSurface (the windowed demo) it also owns the
+// window's surface, enables VK_KHR_swapchain and picks a queue family that can present to it.
 //
 // Members are vk::raii objects declared in dependency order, so they are destroyed in reverse
 // (pool, device, messenger, instance) and nothing is destroyed by hand.
@@ -10,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "gpu/validation_log.h"
 #include "gpu/vulkan.h"
@@ -21,10 +23,18 @@ struct ContextOptions {
   bool validation = false;  // VK_LAYER_KHRONOS_validation + synchronization validation + messenger
 };
 
+// A window to present to (the demo): the instance extensions its surface needs
+// (glfwGetRequiredInstanceExtensions) and a function making the surface once the instance exists.
+// The surface is owned by the context.
+struct WindowSurface {
+  std::vector<std::string> instance_extensions;
+  std::function<VkSurfaceKHR(VkInstance)> make_surface;
+};
+
 class Context {
  public:
   // Throws RuntimeError when Vulkan, the validation layer (if asked) or a device is missing.
-  explicit Context(const ContextOptions& options);
+  explicit Context(const ContextOptions& options, const WindowSurface& window = {});
   ~Context();
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
@@ -33,6 +43,9 @@ class Context {
   const vk::raii::PhysicalDevice& physical() const { return physical_; }
   const vk::raii::Queue& queue() const { return queue_; }
   std::uint32_t queue_family() const { return family_; }
+  const vk::raii::Instance& instance() const { return instance_; }
+  // The window's surface (null without a WindowSurface); the queue can present to it.
+  const vk::raii::SurfaceKHR& surface() const { return surface_; }
   const std::string& device_name() const { return device_name_; }
   // Validation messages so far (empty without validation).
   const ValidationLog& validation_log() const { return *log_; }
@@ -54,6 +67,7 @@ class Context {
   vk::raii::Context loader_;
   vk::raii::Instance instance_ = nullptr;
   std::optional<vk::raii::DebugUtilsMessengerEXT> messenger_;
+  vk::raii::SurfaceKHR surface_ = nullptr;
   vk::raii::PhysicalDevice physical_ = nullptr;
   std::uint32_t family_ = 0;
   std::string device_name_;

@@ -1,0 +1,423 @@
+#include "app/demo/demo_app.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <random>
+
+#include "app/demo/controls.h"
+#include "app/demo/demo_settings.h"
+#include "app/demo/imgui_panel.h"
+#include "app/demo/imgui_renderer.h"
+#include "app/demo/orbit_camera.h"
+#include "app/demo/picking.h"
+#include "app/demo/scene_modes.h"
+#include "app/demo/screenshot.h"
+#include "app/demo/script.h"
+#include "app/demo/swapchain.h"
+#include "app/demo/window.h"
+#include "core/errors.h"
+#include "core/output_file.h"
+#include "gpu/context.h"
+#include "gpu/frame_loop.h"
+#include "sim/backends.h"
+#include "sim/scene.h"
+
+namespace pond::app::demo {
+namespace {
+
+static_assert(Swapchain::kAcquireRing == gpu::FrameLoop::kFramesInFlight + 1,
+              "the acquire-semaphore ring relies on the frame loop's slot fences (swapchain.h)");
+
+constexpr double kTauSteps[] = {0, 0.25, 0.5, 1, 2, 4, 8, 16, 32};
+
+// ImGui's context and its GLFW backend (installed after the window's callbacks, which it chains).
+class ImGuiSession {
+ public:
+  explicit ImGuiSession(GLFWwindow* window) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // nothing written to the working directory
+    io.LogFilename = nullptr;
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForVulkan(window, true);
+  }
+  ~ImGuiSession() {
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+  ImGuiSession(const ImGuiSession&) = delete;
+  ImGuiSession& operator=(const ImGuiSession&) = delete;
+};
+
+// Last member of the app: on any exit (also by exception) the GPU is idle before anything it may
+// still use is destroyed.
+struct IdleBeforeTeardown {
+  const gpu::Context& ctx;
+  ~IdleBeforeTeardown() {
+    try {
+      ctx.device().waitIdle();
+    } catch (...) {  // a lost device: nothing more to wait for
+    }
+  }
+};
+
+std::string solver_label(const gpu::SolverChoice& s) {
+  return s.gpu ? "GPU solver" : std::string("CPU solver (") + sim::backend_name(s.backend) + ")";
+}
+
+class DemoApp final : public ControlTarget {
+ public:
+  DemoApp(const DemoOptions& options, sim::Scene scene, Script script)
+      : options_(options),
+        base_scene_(std::move(scene)),
+        script_(std::move(script)),
+        window_(options.width, options.height, "pond"),
+        ctx_(gpu::ContextOptions{.device = options.device, .validation = options.validation}, window_surface(window_)),
+        imgui_session_(window_.handle()),
+        swapchain_(ctx_, window_.framebuffer_extent(), options.vsync),
+        imgui_(ctx_, swapchain_.format()),
+        shots_(ctx_),
+        idle_{ctx_} {
+    settings_.physics = base_scene_.physics;
+    settings_.modes = modes_of(base_scene_);
+    settings_.steps_per_frame = base_scene_.view.steps_per_frame;
+    settings_.lod_tolerance_px = base_scene_.view.lod_tolerance_px;
+    settings_.vsync = options.vsync;
+    stats_.device = ctx_.device_name();
+    if (!swapchain_.can_copy_images() && (!options.screenshot.empty() || !script_.screenshots.empty()))
+      throw RuntimeError("this window's swapchain images cannot be read back, so no screenshots can be taken");
+    build_loop(gpu::SolverChoice{});
+    const vk::Extent2D e = swapchain_.extent();
+    camera_.set_home(loop_->default_camera(static_cast<int>(e.width), static_cast<int>(e.height)));
+  }
+
+  int run();
+
+  // ControlTarget
+  void on_action(Action action) override;
+  void on_orbit(double dx, double dy) override { camera_.orbit(dx, dy); }
+  void on_pan(double dx, double dy) override { camera_.pan(dx, dy, static_cast<int>(swapchain_.extent().height)); }
+  void on_zoom(double steps) override { camera_.zoom(steps); }
+  void on_splash(double x, double y, SplashKind kind) override;
+
+ private:
+  static gpu::WindowSurface window_surface(const Window& window) {
+    return gpu::WindowSurface{.instance_extensions = Window::required_instance_extensions(),
+                              .make_surface = [&window](VkInstance instance) { return window.create_surface(instance); }};
+  }
+  void build_loop(gpu::SolverChoice solver);
+  void apply_requests(const PanelRequests& req);
+  void make_rain();
+  void draw_ui();
+  bool draw_frame(const std::string* screenshot_path);  // false: swapchain out of date, retry
+  lod::Camera current_camera() const {
+    const vk::Extent2D e = swapchain_.extent();
+    return camera_.camera(static_cast<int>(e.width), static_cast<int>(e.height));
+  }
+  void take_screenshot_next(std::string path) { pending_shot_ = std::move(path); }
+
+  DemoOptions options_;
+  sim::Scene base_scene_;
+  Script script_;
+  // Dependency order: destroyed bottom-up (the loop before the drawable it draws, everything
+  // Vulkan before the context, the context's surface before the window, the window before GLFW).
+  GlfwSession glfw_;
+  Window window_;
+  gpu::Context ctx_;
+  ImGuiSession imgui_session_;
+  Swapchain swapchain_;
+  ImGuiRenderer imgui_;
+  ScreenshotWriter shots_;
+  std::unique_ptr<gpu::FrameLoop> loop_;
+  IdleBeforeTeardown idle_;
+
+  DemoSettings settings_;
+  DemoStats stats_;
+  OrbitCamera camera_;
+  InputDispatch input_;
+  std::optional<std::string> pending_shot_;
+  int shot_counter_ = 0;
+  bool quit_ = false;
+  double rain_carry_ = 0;
+  std::mt19937 rng_{12345};  // deterministic rain: scripted runs repeat
+};
+
+void DemoApp::build_loop(gpu::SolverChoice solver) {
+  if (loop_) loop_->wait_idle();
+  loop_.reset();  // one loop at a time: its buffers and pipelines are the big allocations
+  sim::Scene scene = apply_modes(base_scene_, settings_.modes);
+  scene.physics = settings_.physics;
+  loop_ = std::make_unique<gpu::FrameLoop>(ctx_, scene, solver, swapchain_.format());
+  loop_->add_drawable(imgui_);
+  settings_.gpu_solver = solver.gpu;
+  stats_.solver = solver_label(solver);
+}
+
+void DemoApp::on_action(Action action) {
+  switch (action) {
+    case Action::quit: quit_ = true; break;
+    case Action::help: settings_.show_help = !settings_.show_help; break;
+    case Action::panel: settings_.show_panel = !settings_.show_panel; break;
+    case Action::pause: settings_.paused = !settings_.paused; break;
+    case Action::step: settings_.paused = true, settings_.step_once = true; break;
+    case Action::reset_water: apply_requests({.reset_water = true}); break;
+    case Action::reset_camera: camera_.reset(); break;
+    case Action::border:
+      settings_.modes.border = next_border(settings_.modes.border);
+      apply_requests({.rebuild_scene = true});
+      break;
+    case Action::all_vertical:
+      settings_.modes.all_vertical = !settings_.modes.all_vertical;
+      apply_requests({.rebuild_scene = true});
+      break;
+    case Action::islands:
+      settings_.modes.islands = !settings_.modes.islands;
+      apply_requests({.rebuild_scene = true});
+      break;
+    case Action::wireframe: settings_.wireframe = !settings_.wireframe; break;
+    case Action::tau_up:
+    case Action::tau_down: {
+      // Next step of the table above or below the current value.
+      const double t = settings_.lod_tolerance_px;
+      double next = t;
+      if (action == Action::tau_up) {
+        for (double s : kTauSteps)
+          if (s > t + 1e-9) { next = s; break; }
+      } else {
+        for (double s : kTauSteps)
+          if (s < t - 1e-9) next = s;
+      }
+      settings_.lod_tolerance_px = next;
+      break;
+    }
+    case Action::steps_up: settings_.steps_per_frame = std::min<std::int64_t>(64, settings_.steps_per_frame + 1); break;
+    case Action::steps_down: settings_.steps_per_frame = std::max<std::int64_t>(0, settings_.steps_per_frame - 1); break;
+    case Action::solver:
+      settings_.gpu_solver = !settings_.gpu_solver;
+      apply_requests({.switch_solver = true});
+      break;
+    case Action::rain: settings_.rain.on = !settings_.rain.on; break;
+    case Action::vsync: settings_.vsync = !settings_.vsync; break;
+    case Action::screenshot: {
+      char name[32];
+      std::snprintf(name, sizeof name, "pond-%04d.png", shot_counter_++);
+      take_screenshot_next(name);
+      break;
+    }
+  }
+}
+
+void DemoApp::on_splash(double x, double y, SplashKind kind) {
+  const sim::WaterModel& model = loop_->model();
+  const sim::WaterState state = loop_->state();  // rare (a click): the copy is fine
+  const std::optional<SurfaceHit> hit = intersect_surface(pixel_ray(current_camera(), x, y), model, state);
+  if (!hit) {
+    settings_.message = "the click missed the water";
+    return;
+  }
+  const double h = model.spacing;
+  sim::Perturbation p{.row = hit->row, .col = hit->col, .radius = settings_.splash.radius * h};
+  switch (kind) {
+    case SplashKind::velocity:
+      p.amplitude = settings_.splash.velocity * h;
+      p.target = sim::PerturbTarget::velocity;
+      break;
+    case SplashKind::position:
+      p.amplitude = settings_.splash.position * h;
+      p.target = sim::PerturbTarget::position;
+      break;
+    case SplashKind::explosion:
+      p.amplitude = settings_.splash.explosion * h;
+      p.radius = settings_.splash.explosion_radius * h;
+      p.target = sim::PerturbTarget::velocity;
+      break;
+  }
+  loop_->splash(p);
+  char text[96];
+  std::snprintf(text, sizeof text, "splash at row %.1f col %.1f", hit->row, hit->col);
+  settings_.message = text;
+}
+
+void DemoApp::apply_requests(const PanelRequests& req) {
+  if (req.reset_camera) camera_.reset();
+  if (req.rebuild_scene) {
+    // The constraints change the model and the land meshes: a new loop from rest (the frame
+    // loop has no way to take a state over yet), on the same solver.
+    build_loop(loop_->solver());
+    char text[128];
+    std::snprintf(text, sizeof text, "border %s, all vertical %s, islands %s (water reset)",
+                  border_name(settings_.modes.border), settings_.modes.all_vertical ? "on" : "off",
+                  settings_.modes.islands ? "on" : "off");
+    settings_.message = text;
+  }
+  if (req.switch_solver) {
+    gpu::SolverChoice s = loop_->solver();
+    s.gpu = settings_.gpu_solver;
+    if (!s.gpu) s.backend = sim::best_backend();
+    loop_->set_solver(s);
+    stats_.solver = solver_label(s);
+    settings_.message = "switched to the " + stats_.solver + " (state carried over)";
+  }
+  if (req.apply_physics) {
+    try {
+      loop_->set_physics(settings_.physics);
+      settings_.message.clear();
+    } catch (const InputError& e) {
+      settings_.message = std::string("refused: ") + e.what();
+      settings_.physics = loop_->model().physics;
+    }
+  }
+  if (req.reset_water) {
+    loop_->reset();
+    settings_.message = "water reset";
+  }
+}
+
+void DemoApp::make_rain() {
+  if (!settings_.rain.on) return;
+  const sim::WaterModel& model = loop_->model();
+  std::uniform_real_distribution<double> row(1, model.rows - 2), col(1, model.cols - 2), scale(0.5, 1.5);
+  rain_carry_ += settings_.rain.drops_per_frame;
+  for (; rain_carry_ >= 1; rain_carry_ -= 1)
+    loop_->splash(sim::Perturbation{.row = row(rng_), .col = col(rng_),
+                                    .radius = settings_.rain.radius * model.spacing,
+                                    .amplitude = settings_.rain.amplitude * scale(rng_) * model.spacing});
+}
+
+void DemoApp::draw_ui() {
+  ImGui_ImplGlfw_NewFrame();
+  // Scripted runs and resizes: ImGui's display size follows the swapchain, not the window query.
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(static_cast<float>(swapchain_.extent().width), static_cast<float>(swapchain_.extent().height));
+  io.DisplayFramebufferScale = ImVec2(1, 1);
+  ImGui::NewFrame();
+  PanelRequests req;
+  if (settings_.show_panel) req = draw_panel(settings_, stats_, loop_->scene());
+  if (settings_.show_help) draw_help_overlay(settings_.show_help);
+  ImGui::Render();
+  apply_requests(req);
+}
+
+bool DemoApp::draw_frame(const std::string* screenshot_path) {
+  const std::optional<AcquiredImage> image = swapchain_.acquire();
+  if (!image) return false;
+  const vk::Extent2D extent = swapchain_.extent();
+  const bool shot = screenshot_path != nullptr;
+  const gpu::FrameTarget target{.image = image->image, .view = image->view, .format = swapchain_.format(),
+                                .extent = extent, .old_layout = vk::ImageLayout::eUndefined,
+                                .final_layout = shot ? vk::ImageLayout::eTransferSrcOptimal : vk::ImageLayout::ePresentSrcKHR,
+                                .wait_semaphore = image->acquired,
+                                .signal_semaphore = shot ? shots_.drawn() : image->rendered};
+  std::int64_t steps = settings_.paused ? 0 : settings_.steps_per_frame;
+  if (settings_.step_once) steps = std::max<std::int64_t>(steps, 1), settings_.step_once = false;
+  const gpu::FrameView view{.camera = current_camera(), .lod_tolerance_px = settings_.lod_tolerance_px,
+                            .wireframe = settings_.wireframe, .steps = steps};
+  stats_.last = loop_->frame(target, view);
+  stats_.steps_done = loop_->steps_done();
+  if (shot) {
+    shots_.save(image->image, swapchain_.format(), extent, image->rendered, *screenshot_path);
+    settings_.message = "saved " + *screenshot_path;
+  }
+  if (!swapchain_.present(*image)) swapchain_.recreate(window_.framebuffer_extent(), settings_.vsync);
+  return true;
+}
+
+int DemoApp::run() {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  Clock::time_point last = start;
+  std::size_t next_event = 0;
+  std::int64_t frame = 0;
+  double total_ms = 0;
+  gpu::FrameStats sum{};
+  while (!quit_ && (options_.frames == 0 || frame < options_.frames)) {
+    window_.poll();
+    if (window_.should_close()) break;
+    // This frame's script events join the window's, in the same dispatch.
+    std::vector<InputEvent>& events = window_.events();
+    for (; next_event < script_.events.size() && script_.events[next_event].frame <= frame; ++next_event) {
+      const InputEvent& e = script_.events[next_event].event;
+      if (e.kind == InputEvent::Kind::resize) {
+        window_.set_size(static_cast<int>(e.x), static_cast<int>(e.y));
+      } else if (e.kind == InputEvent::Kind::screenshot) {
+        take_screenshot_next(script_.screenshots[static_cast<std::size_t>(e.screenshot)]);
+      } else {
+        events.push_back(e);
+      }
+    }
+    const ImGuiIO& io = ImGui::GetIO();
+    const double now = glfwGetTime();
+    for (const InputEvent& e : events) input_.dispatch(e, io.WantCaptureMouse, io.WantCaptureKeyboard, now, *this);
+    events.clear();
+    if (quit_) break;
+
+    const vk::Extent2D fb = window_.framebuffer_extent();
+    if (fb.width == 0 || fb.height == 0) {  // minimized: nothing to draw into
+      window_.wait(0.1);
+      continue;
+    }
+    if (fb != swapchain_.extent() || settings_.vsync != swapchain_.vsync()) swapchain_.recreate(fb, settings_.vsync);
+    stats_.width = static_cast<int>(swapchain_.extent().width);
+    stats_.height = static_cast<int>(swapchain_.extent().height);
+    stats_.present_mode = vk::to_string(swapchain_.present_mode());
+
+    make_rain();
+    draw_ui();
+    const bool last_frame = options_.frames > 0 && frame + 1 == options_.frames;
+    std::optional<std::string> shot = std::move(pending_shot_);
+    pending_shot_.reset();
+    if (last_frame && !options_.screenshot.empty()) shot = options_.screenshot;
+    if (!draw_frame(shot ? &*shot : nullptr)) {
+      swapchain_.recreate(window_.framebuffer_extent(), settings_.vsync);
+      if (shot) pending_shot_ = std::move(shot);
+      continue;
+    }
+    const Clock::time_point t = Clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(t - last).count();
+    last = t;
+    stats_.frame_ms = frame == 0 ? ms : 0.9 * stats_.frame_ms + 0.1 * ms;
+    stats_.fps = stats_.frame_ms > 0 ? 1000.0 / stats_.frame_ms : 0;
+    if (frame > 0) {  // the first frame carries pipeline and allocation warm-up
+      total_ms += ms;
+      sum.simulate_ms += stats_.last.simulate_ms, sum.lod_ms += stats_.last.lod_ms, sum.draw_ms += stats_.last.draw_ms;
+      sum.triangles += stats_.last.triangles;
+    }
+    ++frame;
+  }
+  loop_->wait_idle();
+  ctx_.device().waitIdle();
+  if (!options_.quiet && frame > 1) {
+    const double n = static_cast<double>(frame - 1);
+    std::printf("pond demo: %lld frames at %ux%u on %s, %s, %s: %.2f ms/frame (%.1f FPS); simulate %.2f, LOD %.2f, "
+                "draw %.2f ms; %.0f of %zu triangles\n",
+                static_cast<long long>(frame), swapchain_.extent().width, swapchain_.extent().height,
+                ctx_.device_name().c_str(), stats_.solver.c_str(), stats_.present_mode.c_str(), total_ms / n,
+                1000.0 * n / total_ms, sum.simulate_ms / n, sum.lod_ms / n, sum.draw_ms / n,
+                static_cast<double>(sum.triangles) / n, stats_.last.full_triangles);
+  }
+  if (options_.validation && ctx_.validation_log().count() > 0)
+    throw RuntimeError(std::to_string(ctx_.validation_log().count()) + " Vulkan validation message(s) were logged (see above)");
+  return 0;
+}
+
+}  // namespace
+
+int run_demo(const DemoOptions& options) {
+  // Bad input first, before any window: exit 2 even on a machine without a display.
+  sim::Scene scene = sim::load_scene(options.scene);
+  Script script = load_script(options.script);
+  if (!options.screenshot.empty()) check_output_path(options.screenshot);
+  DemoApp app(options, std::move(scene), std::move(script));
+  return app.run();
+}
+
+}  // namespace pond::app::demo

@@ -1,0 +1,138 @@
+#include "app/demo/imgui_panel.h"
+
+#include <imgui.h>
+
+#include <cmath>
+
+#include "app/demo/controls.h"
+#include "sim/stability.h"
+
+namespace pond::app::demo {
+namespace {
+
+bool input_double(const char* label, double& value, double step, const char* format) {
+  return ImGui::InputDouble(label, &value, step, step * 10, format);
+}
+
+}  // namespace
+
+PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, const sim::Scene& scene) {
+  PanelRequests req;
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowBgAlpha(0.8f);
+  if (!ImGui::Begin("pond (H: keys)", &s.show_panel)) {
+    ImGui::End();
+    return req;
+  }
+  ImGui::Text("%.1f FPS  %.2f ms/frame  %dx%d  %s", stats.fps, stats.frame_ms, stats.width, stats.height,
+              stats.present_mode.c_str());
+  ImGui::Text("simulate %.2f  LOD %.2f  draw %.2f ms", stats.last.simulate_ms, stats.last.lod_ms, stats.last.draw_ms);
+  const double share = stats.last.full_triangles ? 100.0 * static_cast<double>(stats.last.triangles) /
+                                                       static_cast<double>(stats.last.full_triangles)
+                                                 : 0.0;
+  ImGui::Text("triangles %zu of %zu (%.1f%%)", stats.last.triangles, stats.last.full_triangles, share);
+  ImGui::Text("step %lld  %s  %s", static_cast<long long>(stats.steps_done), stats.solver.c_str(),
+              s.paused ? "PAUSED" : "");
+  ImGui::TextDisabled("%s", stats.device.c_str());
+
+  if (ImGui::CollapsingHeader("Physics", ImGuiTreeNodeFlags_DefaultOpen)) {
+    sim::Physics& p = s.physics;
+    bool changed = false;
+    changed |= input_double("mass", p.mass, 0.1, "%.3f");
+    changed |= input_double("stiffness", p.stiffness, 0.1, "%.3f");
+    changed |= input_double("damping", p.damping, 0.01, "%.4f");
+    changed |= input_double("dt", p.dt, 0.01, "%.4f");
+    int substeps = p.substeps;
+    if (ImGui::InputInt("substeps", &substeps)) {
+      p.substeps = std::max(1, substeps);
+      changed = true;
+    }
+    // Each substep integrates dt / substeps: that is what must stay under the bound.
+    const double bound = (p.mass > 0 && p.stiffness > 0) ? sim::stability_bound(p.mass, p.stiffness, std::max(0.0, p.damping)) : 0;
+    const double sub_dt = p.dt / std::max(1, p.substeps);
+    const bool stable = sub_dt < bound;
+    ImGui::TextColored(stable ? ImVec4(0.6f, 1, 0.6f, 1) : ImVec4(1, 0.4f, 0.4f, 1),
+                       "dt/substeps %.4f  stability bound %.4f  %s", sub_dt, bound, stable ? "ok" : "UNSTABLE");
+    if (changed) req.apply_physics = true;
+    int spf = static_cast<int>(s.steps_per_frame);
+    if (ImGui::SliderInt("steps / frame", &spf, 0, 16)) s.steps_per_frame = spf;
+    ImGui::Checkbox("paused (Space)", &s.paused);
+    ImGui::SameLine();
+    if (ImGui::Button("step (N)")) s.step_once = true;
+    ImGui::SameLine();
+    if (ImGui::Button("reset (R)")) req.reset_water = true;
+    if (ImGui::Checkbox("GPU solver (G)", &s.gpu_solver)) req.switch_solver = true;
+  }
+  if (ImGui::CollapsingHeader("Constraints", ImGuiTreeNodeFlags_DefaultOpen)) {
+    int border = static_cast<int>(s.modes.border);  // NodeKind: free 0, vertical 1, fixed 2
+    ImGui::Text("border (B):");
+    ImGui::SameLine();
+    bool changed = ImGui::RadioButton("free", &border, 0);
+    ImGui::SameLine();
+    changed |= ImGui::RadioButton("vertical", &border, 1);
+    ImGui::SameLine();
+    changed |= ImGui::RadioButton("fixed", &border, 2);
+    if (changed) s.modes.border = static_cast<sim::NodeKind>(border);
+    changed |= ImGui::Checkbox("all vertical (V)", &s.modes.all_vertical);
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("islands (I)", &s.modes.islands);
+    if (changed) req.rebuild_scene = true;
+  }
+  if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {
+    float tau = static_cast<float>(s.lod_tolerance_px);
+    if (ImGui::SliderFloat("LOD tau px ([ ])", &tau, 0.0f, 32.0f, "%.2f", ImGuiSliderFlags_Logarithmic))
+      s.lod_tolerance_px = tau;
+    ImGui::Checkbox("wireframe (W)", &s.wireframe);
+    ImGui::SameLine();
+    ImGui::Checkbox("vsync (F3)", &s.vsync);
+    if (ImGui::Button("reset camera (C)")) req.reset_camera = true;
+    const auto& sun = scene.lighting.sun;
+    ImGui::Text("sun direction %.2f %.2f %.2f (scene \"lighting\")", sun[0], sun[1], sun[2]);
+  }
+  if (ImGui::CollapsingHeader("Splashes")) {
+    ImGui::TextDisabled("click: velocity, Shift: position, Ctrl: explosion");
+    input_double("radius", s.splash.radius, 0.1, "%.2f");
+    input_double("velocity", s.splash.velocity, 0.1, "%.2f");
+    input_double("position", s.splash.position, 0.1, "%.2f");
+    input_double("explosion", s.splash.explosion, 0.5, "%.2f");
+    input_double("explosion radius", s.splash.explosion_radius, 0.1, "%.2f");
+    ImGui::Checkbox("rain (D)", &s.rain.on);
+    input_double("drops / frame", s.rain.drops_per_frame, 0.1, "%.2f");
+    input_double("drop velocity", s.rain.amplitude, 0.1, "%.2f");
+  }
+  if (!s.message.empty()) ImGui::TextWrapped("%s", s.message.c_str());
+  ImGui::End();
+  return req;
+}
+
+void draw_help_overlay(bool& open) {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 10, 10), ImGuiCond_Always, ImVec2(1, 0));
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  if (!ImGui::Begin("Keys and mouse", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove)) {
+    ImGui::End();
+    return;
+  }
+  if (ImGui::BeginTable("keys", 2)) {
+    auto row = [](const char* keys, const char* meaning) {
+      ImGui::TableNextRow();
+      ImGui::TableSetColumnIndex(0);
+      ImGui::TextUnformatted(keys);
+      ImGui::TableSetColumnIndex(1);
+      ImGui::TextUnformatted(meaning);
+    };
+    row("left drag", "orbit the camera");
+    row("middle drag", "pan");
+    row("wheel", "zoom");
+    row("left click", "splash (velocity kick)");
+    row("Shift+click", "splash (position bump)");
+    row("Ctrl+click", "explosion (folds the surface)");
+    for (const KeyBinding& b : key_bindings())
+      if (*b.keys) row(b.keys, b.meaning);
+    ImGui::EndTable();
+  }
+  ImGui::End();
+}
+
+}  // namespace pond::app::demo

@@ -1,0 +1,21 @@
+#pragma once
+// The ImGui windows of the demo: the control panel (physics with the stability bound, steps per
+// frame, LOD tolerance, splash and rain settings, stats) and the help overlay listing the keys.
+#include "app/demo/demo_settings.h"
+
+namespace pond::app::demo {
+
+// What the panel asks the app to do this frame (applied outside ImGui).
+struct PanelRequests {
+  bool apply_physics = false;  // settings.physics changed
+  bool rebuild_scene = false;  // settings.modes changed
+  bool switch_solver = false;  // settings.gpu_solver changed
+  bool reset_water = false;
+  bool reset_camera = false;
+};
+
+// Builds this frame's windows (between ImGui::NewFrame and ImGui::Render).
+PanelRequests draw_panel(DemoSettings& settings, const DemoStats& stats, const sim::Scene& scene);
+void draw_help_overlay(bool& open);
+
+}  // namespace pond::app::demo

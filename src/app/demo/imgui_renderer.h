@@ -1,0 +1,45 @@
+#pragma once
+// Draws ImGui's draw data inside the frame loop's pass, as one more PassDrawable after the water.
+// Written here rather than taken from libimgui's Vulkan backend because that backend (1.86) needs
+// a VkRenderPass (the frame loop uses dynamic rendering) and links the Vulkan loader directly
+// (pond loads it at run time, gpu/vulkan.h).
+//
+// Vertex and index buffers are per frame slot, host-visible, and only grow (doubling), so a frame
+// allocates nothing once the UI's size has settled. The font atlas is uploaded once.
+#include <array>
+
+#include "gpu/buffer.h"
+#include "gpu/context.h"
+#include "gpu/frame_loop.h"
+#include "gpu/render_target.h"
+
+namespace pond::app::demo {
+
+class ImGuiRenderer final : public gpu::PassDrawable {
+ public:
+  // Needs a current ImGui context (it uploads the context's font atlas).
+  ImGuiRenderer(const gpu::Context& ctx, vk::Format color_format);
+
+  void prepare(const gpu::FrameInfo& frame) override;  // copies ImGui::GetDrawData() into the slot
+  void draw(const gpu::FrameInfo& frame) override;
+
+ private:
+  struct SlotBuffers {
+    gpu::Buffer vertices, indices;
+    bool ready = false;  // this slot holds this frame's data
+  };
+  void grow(gpu::Buffer& buffer, vk::DeviceSize bytes, vk::BufferUsageFlags usage, const char* name);
+
+  const gpu::Context& ctx_;
+  bool srgb_target_ = false;
+  gpu::Image font_;
+  vk::raii::Sampler sampler_ = nullptr;
+  vk::raii::DescriptorSetLayout set_layout_ = nullptr;
+  vk::raii::DescriptorPool pool_ = nullptr;
+  vk::raii::DescriptorSet set_ = nullptr;
+  vk::raii::PipelineLayout layout_ = nullptr;
+  vk::raii::Pipeline pipeline_ = nullptr;
+  std::array<SlotBuffers, gpu::FrameLoop::kFramesInFlight> slots_;
+};
+
+}  // namespace pond::app::demo

@@ -1,0 +1,30 @@
+#pragma once
+// Where a click lands on the water: the ray through a pixel intersected with the triangles of the
+// current (moving) surface, not with the rest plane, so a splash lands where the wave is seen.
+#include <array>
+#include <optional>
+
+#include "lod/camera_budget.h"
+#include "sim/model.h"
+#include "sim/state.h"
+
+namespace pond::app::demo {
+
+struct Ray {
+  std::array<double, 3> origin, direction;  // direction normalized
+};
+
+// The ray from the eye through pixel (x, y) (origin top-left, pixels), matching the renderer's
+// perspective: vertical fovy, aspect width/height, up world +y.
+Ray pixel_ray(const lod::Camera& camera, double x, double y);
+
+struct SurfaceHit {
+  double row = 0, col = 0;   // grid indices (fractional), barycentric in index space
+  double distance = 0;       // along the ray, world units
+};
+
+// The nearest hit of `ray` with the surface of `state` (both triangles of every cell, world
+// units), or nothing when the ray misses the water.
+std::optional<SurfaceHit> intersect_surface(const Ray& ray, const sim::WaterModel& model, const sim::WaterState& state);
+
+}  // namespace pond::app::demo

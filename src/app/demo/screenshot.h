@@ -1,0 +1,34 @@
+#pragma once
+// Saving a swapchain frame as PNG. The frame loop leaves the image in eTransferSrcOptimal and
+// signals `drawn`; this copies it to a host buffer, hands the image on to presentation
+// (ePresentSrcKHR, signalling the present semaphore) and writes the PNG atomically (gpu/png.h).
+// Rare (F12, script, --screenshot): it waits for its copy, and the readback buffer is kept for the
+// next shot of the same size.
+#include <filesystem>
+
+#include "gpu/buffer.h"
+#include "gpu/context.h"
+
+namespace pond::app::demo {
+
+class ScreenshotWriter {
+ public:
+  explicit ScreenshotWriter(const gpu::Context& ctx);
+
+  // Semaphore the frame loop signals for a screenshot frame (FrameTarget::signal_semaphore).
+  vk::Semaphore drawn() const { return *drawn_; }
+  // Copies `image` (format B8G8R8A8 or R8G8B8A8, in eTransferSrcOptimal after `drawn`), moves it to
+  // ePresentSrcKHR signalling `present_ready`, and writes `path`.
+  void save(vk::Image image, vk::Format format, vk::Extent2D extent, vk::Semaphore present_ready,
+            const std::filesystem::path& path);
+
+ private:
+  const gpu::Context& ctx_;
+  vk::raii::Semaphore drawn_ = nullptr;
+  vk::raii::CommandPool pool_ = nullptr;
+  vk::raii::CommandBuffer cmd_ = nullptr;
+  vk::raii::Fence fence_ = nullptr;
+  gpu::Buffer readback_;
+};
+
+}  // namespace pond::app::demo

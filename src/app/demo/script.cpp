@@ -1,0 +1,164 @@
+#include "app/demo/script.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <sstream>
+
+#include "core/errors.h"
+#include "core/output_file.h"
+
+namespace pond::app::demo {
+namespace {
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+class LineParser {
+ public:
+  LineParser(const std::string& source, int line, std::vector<std::string> words)
+      : where_(source + " line " + std::to_string(line)), words_(std::move(words)) {}
+
+  [[noreturn]] void fail(const std::string& what) const { throw InputError("--script " + where_ + ": " + what); }
+
+  bool done() const { return next_ >= words_.size(); }
+  std::string word(const char* what) {
+    if (done()) fail(std::string("missing ") + what);
+    return words_[next_++];
+  }
+  double number(const char* what) {
+    const std::string w = word(what);
+    double v = 0;
+    const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
+    if (ec != std::errc() || end != w.data() + w.size()) fail(std::string(what) + " '" + w + "' is not a number");
+    return v;
+  }
+  std::int64_t integer(const char* what, std::int64_t lo, std::int64_t hi) {
+    const std::string w = word(what);
+    std::int64_t v = 0;
+    const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
+    if (ec != std::errc() || end != w.data() + w.size()) fail(std::string(what) + " '" + w + "' is not an integer");
+    if (v < lo || v > hi) fail(std::string(what) + " " + w + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return v;
+  }
+  int modifiers() {
+    int mods = 0;
+    while (!done()) {
+      const std::string m = word("modifier");
+      if (m == "shift") mods |= GLFW_MOD_SHIFT;
+      else if (m == "ctrl") mods |= GLFW_MOD_CONTROL;
+      else if (m == "alt") mods |= GLFW_MOD_ALT;
+      else fail("unknown modifier '" + m + "' (shift, ctrl, alt)");
+    }
+    return mods;
+  }
+  void end() const {
+    if (!done()) fail("unexpected '" + words_[next_] + "'");
+  }
+
+ private:
+  std::string where_;
+  std::vector<std::string> words_;
+  std::size_t next_ = 0;
+};
+
+using Kind = InputEvent::Kind;
+
+}  // namespace
+
+int key_from_name(const std::string& name) {
+  const std::string n = upper(name);
+  if (n.size() == 1 && n[0] >= 'A' && n[0] <= 'Z') return GLFW_KEY_A + (n[0] - 'A');
+  if (n.size() == 1 && n[0] >= '0' && n[0] <= '9') return GLFW_KEY_0 + (n[0] - '0');
+  if (n.size() >= 2 && n[0] == 'F' && std::all_of(n.begin() + 1, n.end(), ::isdigit)) {
+    const int f = std::stoi(n.substr(1));
+    if (f >= 1 && f <= 12) return GLFW_KEY_F1 + (f - 1);
+  }
+  static const std::pair<const char*, int> kNames[] = {
+      {"SPACE", GLFW_KEY_SPACE}, {"ESCAPE", GLFW_KEY_ESCAPE}, {"ENTER", GLFW_KEY_ENTER},
+      {"TAB", GLFW_KEY_TAB}, {"HOME", GLFW_KEY_HOME}, {"LEFT", GLFW_KEY_LEFT}, {"RIGHT", GLFW_KEY_RIGHT},
+      {"UP", GLFW_KEY_UP}, {"DOWN", GLFW_KEY_DOWN}, {"[", GLFW_KEY_LEFT_BRACKET},
+      {"LEFT_BRACKET", GLFW_KEY_LEFT_BRACKET}, {"]", GLFW_KEY_RIGHT_BRACKET},
+      {"RIGHT_BRACKET", GLFW_KEY_RIGHT_BRACKET}, {"-", GLFW_KEY_MINUS}, {"MINUS", GLFW_KEY_MINUS},
+      {"=", GLFW_KEY_EQUAL}, {"EQUAL", GLFW_KEY_EQUAL}, {".", GLFW_KEY_PERIOD}, {"PERIOD", GLFW_KEY_PERIOD},
+      {",", GLFW_KEY_COMMA}, {"COMMA", GLFW_KEY_COMMA}};
+  for (const auto& [text, key] : kNames)
+    if (n == text) return key;
+  return -1;
+}
+
+Script parse_script(const std::string& text, const std::string& source) {
+  Script script;
+  std::istringstream lines(text);
+  std::string line;
+  int number = 0;
+  while (std::getline(lines, line)) {
+    ++number;
+    std::istringstream split(line);
+    std::vector<std::string> words;
+    for (std::string w; split >> w;) words.push_back(w);
+    if (words.empty() || words[0][0] == '#') continue;
+    LineParser p(source, number, std::move(words));
+    if (p.word("'frame'") != "frame") p.fail("a line must start with 'frame N'");
+    const std::int64_t frame = p.integer("frame number", 0, INT64_MAX / 2);
+    auto add = [&](InputEvent e) {
+      e.scripted = true;
+      script.events.push_back({frame, e});
+    };
+    const std::string verb = p.word("event (key, click, drag, scroll, resize, screenshot)");
+    if (verb == "key") {
+      const std::string name = p.word("key name");
+      const int key = key_from_name(name);
+      if (key < 0) p.fail("unknown key '" + name + "'");
+      const int mods = p.modifiers();
+      add({.kind = Kind::key, .code = key, .action = GLFW_PRESS, .mods = mods});
+      add({.kind = Kind::key, .code = key, .action = GLFW_RELEASE, .mods = mods});
+    } else if (verb == "click") {
+      const double x = p.number("x"), y = p.number("y");
+      const int mods = p.modifiers();
+      add({.kind = Kind::cursor, .x = x, .y = y});
+      add({.kind = Kind::button, .code = GLFW_MOUSE_BUTTON_LEFT, .action = GLFW_PRESS, .mods = mods, .x = x, .y = y});
+      add({.kind = Kind::button, .code = GLFW_MOUSE_BUTTON_LEFT, .action = GLFW_RELEASE, .mods = mods, .x = x, .y = y});
+    } else if (verb == "drag") {
+      const std::string b = p.word("button (left, middle, right)");
+      const int button = b == "left" ? GLFW_MOUSE_BUTTON_LEFT
+                         : b == "middle" ? GLFW_MOUSE_BUTTON_MIDDLE
+                         : b == "right" ? GLFW_MOUSE_BUTTON_RIGHT : -1;
+      if (button < 0) p.fail("unknown button '" + b + "' (left, middle, right)");
+      const double x0 = p.number("x0"), y0 = p.number("y0"), x1 = p.number("x1"), y1 = p.number("y1");
+      const int mods = p.modifiers();
+      add({.kind = Kind::cursor, .x = x0, .y = y0});
+      add({.kind = Kind::button, .code = button, .action = GLFW_PRESS, .mods = mods, .x = x0, .y = y0});
+      add({.kind = Kind::cursor, .x = x1, .y = y1});
+      add({.kind = Kind::button, .code = button, .action = GLFW_RELEASE, .mods = mods, .x = x1, .y = y1});
+    } else if (verb == "scroll") {
+      add({.kind = Kind::scroll, .x = 0, .y = p.number("scroll amount")});
+    } else if (verb == "resize") {
+      const auto w = p.integer("width", 1, 16384), h = p.integer("height", 1, 16384);
+      add({.kind = Kind::resize, .x = static_cast<double>(w), .y = static_cast<double>(h)});
+    } else if (verb == "screenshot") {
+      const std::string file = p.word("file name");
+      check_output_path(file);
+      script.screenshots.push_back(file);
+      add({.kind = Kind::screenshot, .screenshot = static_cast<int>(script.screenshots.size() - 1)});
+    } else {
+      p.fail("unknown event '" + verb + "' (key, click, drag, scroll, resize, screenshot)");
+    }
+    p.end();
+  }
+  std::stable_sort(script.events.begin(), script.events.end(),
+                   [](const ScriptEvent& a, const ScriptEvent& b) { return a.frame < b.frame; });
+  return script;
+}
+
+Script load_script(const std::string& path) {
+  if (path.empty()) return {};
+  return parse_script(read_file(path), path);
+}
+
+}  // namespace pond::app::demo
