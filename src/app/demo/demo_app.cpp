@@ -148,6 +148,7 @@ class DemoApp final : public ControlTarget {
   int shot_counter_ = 0;
   bool quit_ = false;
   double rain_carry_ = 0;
+  double acquire_ms_ = 0, present_ms_ = 0;  // the last frame's waits in the swapchain
   std::mt19937 rng_{12345};  // deterministic rain: scripted runs repeat
 };
 
@@ -308,7 +309,10 @@ void DemoApp::draw_ui() {
 }
 
 bool DemoApp::draw_frame(const std::string* screenshot_path) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point t0 = Clock::now();
   const std::optional<AcquiredImage> image = swapchain_.acquire();
+  acquire_ms_ = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
   if (!image) return false;
   const vk::Extent2D extent = swapchain_.extent();
   const bool shot = screenshot_path != nullptr;
@@ -327,7 +331,10 @@ bool DemoApp::draw_frame(const std::string* screenshot_path) {
     shots_.save(image->image, swapchain_.format(), extent, image->rendered, *screenshot_path);
     settings_.message = "saved " + *screenshot_path;
   }
-  if (!swapchain_.present(*image)) swapchain_.recreate(window_.framebuffer_extent(), settings_.vsync);
+  const Clock::time_point t1 = Clock::now();
+  const bool current = swapchain_.present(*image);
+  present_ms_ = std::chrono::duration<double, std::milli>(Clock::now() - t1).count();
+  if (!current) swapchain_.recreate(window_.framebuffer_extent(), settings_.vsync);
   return true;
 }
 
@@ -337,7 +344,7 @@ int DemoApp::run() {
   Clock::time_point last = start;
   std::size_t next_event = 0;
   std::int64_t frame = 0;
-  double total_ms = 0;
+  double total_ms = 0, acquire_ms = 0, present_ms = 0;
   gpu::FrameStats sum{};
   while (!quit_ && (options_.frames == 0 || frame < options_.frames)) {
     window_.poll();
@@ -390,6 +397,7 @@ int DemoApp::run() {
       total_ms += ms;
       sum.simulate_ms += stats_.last.simulate_ms, sum.lod_ms += stats_.last.lod_ms, sum.draw_ms += stats_.last.draw_ms;
       sum.triangles += stats_.last.triangles;
+      acquire_ms += acquire_ms_, present_ms += present_ms_;
     }
     ++frame;
   }
@@ -398,10 +406,10 @@ int DemoApp::run() {
   if (!options_.quiet && frame > 1) {
     const double n = static_cast<double>(frame - 1);
     std::printf("pond demo: %lld frames at %ux%u on %s, %s, %s: %.2f ms/frame (%.1f FPS); simulate %.2f, LOD %.2f, "
-                "draw %.2f ms; %.0f of %zu triangles\n",
+                "draw %.2f, acquire %.2f, present %.2f ms; %.0f of %zu triangles\n",
                 static_cast<long long>(frame), swapchain_.extent().width, swapchain_.extent().height,
                 ctx_.device_name().c_str(), stats_.solver.c_str(), stats_.present_mode.c_str(), total_ms / n,
-                1000.0 * n / total_ms, sum.simulate_ms / n, sum.lod_ms / n, sum.draw_ms / n,
+                1000.0 * n / total_ms, sum.simulate_ms / n, sum.lod_ms / n, sum.draw_ms / n, acquire_ms / n, present_ms / n,
                 static_cast<double>(sum.triangles) / n, stats_.last.full_triangles);
   }
   if (options_.validation && ctx_.validation_log().count() > 0)
