@@ -1,0 +1,94 @@
+// `pond render`: the frame loop (gpu/frame_loop.h) drawing into an offscreen image, read back and
+// written as a PNG; median milliseconds per frame by part.
+#include <algorithm>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "app/render_bridge.h"
+#include "core/errors.h"
+#include "gpu/context.h"
+#include "gpu/frame_loop.h"
+#include "gpu/png.h"
+#include "gpu/render_target.h"
+#include "sim/scene.h"
+
+namespace pond::app {
+namespace {
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+gpu::SolverChoice solver_choice(const std::string& name) {
+  gpu::SolverChoice c;
+  c.gpu = name == "gpu";
+  if (!c.gpu) c.backend = *sim::parse_backend(name);
+  if (!c.gpu && !sim::cpu_supports(c.backend)) throw InputError("--solver " + name + ": this CPU does not support it");
+  return c;
+}
+
+void check_finite(const sim::WaterState& s, const sim::WaterModel& model) {
+  for (std::size_t n = 0; n < s.nodes(); ++n)
+    if (!std::isfinite(s.uy[n]) || !std::isfinite(s.vy[n]))
+      throw InputError("the water blew up (non-finite state at node row " + std::to_string(n / model.cols) + ", col " +
+                       std::to_string(n % model.cols) + "); lower physics.dt, raise physics.substeps or soften the perturbations");
+}
+
+}  // namespace
+
+int run_render(const RenderOptions& o) {
+  const sim::Scene scene = sim::load_scene(o.scene);
+  const gpu::SolverChoice solver = solver_choice(o.solver);
+  const gpu::Context ctx(gpu::ContextOptions{.device = o.device, .validation = o.validation});
+  gpu::check_target_size(ctx, o.width, o.height, gpu::RenderTarget::kFormat);
+
+  gpu::FrameLoop loop(ctx, scene, solver, gpu::RenderTarget::kFormat);
+  gpu::FrameView view;
+  view.camera = loop.default_camera(o.width, o.height);
+  if (o.eye) view.camera.eye = *o.eye;
+  if (o.target) view.camera.target = *o.target;
+  if (o.fovy) view.camera.fovy_degrees = *o.fovy;
+  view.lod_tolerance_px = o.lod_tolerance.value_or(scene.view.lod_tolerance_px);
+  view.wireframe = o.wireframe;
+  view.steps = scene.view.steps_per_frame;
+  view.wait = true;  // time each frame whole, and read the last one back
+  lod::validate(view.camera, view.lod_tolerance_px > 0 ? view.lod_tolerance_px : 1.0);
+
+  const gpu::RenderTarget target(ctx, o.width, o.height);
+  loop.advance(o.steps);
+  std::vector<double> total, simulate, lod, draw;
+  gpu::FrameStats last;
+  for (int f = 0; f < o.frames; ++f) {
+    last = loop.frame(target.frame_target(), view);
+    simulate.push_back(last.simulate_ms);
+    lod.push_back(last.lod_ms);
+    draw.push_back(last.draw_ms);
+    total.push_back(last.simulate_ms + last.lod_ms + last.draw_ms);
+  }
+  check_finite(loop.state(), loop.model());
+  const std::vector<std::uint8_t> rgba = target.read_rgba();
+  if (o.validation && !ctx.validation_log().messages().empty())
+    throw RuntimeError(std::to_string(ctx.validation_log().messages().size()) +
+                       " Vulkan validation message(s), the first: " + ctx.validation_log().messages().front());
+  gpu::write_png(o.out, o.width, o.height, rgba);
+
+  const sim::WaterModel& m = loop.model();
+  char lod_text[64] = "full mesh";
+  if (view.lod_tolerance_px > 0) std::snprintf(lod_text, sizeof lod_text, "LOD %g px", view.lod_tolerance_px);
+  std::printf("rendered %d frame%s of a %d x %d grid at %dx%d on %s, %s solver, %" PRId64 " step%s per frame, %s\n",
+              o.frames, o.frames == 1 ? "" : "s", m.rows, m.cols, o.width, o.height, ctx.device_name().c_str(),
+              o.solver.c_str(), view.steps, view.steps == 1 ? "" : "s", lod_text);
+  std::printf("ms per frame (median of %d): %.3f = simulate %.3f + LOD %.3f + draw %.3f\n", o.frames, median(total),
+              median(simulate), median(lod), median(draw));
+  std::printf("triangles: water %zu of %zu (%.1f%%), land %zu\n", last.triangles, last.full_triangles,
+              last.full_triangles ? 100.0 * static_cast<double>(last.triangles) / static_cast<double>(last.full_triangles) : 0.0,
+              last.land_triangles);
+  std::printf("steps done %" PRId64 "\nwrote %s\n", loop.steps_done(), o.out.c_str());
+  return 0;
+}
+
+}  // namespace pond::app

@@ -1,0 +1,48 @@
+#!/bin/sh
+# `pond render` from the command line: a good run writes a PNG and prints the timing lines; bad
+# input exits 2 with one line on stderr naming the problem and leaves an existing output untouched;
+# no Vulkan driver exits 1. Usage: render_cli_test.sh PATH/TO/pond WORKDIR
+set -u
+pond=$1
+work=$2
+rm -rf "$work" && mkdir -p "$work" || exit 1
+failures=0
+
+"$pond" render --steps 10 --frames 2 --size 96x64 --out "$work/ok.png" --validation > "$work/stdout" 2> "$work/stderr"
+code=$?
+if [ $code -ne 0 ] || ! grep -q "ms per frame (median of 2)" "$work/stdout" || ! grep -q "triangles: water" "$work/stdout" ||
+   [ "$(head -c 4 "$work/ok.png" | tail -c 3)" != PNG ]; then
+  echo "FAIL (good run): exit $code, stdout: $(cat "$work/stdout"), stderr: $(cat "$work/stderr")"
+  failures=$((failures + 1))
+fi
+
+expect_code() {  # expect_code CODE WORD ARGS...: exit CODE, one stderr line containing WORD, output untouched
+  want=$1; word=$2; shift 2
+  printf 'sentinel\n' > "$work/out.png"
+  "$pond" render "$@" > "$work/stdout" 2> "$work/stderr"
+  code=$?
+  lines=$(wc -l < "$work/stderr")
+  if [ $code -ne "$want" ] || [ "$lines" -ne 1 ] || ! grep -qi -- "$word" "$work/stderr" ||
+     [ "$(cat "$work/out.png")" != sentinel ]; then
+    echo "FAIL ($word): exit $code, stderr: $(cat "$work/stderr"), args: $*"
+    failures=$((failures + 1))
+  fi
+}
+out="--out $work/out.png"
+printf '{"grid": {"rows": 1}}' > "$work/bad_scene.json"
+printf '{"camera": {"eye": [0, 1], "target": [0, 0, 0]}}' > "$work/bad_camera.json"
+expect_code 2 "beyond the device" --steps 1 --size 20000x64 $out
+expect_code 2 "WIDTHxHEIGHT" --steps 1 --size 64 $out
+expect_code 2 "--steps" --size 64x64 $out
+expect_code 2 "--eye" --steps 1 --size 64x64 --eye 1,2 $out
+expect_code 2 "must differ" --steps 1 --size 64x64 --eye 1,2,3 --target 1,2,3 $out
+expect_code 2 "--fovy" --steps 1 --size 64x64 --fovy 200 $out
+expect_code 2 "--lod-tolerance" --steps 1 --size 64x64 --lod-tolerance -1 $out
+expect_code 2 "--solver" --steps 1 --size 64x64 --solver cuda $out
+expect_code 2 "grid.rows" --steps 1 --size 64x64 --scene "$work/bad_scene.json" $out
+expect_code 2 "camera.eye" --steps 1 --size 64x64 --scene "$work/bad_camera.json" $out
+expect_code 2 "does not exist" --steps 1 --size 64x64 --out "$work/missing/dir/out.png"
+VK_ICD_FILENAMES=/nonexistent.json expect_code 1 "vulkan" --steps 1 --size 64x64 $out
+
+[ $failures -eq 0 ] && echo "all render CLI cases passed"
+exit $failures
