@@ -19,9 +19,11 @@ layout(location = 1) in vec3 in_normal;
 layout(location = 0) out vec4 out_color;
 
 // The pool floor at a world point: sand with soft ripples a few cells across, so refraction shows.
+// Triangle waves instead of sines: llvmpipe evaluates every transcendental per pixel in software.
+float tri(float x) { return abs(fract(x) - 0.5) * 4.0 - 1.0; }
 vec3 floor_color(vec2 xz) {
   const vec2 p = xz / f.eye.w;
-  const float ripple = sin(p.x * 1.3 + 1.7 * sin(p.y * 0.45)) * sin(p.y * 1.1 + 1.3 * sin(p.x * 0.37));
+  const float ripple = tri(p.x * 0.21 + 0.27 * tri(p.y * 0.07)) * tri(p.y * 0.17 + 0.21 * tri(p.x * 0.06));
   return f.ground.rgb * (0.85 + 0.15 * ripple) * (0.45 + 0.55 * max(f.sun.y, 0.0));
 }
 
@@ -33,7 +35,8 @@ void main() {
 
   const float diffuse = max(dot(n, l), 0.0);  // the paper's term
   const float cos_v = clamp(dot(n, v), 0.0, 1.0);
-  const float fresnel = 0.02 + 0.98 * pow(1.0 - cos_v, 5.0);
+  const float m = 1.0 - cos_v, m2 = m * m;
+  const float fresnel = 0.02 + 0.98 * (m2 * m2 * m);  // Schlick, (1 - cos)^5
 
   // Seen through the water: the refracted ray to the floor (air -> water, 1 / 1.33).
   const vec3 t = refract(-v, n, 1.0 / 1.33);
@@ -47,7 +50,10 @@ void main() {
 
   const vec3 r = reflect(-v, n);
   const vec3 reflected = sky_color(f.sky.rgb, r, l);
-  const float spec = pow(max(dot(r, l), 0.0), 2000.0) * 3.0;
+  // The sun's glint, (r.l)^2048 by squaring: a narrow lobe without pow's exp/log.
+  float spec = max(dot(r, l), 0.0);
+  for (int k = 0; k < 11; ++k) spec *= spec;
+  spec *= 3.0;
 
   vec3 color = mix(seen_through, reflected, fresnel) + spec * vec3(1.0, 0.95, 0.85) * fresnel * 4.0;
   out_color = finish_color(color, f.grid.w);
