@@ -5,6 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
+#include <ctime>
 #include <memory>
 
 #include "gpu/context.h"
@@ -31,6 +32,20 @@ sim::WaterModel square_pond(int n, int substeps, sim::MathMode math) {
   return sim::build_model(s, math);
 }
 
+// CPU seconds of the whole process (every thread: llvmpipe's workers included). On a machine
+// shared with other jobs, node-steps per CPU second is the load-independent figure; wall-clock
+// node-steps/s on a quiet machine is about that times the cores the workers keep busy.
+double process_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// Sets the "node-steps/cpu-s" counter from the process CPU time spent since `cpu0`.
+void count_cpu(benchmark::State& state, double node_steps, double cpu0) {
+  state.counters["node-steps/cpu-s"] = node_steps / (process_cpu_seconds() - cpu0);
+}
+
 const gpu::Context& context() {
   static const std::unique_ptr<gpu::Context> ctx = [] {
     const char* device = std::getenv("POND_BENCH_DEVICE");
@@ -44,9 +59,11 @@ void BM_GpuStep(benchmark::State& state, sim::MathMode math) {
   gpu::GpuSolver solver(context(), square_pond(n, 1, math));
   constexpr std::int64_t kSteps = 8;
   solver.advance(kSteps);  // warm-up: pipeline compiled, pages touched
+  const double cpu0 = process_cpu_seconds();
   for (auto _ : state) solver.advance(kSteps);
-  state.counters["node-steps/s"] = benchmark::Counter(
-      static_cast<double>(n) * n * kSteps * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  const double node_steps = static_cast<double>(n) * n * kSteps * static_cast<double>(state.iterations());
+  state.counters["node-steps/s"] = benchmark::Counter(node_steps, benchmark::Counter::kIsRate);
+  count_cpu(state, node_steps, cpu0);
   state.SetLabel(context().device_name());
 }
 BENCHMARK_CAPTURE(BM_GpuStep, exact, sim::MathMode::exact)->Arg(256)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime();
@@ -71,9 +88,11 @@ void BM_CpuScalarOneThread(benchmark::State& state) {
   sim::CpuSolver solver(square_pond(n, 1, sim::MathMode::exact), sim::Backend::scalar, 1);
   constexpr std::int64_t kSteps = 2;
   solver.advance(kSteps);
+  const double cpu0 = process_cpu_seconds();
   for (auto _ : state) solver.advance(kSteps);
-  state.counters["node-steps/s"] = benchmark::Counter(
-      static_cast<double>(n) * n * kSteps * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  const double node_steps = static_cast<double>(n) * n * kSteps * static_cast<double>(state.iterations());
+  state.counters["node-steps/s"] = benchmark::Counter(node_steps, benchmark::Counter::kIsRate);
+  count_cpu(state, node_steps, cpu0);
 }
 BENCHMARK(BM_CpuScalarOneThread)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime();
 
