@@ -1,28 +1,35 @@
 #version 460
 // One substep of the water grid: spring forces and symplectic Euler, state A -> state B.
 //
-// Layout and speed (lavapipe/llvmpipe runs 8 invocations per SIMD register and turns every SSBO
-// load into a per-lane scalar load, so the number of loads per node decides the speed):
-//  - Structure of arrays (shared/water_gpu.h): a node's position is 3 scalar loads, not a vec4.
-//  - One invocation per column, walking a strip of POND_STEP_ROWS_PER_INVOCATION rows: the 3x3
-//    window of positions slides down, so each node loads its lower row of 3 positions (9 loads)
-//    instead of all 9 neighbours (27), and the vertical spring to row i+1 is reused, negated, as
-//    the spring to row i-1 of the next node (7 spring evaluations per node instead of 8).
-//  - Invocations along x: consecutive lanes read consecutive addresses.
+// Speed on lavapipe (llvmpipe runs 8 invocations as the lanes of one AVX2 register; what decides
+// the speed is the number of memory operations per node, not the arithmetic):
+//  - An SSBO access with a per-invocation address becomes a loop over the 8 lanes with two
+//    branches per lane (exec mask, bounds); a texel-buffer fetch is a straight-line gather and a
+//    storage-texel store an unrolled masked scatter. So the state is read and written through
+//    texel-buffer views of the same SoA buffers (shared/water_gpu.h; the layout is unchanged).
+//  - Quad path (kQuadColumns, used when cols % 4 == 0): one invocation owns 4 consecutive
+//    columns of a strip of POND_STEP_ROWS_PER_INVOCATION rows. A node row of the 4 columns is one
+//    RGBA32F texel per component (16-byte aligned because cols and the stride are multiples of 4),
+//    plus the two side neighbours as R32F texels; velocities, outputs and the 4 kinds (RGBA8UI)
+//    are one texel each. That is 19 memory operations per 4 nodes instead of 19 per node. Within
+//    the invocation each spring is evaluated once: per row 5 horizontal springs and the band to
+//    the row above (4 vertical, 5 + 5 diagonal), the band kept as the next row's lower band
+//    (4.75 spring evaluations per node instead of 8). In SoA code the column shuffles are free.
+//  - Column path (any grid): one invocation per column walking the strip with a sliding 3x3
+//    window (9 position fetches per node), the vertical spring reused as the next row's lower one.
 //
 // Exact mode (kFastMath false) is bit-identical to the CPU kernel (src/sim/step_kernel.h): every
 // operation `precise` (no FMA contraction), the Newton rsqrt of shared/exact_math.h (only + - *),
 // the canonical summation order starting from -0.0:
 //   (i,j-1) (i,j+1) (i-1,j) (i+1,j) (i-1,j-1) (i+1,j+1) (i-1,j+1) (i+1,j-1)
 // with missing neighbours skipped, and v' = v + (G*kc - v*kd), constrained components +0,
-// u' = u + v'*dt (u: displacement from rest). The term of neighbour b on node a is
-// d * spring_factor(l2, rest), d = (u_b - u_a) + rest offset (spring_vector below); the
-// vertical term reused from the node below is the exact negation of the one computed there, which
-// is literally what the CPU does (it subtracts the lower band).
+// u' = u + v'*dt (u: displacement from rest). Each spring is evaluated from the end the CPU uses
+// (the lower row, or the left column), d = (u_b - u_a) + rest offset (spring_vector below), and
+// used negated at its other end, which is literally what the CPU does (it subtracts it).
 //
 // Float controls: SignedZeroInfNanPreserve is declared so the compiler may not fold x + 0.0 or
 // 0.0 * x (signed zeros are part of the bits the parity suite compares). Denormals: see
-// src/gpu/float_policy.h.
+// src/gpu/float_policy.h. R32F/RGBA32F texel fetches and stores move the float bits unchanged.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_spirv_intrinsics : require
 
@@ -34,15 +41,24 @@ spirv_execution_mode(capabilities = [4466], 4461, 32);  // SignedZeroInfNanPrese
 layout(local_size_x = POND_STEP_LOCAL_X, local_size_y = 1, local_size_z = 1) in;
 layout(constant_id = POND_SPEC_FAST_MATH) const bool kFastMath = false;
 layout(constant_id = POND_SPEC_RSQRT_STEPS) const int kRsqrtSteps = kRsqrtStepsExact;
+layout(constant_id = POND_SPEC_QUAD_COLUMNS) const bool kQuadColumns = false;
 
-layout(std430, set = 0, binding = 0) restrict readonly buffer Src { float src[]; };
-layout(std430, set = 0, binding = 1) restrict writeonly buffer Dst { float dst[]; };
-layout(std430, set = 0, binding = 2) restrict readonly buffer Kinds { uint kinds[]; };
+// The bindings of shared/water_gpu.h (POND_STEP_BINDING_*): views of the source state, the
+// destination state and the kinds.
+layout(set = 0, binding = POND_STEP_BINDING_SRC1) uniform samplerBuffer src1;  // R32F: float n
+layout(set = 0, binding = POND_STEP_BINDING_SRC4) uniform samplerBuffer src4;  // RGBA32F: floats 4n..4n+3
+layout(set = 0, binding = POND_STEP_BINDING_DST1, r32f) uniform restrict writeonly imageBuffer dst1;
+layout(set = 0, binding = POND_STEP_BINDING_DST4, rgba32f) uniform restrict writeonly imageBuffer dst4;
+layout(set = 0, binding = POND_STEP_BINDING_KINDS1) uniform usamplerBuffer kinds1;  // R8UI: node n
+layout(set = 0, binding = POND_STEP_BINDING_KINDS4) uniform usamplerBuffer kinds4;  // RGBA8UI: nodes 4n..4n+3
 layout(push_constant) uniform Push { StepPush p; };
+
+float load1(uint n) { return texelFetch(src1, int(n)).x; }
+vec4 load4(uint q) { return texelFetch(src4, int(q)); }
 
 // Displacement u of node n from its rest position (sim/state.h: positions are stored as
 // displacements, so a float keeps full precision however large the grid).
-vec3 load_u(uint n) { return vec3(src[n], src[p.stride + n], src[2u * p.stride + n]); }
+vec3 load_u(uint n) { return vec3(load1(n), load1(p.stride + n), load1(2u * p.stride + n)); }
 
 // The spring vector from node a to its neighbour b at column offset dj and row offset di (each
 // -1, 0 or 1; constants after inlining): d = (u_b - u_a) + (dj, 0, di), where "+ 0" is not
@@ -74,13 +90,144 @@ vec3 term(vec3 ua, vec3 ub, int dj, int di, float rest) {
   return kFastMath ? term_fast(ua, ub, dj, di, rest) : term_exact(ua, ub, dj, di, rest);
 }
 
+vec3 neg(vec3 t) {
+  precise vec3 r = -t;
+  return r;
+}
+
 // acc + t where the neighbour exists, acc otherwise ("skipped").
 vec3 accumulate(vec3 acc, vec3 t, bool exists) {
   precise vec3 sum = acc + t;
   return exists ? sum : acc;
 }
 
-void main() {
+// Symplectic Euler of one node: v' = v + (G*kc - v*kd), constrained components +0 (not v' * 0,
+// which could be -0 or NaN), u' = u + v'*dt. Returns u' in out_u, v' in out_v.
+void integrate(vec3 u0, vec3 v0, vec3 g, uint kind, out vec3 out_u, out vec3 out_v) {
+  precise vec3 v1 = v0 + ((g * p.kc) - (v0 * p.kd));
+  if (kind != kNodeFree) v1.xz = vec2(0.0);
+  if (kind == kNodeFixed) v1.y = 0.0;
+  precise vec3 u1 = u0 + v1 * p.dt;
+  out_u = u1;
+  out_v = v1;
+}
+
+// ---- Quad path: 4 columns per invocation (cols % 4 == 0). ----
+
+// Row i of the group at columns j0-1 .. j0+4 (index 0 .. 5); a missing side neighbour loads the
+// nearest column of the group (never used, always in bounds).
+void load_row(uint i, uint q, uint j0, bool has_l, bool has_r, out vec3 u[6]) {
+  const uint n0 = i * p.cols + j0;
+  const uint nl = has_l ? n0 - 1u : n0, nr = has_r ? n0 + 4u : n0 + 3u;
+  const uint q4 = p.stride >> 2u, s = p.stride;
+  const vec4 x = load4(q), y = load4(q4 + q), z = load4(2u * q4 + q);
+  u[0] = vec3(load1(nl), load1(s + nl), load1(2u * s + nl));
+  u[1] = vec3(x.x, y.x, z.x);
+  u[2] = vec3(x.y, y.y, z.y);
+  u[3] = vec3(x.z, y.z, z.z);
+  u[4] = vec3(x.w, y.w, z.w);
+  u[5] = vec3(load1(nr), load1(s + nr), load1(2u * s + nr));
+}
+
+// The band of springs from row `lo` (index 0..5 = columns j0-1 .. j0+4) to the row above `up`,
+// each evaluated from its lower end as the CPU does:
+//   s[k]  = (i, j0+k)   -> (i+1, j0+k),    k = 0..3
+//   d1[m] = (i, j0+m-1) -> (i+1, j0+m),    m = 0..4
+//   d2[m] = (i, j0+m)   -> (i+1, j0+m-1),  m = 0..4
+// (Written out, not looped: llvmpipe keeps an array indexed by a loop counter in memory, with a
+// per-lane loop for every access; constant indices make every element a register.)
+#define POND_BAND_S(k) s[k] = term(lo[k + 1], up[k + 1], 0, 1, p.rest_edge)
+#define POND_BAND_D(m) \
+  d1[m] = term(lo[m], up[m + 1], 1, 1, p.rest_diag); \
+  d2[m] = term(lo[m + 1], up[m], -1, 1, p.rest_diag)
+void band(vec3 lo[6], vec3 up[6], out vec3 s[4], out vec3 d1[5], out vec3 d2[5]) {
+  POND_BAND_S(0); POND_BAND_S(1); POND_BAND_S(2); POND_BAND_S(3);
+  POND_BAND_D(0); POND_BAND_D(1); POND_BAND_D(2); POND_BAND_D(3); POND_BAND_D(4);
+}
+
+void main_quad() {
+  const uint Q = p.cols >> 2u;  // groups of 4 columns per row
+  const uint i0 = gl_WorkGroupID.y * POND_STEP_ROWS_PER_INVOCATION;
+  if (i0 >= p.rows) return;  // uniform in the workgroup
+  // Invocations past the last group compute group Q-1 again and store nothing: every invocation
+  // stays in the row loop, whose barrier() must be reached by the whole workgroup.
+  const bool in_grid = gl_GlobalInvocationID.x < Q;
+  const uint q0 = min(gl_GlobalInvocationID.x, Q - 1u);
+  const uint i1 = min(i0 + POND_STEP_ROWS_PER_INVOCATION, p.rows);
+  const uint j0 = 4u * q0;
+  const bool has_l = q0 > 0u, has_r = q0 + 1u < Q;
+  const uint q4 = p.stride >> 2u;
+
+  vec3 mid[6], up[6];
+  load_row(i0, i0 * Q + q0, j0, has_l, has_r, mid);
+  // The lower band of row i0 (re-evaluated from row i0-1: the same inputs, the same bits).
+  vec3 bs[4], bd1[5], bd2[5];
+  {
+    vec3 lo[6];
+    const uint il = i0 > 0u ? i0 - 1u : i0;
+    load_row(il, il * Q + q0, j0, has_l, has_r, lo);
+    band(lo, mid, bs, bd1, bd2);
+  }
+
+  for (uint i = i0; i < i1; ++i) {
+    const bool has_below = i > 0u, has_above = i + 1u < p.rows;
+    const uint q = i * Q + q0;
+    const uint ia = has_above ? i + 1u : i;
+    load_row(ia, ia * Q + q0, j0, has_l, has_r, up);
+
+    vec3 h[5];  // h[k] = (i, j0+k-1) -> (i, j0+k)
+#define POND_H(k) h[k] = term(mid[k], mid[k + 1], 1, 0, p.rest_edge)
+    POND_H(0); POND_H(1); POND_H(2); POND_H(3); POND_H(4);
+    vec3 s[4], d1[5], d2[5];
+    band(mid, up, s, d1, d2);
+
+    const vec4 vx = load4(3u * q4 + q), vy = load4(4u * q4 + q), vz = load4(5u * q4 + q);
+    const uvec4 kind = texelFetch(kinds4, int(q));
+    vec3 u1[4], v1[4];
+#define POND_NODE(k, l, r)                                                                    \
+  {                                                                                           \
+    precise vec3 g = vec3(-0.0);                                                              \
+    g = accumulate(g, neg(h[k]), l);                     /* (i, j-1) */                       \
+    g = accumulate(g, h[k + 1], r);                      /* (i, j+1) */                       \
+    g = accumulate(g, neg(bs[k]), has_below);            /* (i-1, j) */                       \
+    g = accumulate(g, s[k], has_above);                  /* (i+1, j) */                       \
+    g = accumulate(g, neg(bd1[k]), has_below && (l));    /* (i-1, j-1) */                     \
+    g = accumulate(g, d1[k + 1], has_above && (r));      /* (i+1, j+1) */                     \
+    g = accumulate(g, neg(bd2[k + 1]), has_below && (r)); /* (i-1, j+1) */                    \
+    g = accumulate(g, d2[k], has_above && (l));          /* (i+1, j-1) */                     \
+    integrate(mid[k + 1], vec3(vx[k], vy[k], vz[k]), g, kind[k], u1[k], v1[k]);               \
+  }
+    POND_NODE(0, has_l, true)
+    POND_NODE(1, true, true)
+    POND_NODE(2, true, true)
+    POND_NODE(3, true, has_r)
+    const vec4 ox = vec4(u1[0].x, u1[1].x, u1[2].x, u1[3].x);
+    const vec4 oy = vec4(u1[0].y, u1[1].y, u1[2].y, u1[3].y);
+    const vec4 oz = vec4(u1[0].z, u1[1].z, u1[2].z, u1[3].z);
+    const vec4 ovx = vec4(v1[0].x, v1[1].x, v1[2].x, v1[3].x);
+    const vec4 ovy = vec4(v1[0].y, v1[1].y, v1[2].y, v1[3].y);
+    const vec4 ovz = vec4(v1[0].z, v1[1].z, v1[2].z, v1[3].z);
+    if (in_grid) {
+      imageStore(dst4, int(q), ox);
+      imageStore(dst4, int(q4 + q), oy);
+      imageStore(dst4, int(2u * q4 + q), oz);
+      imageStore(dst4, int(3u * q4 + q), ovx);
+      imageStore(dst4, int(4u * q4 + q), ovy);
+      imageStore(dst4, int(5u * q4 + q), ovz);
+    }
+    // Not for shared data: llvmpipe runs the workgroup 8 invocations at a time, and a barrier
+    // makes it run row i for all of them before row i+1 (coroutines), so the row is read and
+    // written as one contiguous run per component instead of 128 bytes per 4 KB page.
+    barrier();
+
+    bs = s; bd1 = d1; bd2 = d2;
+    mid = up;
+  }
+}
+
+// ---- Column path: one column per invocation (any grid). ----
+
+void main_column() {
   const uint j = gl_GlobalInvocationID.x;
   const uint i0 = gl_GlobalInvocationID.y * POND_STEP_ROWS_PER_INVOCATION;
   if (j >= p.cols || i0 >= p.rows) return;
@@ -103,7 +250,7 @@ void main() {
     const vec3 above_l = load_u(row + jl), above_m = load_u(row + j), above_r = load_u(row + jr);
 
     // The spring to row i-1 is evaluated from its lower end, as the CPU does, and negated.
-    const vec3 t_below = -((i == i0) ? term(below_m, mid_m, 0, 1, p.rest_edge) : carry);
+    const vec3 t_below = neg((i == i0) ? term(below_m, mid_m, 0, 1, p.rest_edge) : carry);
     const vec3 t_above = term(mid_m, above_m, 0, 1, p.rest_edge);
     precise vec3 g = vec3(-0.0);
     g = accumulate(g, term(mid_m, mid_l, -1, 0, p.rest_edge), has_left);                 // (i, j-1)
@@ -117,23 +264,25 @@ void main() {
     carry = t_above;
 
     const uint n = i * C + j;
-    const uint kind = (kinds[n >> 2u] >> ((n & 3u) * 8u)) & 0xffu;
     const uint s = p.stride;
-    const vec3 v0 = vec3(src[3u * s + n], src[4u * s + n], src[5u * s + n]);
-    precise vec3 v1 = v0 + ((g * p.kc) - (v0 * p.kd));
-    // Constrained components become +0 (not v1 * 0, which could be -0 or NaN).
-    if (kind != kNodeFree) v1.xz = vec2(0.0);
-    if (kind == kNodeFixed) v1.y = 0.0;
-    precise vec3 u1 = mid_m + v1 * p.dt;
-
-    dst[n] = u1.x;
-    dst[s + n] = u1.y;
-    dst[2u * s + n] = u1.z;
-    dst[3u * s + n] = v1.x;
-    dst[4u * s + n] = v1.y;
-    dst[5u * s + n] = v1.z;
+    vec3 u1, v1;
+    integrate(mid_m, vec3(load1(3u * s + n), load1(4u * s + n), load1(5u * s + n)), g,
+              texelFetch(kinds1, int(n)).x, u1, v1);
+    imageStore(dst1, int(n), vec4(u1.x));
+    imageStore(dst1, int(s + n), vec4(u1.y));
+    imageStore(dst1, int(2u * s + n), vec4(u1.z));
+    imageStore(dst1, int(3u * s + n), vec4(v1.x));
+    imageStore(dst1, int(4u * s + n), vec4(v1.y));
+    imageStore(dst1, int(5u * s + n), vec4(v1.z));
 
     below_l = mid_l; below_m = mid_m; below_r = mid_r;
     mid_l = above_l; mid_m = above_m; mid_r = above_r;
   }
+}
+
+void main() {
+  if (kQuadColumns)
+    main_quad();
+  else
+    main_column();
 }

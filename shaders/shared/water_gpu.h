@@ -24,6 +24,17 @@
 #define POND_NORMALS_LOCAL_X 64    // nodes per workgroup of water_normals.comp
 #define POND_SPEC_FAST_MATH 0      // specialization constant: bool, true = fast math
 #define POND_SPEC_RSQRT_STEPS 1    // specialization constant: int, Newton steps of exact rsqrt
+#define POND_SPEC_QUAD_COLUMNS 2   // specialization constant: bool, 4 columns per invocation (cols % 4 == 0)
+
+// Bindings of water_step.comp: texel-buffer views of the state and the kinds (see the buffer notes
+// above; the buffers are the same, only the views differ).
+#define POND_STEP_BINDING_SRC1 0    // uniform texel buffer, R32_SFLOAT view of the source state
+#define POND_STEP_BINDING_SRC4 1    // uniform texel buffer, R32G32B32A32_SFLOAT view of the source state
+#define POND_STEP_BINDING_DST1 2    // storage texel buffer, R32_SFLOAT view of the destination state
+#define POND_STEP_BINDING_DST4 3    // storage texel buffer, R32G32B32A32_SFLOAT view of the destination
+#define POND_STEP_BINDING_KINDS1 4  // uniform texel buffer, R8_UINT view of the kinds (node n = texel n)
+#define POND_STEP_BINDING_KINDS4 5  // uniform texel buffer, R8G8B8A8_UINT view (nodes 4t..4t+3 = texel t)
+#define POND_STEP_BINDINGS 6
 
 #ifdef __cplusplus
 #define POND_GPU_CONST inline constexpr

@@ -5,14 +5,22 @@ namespace pond::gpu {
 ComputePipeline create_compute_pipeline(const Context& ctx, std::span<const std::uint32_t> spirv,
                                         std::uint32_t storage_buffers, std::uint32_t push_bytes,
                                         std::span<const SpecConstant> constants, const std::string& name) {
+  const std::vector<vk::DescriptorType> types(storage_buffers, vk::DescriptorType::eStorageBuffer);
+  return create_compute_pipeline(ctx, spirv, types, push_bytes, constants, name);
+}
+
+ComputePipeline create_compute_pipeline(const Context& ctx, std::span<const std::uint32_t> spirv,
+                                        std::span<const vk::DescriptorType> types, std::uint32_t push_bytes,
+                                        std::span<const SpecConstant> constants, const std::string& name) {
   const vk::raii::Device& device = ctx.device();
   ComputePipeline p;
   std::vector<vk::DescriptorSetLayoutBinding> bindings;
-  for (std::uint32_t b = 0; b < storage_buffers; ++b)
-    bindings.push_back({.binding = b, .descriptorType = vk::DescriptorType::eStorageBuffer,
+  for (std::uint32_t b = 0; b < types.size(); ++b)
+    bindings.push_back({.binding = b, .descriptorType = types[b],
                         .descriptorCount = 1, .stageFlags = vk::ShaderStageFlagBits::eCompute});
   p.set_layout = vk::raii::DescriptorSetLayout(
-      device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = storage_buffers, .pBindings = bindings.data()});
+      device, vk::DescriptorSetLayoutCreateInfo{.bindingCount = static_cast<std::uint32_t>(bindings.size()),
+                                                .pBindings = bindings.data()});
   const vk::PushConstantRange push{.stageFlags = vk::ShaderStageFlagBits::eCompute, .offset = 0, .size = push_bytes};
   const vk::DescriptorSetLayout set_layout = *p.set_layout;
   p.layout = vk::raii::PipelineLayout(device, vk::PipelineLayoutCreateInfo{

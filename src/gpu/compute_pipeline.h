@@ -24,6 +24,10 @@ struct ComputePipeline {
 ComputePipeline create_compute_pipeline(const Context& ctx, std::span<const std::uint32_t> spirv,
                                         std::uint32_t storage_buffers, std::uint32_t push_bytes,
                                         std::span<const SpecConstant> constants, const std::string& name);
+// The same with any descriptor type at each binding (bindings 0..n-1 in the order given).
+ComputePipeline create_compute_pipeline(const Context& ctx, std::span<const std::uint32_t> spirv,
+                                        std::span<const vk::DescriptorType> bindings, std::uint32_t push_bytes,
+                                        std::span<const SpecConstant> constants, const std::string& name);
 
 // Group count for `threads` invocations of a shader whose local size is `local` along that axis:
 // any size, not only multiples of the workgroup (the shader bounds-checks).

@@ -40,21 +40,31 @@ void write_set(const Context& ctx, const vk::raii::DescriptorSet& set, std::init
 GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model)
     : ctx_(ctx), model_(std::move(model)), stride_(state_stride(model_.nodes())) {
   const bool fast = model_.math == sim::MathMode::fast;
+  // Rows of a multiple of 4 nodes keep every group of 4 columns 16-byte aligned (the stride is a
+  // multiple of 16 floats), so the step shader can move 4 nodes per texel.
+  quad_columns_ = model_.cols % 4 == 0;
   const SpecConstant step_constants[] = {
       {POND_SPEC_FAST_MATH, fast ? 1u : 0u},
-      {POND_SPEC_RSQRT_STEPS, static_cast<std::uint32_t>(model_.constants.rsqrt_steps)}};
-  step_pipe_ = create_compute_pipeline(ctx_, water_step_spirv(), 3, sizeof(StepPush), step_constants,
+      {POND_SPEC_RSQRT_STEPS, static_cast<std::uint32_t>(model_.constants.rsqrt_steps)},
+      {POND_SPEC_QUAD_COLUMNS, quad_columns_ ? 1u : 0u}};
+  using DT = vk::DescriptorType;
+  std::vector<DT> step_bindings(POND_STEP_BINDINGS);
+  step_bindings[POND_STEP_BINDING_SRC1] = step_bindings[POND_STEP_BINDING_SRC4] = DT::eUniformTexelBuffer;
+  step_bindings[POND_STEP_BINDING_DST1] = step_bindings[POND_STEP_BINDING_DST4] = DT::eStorageTexelBuffer;
+  step_bindings[POND_STEP_BINDING_KINDS1] = step_bindings[POND_STEP_BINDING_KINDS4] = DT::eUniformTexelBuffer;
+  step_pipe_ = create_compute_pipeline(ctx_, water_step_spirv(), step_bindings, sizeof(StepPush), step_constants,
                                        fast ? "water_step (fast)" : "water_step (exact)");
   perturb_pipe_ = create_compute_pipeline(ctx_, water_perturb_spirv(), 2, sizeof(PerturbPush), {}, "water_perturb");
   normals_pipe_ = create_compute_pipeline(ctx_, water_normals_spirv(), 2, sizeof(NormalsPush), {}, "water_normals");
 
   const vk::DeviceSize state_bytes = stride_ * kComponents * sizeof(float);
-  const auto state_usage = BU::eStorageBuffer | BU::eTransferSrc | BU::eTransferDst;
+  const auto state_usage = BU::eStorageBuffer | BU::eUniformTexelBuffer | BU::eStorageTexelBuffer |
+                           BU::eTransferSrc | BU::eTransferDst;
   state_[0] = create_buffer(ctx_, state_bytes, state_usage, MemoryUse::device, "water state A");
   state_[1] = create_buffer(ctx_, state_bytes, state_usage, MemoryUse::device, "water state B");
 
   const std::vector<std::uint32_t> kinds = pack_kinds(model_.kinds);
-  kinds_ = create_buffer(ctx_, kinds.size() * 4, BU::eStorageBuffer | BU::eTransferDst, MemoryUse::device,
+  kinds_ = create_buffer(ctx_, kinds.size() * 4, BU::eUniformTexelBuffer | BU::eTransferDst, MemoryUse::device,
                          "water node kinds");
   upload(ctx_, kinds_, std::as_bytes(std::span(kinds)));
 
@@ -71,10 +81,23 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model)
                            BU::eStorageBuffer | BU::eTransferSrc | BU::eVertexBuffer, MemoryUse::device,
                            "water normals");
 
-  const vk::DescriptorPoolSize sizes{.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 14};
+  auto view = [&](const Buffer& b, vk::Format format) {
+    return vk::raii::BufferView(ctx_.device(), vk::BufferViewCreateInfo{.buffer = *b.buffer, .format = format,
+                                                                        .offset = 0, .range = VK_WHOLE_SIZE});
+  };
+  for (int c = 0; c < 2; ++c) {
+    state_r32_[c] = view(state_[c], vk::Format::eR32Sfloat);
+    state_rgba32_[c] = view(state_[c], vk::Format::eR32G32B32A32Sfloat);
+  }
+  kinds_r8_ = view(kinds_, vk::Format::eR8Uint);
+  kinds_rgba8_ = view(kinds_, vk::Format::eR8G8B8A8Uint);
+
+  const vk::DescriptorPoolSize sizes[] = {{.type = DT::eStorageBuffer, .descriptorCount = 8},
+                                          {.type = DT::eUniformTexelBuffer, .descriptorCount = 8},
+                                          {.type = DT::eStorageTexelBuffer, .descriptorCount = 4}};
   pool_ = vk::raii::DescriptorPool(ctx_.device(), vk::DescriptorPoolCreateInfo{
                                                       .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
-                                                      .maxSets = 6, .poolSizeCount = 1, .pPoolSizes = &sizes});
+                                                      .maxSets = 6, .poolSizeCount = 3, .pPoolSizes = sizes});
   auto allocate = [&](const ComputePipeline& p) {
     const vk::DescriptorSetLayout layouts[2] = {*p.set_layout, *p.set_layout};
     vk::raii::DescriptorSets sets(ctx_.device(), vk::DescriptorSetAllocateInfo{.descriptorPool = *pool_,
@@ -87,7 +110,18 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model)
   perturb_sets_ = allocate(perturb_pipe_);
   normals_sets_ = allocate(normals_pipe_);
   for (int c = 0; c < 2; ++c) {
-    write_set(ctx_, step_sets_[c], {&state_[c], &state_[1 - c], &kinds_});
+    std::vector<vk::BufferView> views(POND_STEP_BINDINGS);
+    views[POND_STEP_BINDING_SRC1] = *state_r32_[c];
+    views[POND_STEP_BINDING_SRC4] = *state_rgba32_[c];
+    views[POND_STEP_BINDING_DST1] = *state_r32_[1 - c];
+    views[POND_STEP_BINDING_DST4] = *state_rgba32_[1 - c];
+    views[POND_STEP_BINDING_KINDS1] = *kinds_r8_;
+    views[POND_STEP_BINDING_KINDS4] = *kinds_rgba8_;
+    std::vector<vk::WriteDescriptorSet> writes;
+    for (std::uint32_t b = 0; b < views.size(); ++b)
+      writes.push_back({.dstSet = *step_sets_[c], .dstBinding = b, .descriptorCount = 1,
+                        .descriptorType = step_bindings[b], .pTexelBufferView = &views[b]});
+    ctx_.device().updateDescriptorSets(writes, nullptr);
     write_set(ctx_, perturb_sets_[c], {&state_[c], &table_});
     write_set(ctx_, normals_sets_[c], {&state_[c], &normals_});
   }
@@ -145,7 +179,9 @@ void GpuSolver::record_step(const vk::raii::CommandBuffer& cmd) {
   cmd.pushConstants<StepPush>(*step_pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
   for (int s = 0; s < model_.substeps; ++s) {
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *step_pipe_.layout, 0, *step_sets_[cur_], nullptr);
-    cmd.dispatch(group_count(cols, POND_STEP_LOCAL_X), group_count(rows, POND_STEP_ROWS_PER_INVOCATION), 1);
+    // Quad path: one invocation per 4 columns; column path: one per column.
+    const std::uint32_t threads_x = quad_columns_ ? cols / 4 : cols;
+    cmd.dispatch(group_count(threads_x, POND_STEP_LOCAL_X), group_count(rows, POND_STEP_ROWS_PER_INVOCATION), 1);
     record_barrier(cmd);
     cur_ = 1 - cur_;
   }

@@ -55,6 +55,11 @@ class GpuSolver {
   std::size_t stride_ = 0;
   ComputePipeline step_pipe_, perturb_pipe_, normals_pipe_;
   Buffer state_[2], kinds_, table_, normals_;
+  // Texel-buffer views the step shader reads and writes the state through (water_gpu.h,
+  // POND_STEP_BINDING_*): state c as R32F and RGBA32F, kinds as R8UI and RGBA8UI.
+  vk::raii::BufferView state_r32_[2] = {nullptr, nullptr}, state_rgba32_[2] = {nullptr, nullptr};
+  vk::raii::BufferView kinds_r8_ = nullptr, kinds_rgba8_ = nullptr;
+  bool quad_columns_ = false;  // the step shader's 4-columns-per-invocation path (cols % 4 == 0)
   std::vector<std::uint32_t> table_first_;  // first entry of each perturbation in table_
   vk::raii::DescriptorPool pool_ = nullptr;
   // step_sets_[c]: reads state c, writes 1 - c; perturb_sets_[c], normals_sets_[c] use state c.
