@@ -350,6 +350,14 @@ void FrameLoop::set_physics(const sim::Physics& physics) {
 
 void FrameLoop::reset() { impl_->rebuild_water(sim::rest_state(impl_->model), 0); }
 
+void FrameLoop::set_state(const sim::WaterState& state, std::int64_t steps) {
+  if (state.nodes() != impl_->model.nodes())
+    throw InputError("set_state: " + std::to_string(state.nodes()) + " nodes for a grid of " +
+                     std::to_string(impl_->model.nodes()));
+  impl_->wait_all();
+  impl_->water->set_state(state, steps);
+}
+
 void FrameLoop::add_drawable(PassDrawable& drawable) { impl_->drawables.push_back(&drawable); }
 
 const sim::Scene& FrameLoop::scene() const { return impl_->scene; }

@@ -123,6 +123,9 @@ class FrameLoop {
   // New physics for the same grid; the state carries over. InputError when unstable.
   void set_physics(const sim::Physics& physics);
   void reset();                                  // back to rest at step 0 (scene splashes replay)
+  // Replaces the water state and step count (same grid): the demo carries the water over to a
+  // loop built for new constraints. InputError when the node count differs.
+  void set_state(const sim::WaterState& state, std::int64_t steps);
 
   void add_drawable(PassDrawable& drawable);     // drawn after the water, in insertion order
 

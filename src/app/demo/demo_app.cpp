@@ -70,6 +70,17 @@ struct IdleBeforeTeardown {
   }
 };
 
+// A state taken over by new constraints obeys them from the start: fixed nodes at rest,
+// vertical-only nodes without horizontal displacement or velocity.
+void constrain(sim::WaterState& s, const sim::WaterModel& model) {
+  for (std::size_t n = 0; n < s.nodes(); ++n) {
+    const auto kind = static_cast<sim::NodeKind>(model.kinds[n]);
+    if (kind == sim::NodeKind::free) continue;
+    s.ux[n] = s.uz[n] = s.vx[n] = s.vz[n] = 0;
+    if (kind == sim::NodeKind::fixed) s.uy[n] = s.vy[n] = 0;
+  }
+}
+
 std::string solver_label(const gpu::SolverChoice& s) {
   return s.gpu ? "GPU solver" : std::string("CPU solver (") + sim::backend_name(s.backend) + ")";
 }
@@ -153,12 +164,23 @@ class DemoApp final : public ControlTarget {
 };
 
 void DemoApp::build_loop(gpu::SolverChoice solver) {
-  if (loop_) loop_->wait_idle();
+  // The water carries over to the new constraints (the first loop starts from rest).
+  std::optional<sim::WaterState> carried;
+  std::int64_t steps = 0;
+  if (loop_) {
+    carried = loop_->state();
+    steps = loop_->steps_done();
+    loop_->wait_idle();
+  }
   loop_.reset();  // one loop at a time: its buffers and pipelines are the big allocations
   sim::Scene scene = apply_modes(base_scene_, settings_.modes);
   scene.physics = settings_.physics;
   loop_ = std::make_unique<gpu::FrameLoop>(ctx_, scene, solver, swapchain_.format());
   loop_->add_drawable(imgui_);
+  if (carried) {
+    constrain(*carried, loop_->model());
+    loop_->set_state(*carried, steps);
+  }
   settings_.gpu_solver = solver.gpu;
   stats_.solver = solver_label(solver);
 }
@@ -251,11 +273,11 @@ void DemoApp::on_splash(double x, double y, SplashKind kind) {
 void DemoApp::apply_requests(const PanelRequests& req) {
   if (req.reset_camera) camera_.reset();
   if (req.rebuild_scene) {
-    // The constraints change the model and the land meshes: a new loop from rest (the frame
-    // loop has no way to take a state over yet), on the same solver.
+    // The constraints change the model and the land meshes: a new loop on the same solver, the
+    // water carried over.
     build_loop(loop_->solver());
     char text[128];
-    std::snprintf(text, sizeof text, "border %s, all vertical %s, islands %s (water reset)",
+    std::snprintf(text, sizeof text, "border %s, all vertical %s, islands %s",
                   border_name(settings_.modes.border), settings_.modes.all_vertical ? "on" : "off",
                   settings_.modes.islands ? "on" : "off");
     settings_.message = text;
