@@ -4,6 +4,7 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <vector>
 
 #include "app/render_bridge.h"
@@ -12,6 +13,8 @@
 #include "gpu/frame_loop.h"
 #include "gpu/png.h"
 #include "gpu/render_target.h"
+#include "gpu/tree_drawable.h"
+#include "gpu/tree_ripples.h"
 #include "sim/scene.h"
 
 namespace pond::app {
@@ -41,12 +44,16 @@ void check_finite(const sim::WaterState& s, const sim::WaterModel& model) {
 }  // namespace
 
 int run_render(const RenderOptions& o) {
-  const sim::Scene scene = sim::load_scene(o.scene);
+  sim::Scene scene = sim::load_scene(o.scene);
+  // Gusts that ripple the water are deterministic scene perturbations over the steps to be run.
+  gpu::add_wind_ripples(scene, o.steps + static_cast<std::int64_t>(o.frames) * scene.view.steps_per_frame);
   const gpu::SolverChoice solver = solver_choice(o.solver);
   const gpu::Context ctx(gpu::ContextOptions{.device = o.device, .validation = o.validation});
   gpu::check_target_size(ctx, o.width, o.height, gpu::RenderTarget::kFormat);
 
   gpu::FrameLoop loop(ctx, scene, solver, gpu::RenderTarget::kFormat);
+  std::optional<gpu::TreeDrawable> trees;  // the scene's wind trees, in the water's pass
+  if (scene.tree) loop.add_drawable(trees.emplace(ctx, loop, *scene.tree, scene.wind));
   gpu::FrameView view;
   view.camera = loop.default_camera(o.width, o.height);
   if (o.eye) view.camera.eye = *o.eye;
@@ -87,6 +94,13 @@ int run_render(const RenderOptions& o) {
   std::printf("triangles: water %zu of %zu (%.1f%%), land %zu\n", last.triangles, last.full_triangles,
               last.full_triangles ? 100.0 * static_cast<double>(last.triangles) / static_cast<double>(last.full_triangles) : 0.0,
               last.land_triangles);
+  if (trees) {
+    const gpu::TreeDrawStats t = trees->stats();
+    std::printf("tree: %zu instance%s of %zu vertices (%s), wind %g at %g deg, %g s of wind\n", t.instances,
+                t.instances == 1 ? "" : "s", t.skeleton_vertices,
+                scene.tree->draw == sim::TreeDraw::lines ? "lines" : "tubes", scene.wind.strength,
+                scene.wind.direction_deg, trees->wind_time());
+  }
   std::printf("steps done %" PRId64 "\nwrote %s\n", loop.steps_done(), o.out.c_str());
   return 0;
 }

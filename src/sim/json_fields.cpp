@@ -96,6 +96,13 @@ std::string JsonFields::text(const char* key, const std::string& fallback,
   fail(key, "is '" + s + "', expected " + list);
 }
 
+bool JsonFields::boolean(const char* key, bool fallback) {
+  if (!has(key)) return fallback;
+  const auto& v = member(key);
+  if (!v.is_boolean()) fail(key, std::string("must be true or false, not ") + type_name(v));
+  return v.get<bool>();
+}
+
 const nlohmann::json& JsonFields::array(const char* key) {
   if (!has(key)) return kEmptyArray;
   const auto& v = member(key);

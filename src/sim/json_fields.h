@@ -19,6 +19,7 @@ class JsonFields {
   std::int64_t integer(const char* key, std::int64_t fallback, std::int64_t min, std::int64_t max);
   std::string text(const char* key, const std::string& fallback,
                    std::initializer_list<const char*> allowed);
+  bool boolean(const char* key, bool fallback);  // true / false only (no 0/1, no "yes")
   const nlohmann::json& array(const char* key);  // empty array when absent
   const nlohmann::json& object(const char* key);  // empty object when absent
   std::string child(const char* key) const;      // the path of a member

@@ -154,6 +154,51 @@ void parse_lighting(JsonFields f, LightingSpec& l) {
   f.finish();
 }
 
+// "tree": see TreeSpec. Positions must lie on the grid; absent, the tree stands on the island.
+TreeSpec parse_tree(JsonFields f, const Scene& scene) {
+  TreeSpec t;
+  t.depth = static_cast<int>(f.integer("depth", t.depth, 1, 10));
+  t.seed = static_cast<std::uint64_t>(f.integer("seed", static_cast<std::int64_t>(t.seed), 0, INT64_MAX));
+  t.height = f.number("height", t.height);
+  if (!(t.height > 0.0)) f.fail("height", "must be positive");
+  const auto& ps = f.array("positions");
+  if (ps.size() > 64) f.fail("positions", "holds more than 64 trees");
+  const GridSpec& g = scene.grid;
+  for (std::size_t k = 0; k < ps.size(); ++k) {
+    const std::string key = "positions[" + std::to_string(k) + "]";
+    const auto& p = ps[k];
+    if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
+      f.fail(key.c_str(), "must be a grid position [row, col] of two numbers");
+    const double row = p[0].get<double>(), col = p[1].get<double>();
+    if (!(row >= 0 && row <= g.rows - 1 && col >= 0 && col <= g.cols - 1))
+      f.fail(key.c_str(), "is outside the grid [0, " + std::to_string(g.rows - 1) + "] x [0, " +
+                              std::to_string(g.cols - 1) + "]");
+    t.positions.push_back({row, col});
+  }
+  if (ps.empty()) {
+    const ConstraintRect* island = nullptr;
+    for (const ConstraintRect& c : scene.constraints)
+      if (c.kind == NodeKind::fixed && !island) island = &c;
+    if (!island) f.fail("positions", "is missing and the scene has no fixed constraint (island) to stand on");
+    t.positions.push_back({0.5 * (island->row0 + island->row1), 0.5 * (island->col0 + island->col1)});
+  }
+  t.bend = f.text("bend", "article", {"article", "keep-length"}) == "keep-length" ? TreeBend::keep_length
+                                                                                   : TreeBend::article;
+  t.draw = f.text("draw", "tubes", {"lines", "tubes"}) == "lines" ? TreeDraw::lines : TreeDraw::tubes;
+  t.leaves = f.boolean("leaves", t.leaves);
+  f.finish();
+  return t;
+}
+
+void parse_wind(JsonFields f, WindSpec& w) {
+  w.strength = f.number("strength", w.strength);
+  if (!(w.strength >= 0.0 && w.strength <= 9.0)) f.fail("strength", "must be in [0, 9]");
+  w.direction_deg = f.number("direction_deg", w.direction_deg);
+  w.seed = static_cast<std::uint64_t>(f.integer("seed", static_cast<std::int64_t>(w.seed), 0, INT64_MAX));
+  w.ripples = f.boolean("ripples", w.ripples);
+  f.finish();
+}
+
 }  // namespace
 
 std::string_view default_scene_json() { return kDefaultSceneJson; }
@@ -162,8 +207,9 @@ Scene parse_scene(std::string_view json_text, const std::string& source) {
   nlohmann::json root;
   try {
     root = nlohmann::json::parse(json_text);
-  } catch (const nlohmann::json::parse_error& e) {
-    // nlohmann's message is "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
+  } catch (const nlohmann::json::exception& e) {
+    // nlohmann's message is "[json.exception.parse_error.101] parse error at line 3, column 5: ...";
+    // a number too large for a double ("1e999") is its out_of_range.406, also bad input.
     std::string what = e.what();
     const auto p = what.find("] ");
     throw InputError(source + ": invalid JSON: " + (p == std::string::npos ? what : what.substr(p + 2)));
@@ -185,6 +231,8 @@ Scene parse_scene(std::string_view json_text, const std::string& source) {
   if (f.has("camera")) s.camera = parse_camera(JsonFields(f.object("camera"), "camera", source));
   parse_view(JsonFields(f.object("view"), "view", source), s.view);
   parse_lighting(JsonFields(f.object("lighting"), "lighting", source), s.lighting);
+  if (f.has("tree")) s.tree = parse_tree(JsonFields(f.object("tree"), "tree", source), s);
+  parse_wind(JsonFields(f.object("wind"), "wind", source), s.wind);
   f.finish();
   return s;
 }

@@ -192,5 +192,66 @@ TEST(Scene, RenderKeyErrorsNameThePath) {
   EXPECT_TRUE(has(R"({"lighting": {"moon": [0, 1, 0]}})", "lighting.moon is not a known key"));
 }
 
+TEST(Scene, TreeAndWindKeysParse) {
+  const Scene s = parse_scene(R"({"tree": {"depth": 6, "seed": 7, "height": 4.5, "positions": [[10, 12.5], [30, 31]],
+                                           "bend": "keep-length", "draw": "lines", "leaves": false},
+                                  "wind": {"strength": 5, "direction_deg": 90, "seed": 3, "ripples": true}})",
+                              "x");
+  ASSERT_TRUE(s.tree.has_value());
+  EXPECT_EQ(s.tree->depth, 6);
+  EXPECT_EQ(s.tree->seed, 7u);
+  EXPECT_EQ(s.tree->height, 4.5);
+  ASSERT_EQ(s.tree->positions.size(), 2u);
+  EXPECT_EQ(s.tree->positions[0], (std::array<double, 2>{10, 12.5}));
+  EXPECT_EQ(s.tree->bend, TreeBend::keep_length);
+  EXPECT_EQ(s.tree->draw, TreeDraw::lines);
+  EXPECT_FALSE(s.tree->leaves);
+  EXPECT_EQ(s.wind.strength, 5);
+  EXPECT_EQ(s.wind.direction_deg, 90);
+  EXPECT_EQ(s.wind.seed, 3u);
+  EXPECT_TRUE(s.wind.ripples);
+  // Absent: no tree, the default wind (which ripples nothing).
+  const Scene d = parse_scene("{}", "x");
+  EXPECT_FALSE(d.tree.has_value());
+  EXPECT_FALSE(d.wind.ripples);
+  EXPECT_EQ(d.wind.strength, WindSpec{}.strength);
+  // An empty "tree" stands on the centre of the first fixed constraint, with the defaults.
+  const Scene i = parse_scene(R"({"constraints": [{"kind": "vertical", "rows": [1, 2], "cols": [1, 2]},
+                                                  {"kind": "fixed", "rows": [30, 35], "cols": [30, 36]}],
+                                  "tree": {}})", "x");
+  ASSERT_TRUE(i.tree.has_value());
+  ASSERT_EQ(i.tree->positions.size(), 1u);
+  EXPECT_EQ(i.tree->positions[0], (std::array<double, 2>{32.5, 33}));
+  EXPECT_EQ(i.tree->depth, TreeSpec{}.depth);
+  EXPECT_EQ(i.tree->bend, TreeBend::article);
+  EXPECT_EQ(i.tree->draw, TreeDraw::tubes);
+  EXPECT_TRUE(i.tree->leaves);
+}
+
+TEST(Scene, TreeAndWindErrorsNameThePath) {
+  auto has = [](const char* json, const char* text) {
+    const std::string m = error_of(json);
+    return m.find(text) != std::string::npos ? ::testing::AssertionSuccess()
+                                             : ::testing::AssertionFailure() << m;
+  };
+  const char* island = R"("constraints": [{"kind": "fixed", "rows": [30, 35], "cols": [30, 36]}])";
+  auto with_island = [&](const std::string& tree) { return "{" + std::string(island) + ", " + tree + "}"; };
+  EXPECT_TRUE(has(with_island(R"("tree": {"depth": 11})").c_str(), "tree.depth must be at most 10"));
+  EXPECT_TRUE(has(with_island(R"("tree": {"depth": 0})").c_str(), "tree.depth must be at least 1"));
+  EXPECT_TRUE(has(with_island(R"("tree": {"height": 0})").c_str(), "tree.height must be positive"));
+  EXPECT_TRUE(has(with_island(R"("tree": {"bend": "stiff"})").c_str(), "tree.bend is 'stiff', expected article | keep-length"));
+  EXPECT_TRUE(has(with_island(R"("tree": {"draw": "points"})").c_str(), "tree.draw is 'points', expected lines | tubes"));
+  EXPECT_TRUE(has(with_island(R"("tree": {"leaves": 1})").c_str(), "tree.leaves must be true or false, not a number"));
+  EXPECT_TRUE(has(with_island(R"("tree": {"positions": [[1, 2, 3]]})").c_str(), "tree.positions[0] must be a grid position [row, col]"));
+  EXPECT_TRUE(has(with_island(R"("tree": {"positions": [[1, 2], [50, 2]]})").c_str(), "tree.positions[1] is outside the grid [0, 49] x [0, 49]"));
+  EXPECT_TRUE(has(with_island(R"("tree": {"instances": 3})").c_str(), "tree.instances is not a known key"));
+  EXPECT_TRUE(has(with_island(R"("tree": true)").c_str(), "tree must be an object, not a boolean"));
+  EXPECT_TRUE(has(R"({"tree": {}})", "tree.positions is missing and the scene has no fixed constraint"));
+  EXPECT_TRUE(has(R"({"wind": {"strength": 10}})", "wind.strength must be in [0, 9]"));
+  EXPECT_TRUE(has(R"({"wind": {"direction_deg": "north"}})", "wind.direction_deg must be a number, not a string"));
+  EXPECT_TRUE(has(R"({"wind": {"ripples": "yes"}})", "wind.ripples must be true or false, not a string"));
+  EXPECT_TRUE(has(R"({"wind": {"speed": 3}})", "wind.speed is not a known key"));
+}
+
 }  // namespace
 }  // namespace pond::sim

@@ -1,0 +1,44 @@
+#version 460
+// The wind tree's vertex shader: the article's bend (Ilyin 2008, SPEC section 2) per vertex,
+//     jitter = dot(coeffs, q);  p = pos + wX (wind.x + jitter) + wZ (wind.z + jitter)
+// through shared/tree_wind.h's tree_wind_bend (the very function the CPU reference calls), or the
+// length-preserving variant walked along the vertex's ancestors (shared/tree_pose.h); then the
+// instance's placement and the view-projection. Tube rings and leaf corners carry their skeleton
+// vertex's data, so they move with it by its offset.
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_spirv_intrinsics : require
+
+#include "shared/tree_render.h"
+#include "shared/tree_pose.h"
+
+// As the water's exact shaders: x + 0.0 and 0.0 * x are not folded, so the bend keeps the CPU's bits
+// (the parity test runs the same functions in tree_pose.comp).
+spirv_execution_mode(capabilities = [4466], 4461, 32);  // SignedZeroInfNanPreserve, 32-bit floats
+
+layout(std140, set = 0, binding = POND_TREE_BINDING_FRAME) uniform Frame { TreeRenderFrame f; };
+layout(push_constant) uniform Instance { TreeInstance inst; };
+
+layout(location = kTreeAttribPosition) in vec3 in_position;
+layout(location = kTreeAttribWindX) in vec3 in_wind_x;
+layout(location = kTreeAttribWindZ) in vec3 in_wind_z;
+layout(location = kTreeAttribJitter) in vec3 in_jitter;
+layout(location = kTreeAttribOffset) in vec4 in_offset;
+layout(location = kTreeAttribNormal) in vec4 in_normal;
+layout(location = kTreeAttribInfo) in uvec4 in_info;
+
+layout(location = 0) out vec3 out_world;
+layout(location = 1) out vec3 out_normal;
+layout(location = 2) flat out uvec2 out_material;  // material, shade variation
+
+void main() {
+  vec3 p;
+  if (inst.wind.bend_mode == kTreeBendKeepLength)
+    p = tree_keep_length_vertex(in_info.x, inst.wind);
+  else
+    p = tree_wind_bend(in_position, in_wind_x, in_wind_z, in_jitter, inst.wind.wind.x, inst.wind.wind.z,
+                       inst.wind.twig.xyz);
+  out_world = inst.base.xyz + (p + in_offset.xyz) * inst.base.w;
+  out_normal = in_normal.xyz;
+  out_material = in_info.yz;
+  gl_Position = f.view_proj * vec4(out_world, 1.0);
+}

@@ -1,0 +1,253 @@
+#include "gpu/tree_drawable.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <numbers>
+#include <span>
+#include <string>
+
+#include "gpu/buffer.h"
+#include "gpu/tree_mesh.h"
+#include "gpu/tree_pipeline.h"
+#include "gpu/tree_ripples.h"
+#include "shared/tree_render.h"
+#include "tree/noise.h"
+
+namespace pond::gpu {
+namespace {
+
+namespace sh = shared::tree_wind;
+using BU = vk::BufferUsageFlagBits;
+
+// Linear colours: dark bark, a summer green, and the article's near-black lines.
+constexpr sh::vec4 kBark{0.16f, 0.1f, 0.06f, 0.0f};
+constexpr sh::vec4 kLeaf{0.09f, 0.24f, 0.045f, 0.0f};
+constexpr sh::vec4 kLine{0.05f, 0.04f, 0.03f, 1.0f};
+
+bool is_srgb(vk::Format f) {
+  return f == vk::Format::eR8G8B8A8Srgb || f == vk::Format::eB8G8R8A8Srgb || f == vk::Format::eA8B8G8R8SrgbPack32;
+}
+
+sh::vec4 v4(const std::array<double, 3>& a) {
+  return {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2]), 0.0f};
+}
+
+struct Instance {
+  sh::vec4 base;  // foot (world) and scale
+  tree::WindState wind;
+};
+
+struct SlotResources {
+  Buffer uniforms;
+  vk::raii::DescriptorSet set = nullptr;
+};
+
+}  // namespace
+
+struct TreeDrawable::Impl {
+  const Context& ctx;
+  sim::TreeSpec spec;
+  sim::WindSpec wind_spec;
+  tree::UserWind user;
+  tree::NoiseTable noise;
+  sim::LightingSpec lighting;
+  bool srgb_target;
+  TreePipelines pipes;
+  tree::Tree grown;
+  TreeMesh mesh;
+  Buffer vertices, indices, skeleton, parents;
+  vk::raii::DescriptorPool pool = nullptr;
+  std::vector<SlotResources> slots;
+  std::vector<Instance> instances;
+  bool manual_clock = false;
+  double pending_seconds = 0.0;  // manual clock: advanced since the last frame
+  double last_seconds = 0.0;     // simulated clock: FrameInfo::seconds of the last frame
+
+  Impl(const Context& c, const FrameLoop& loop, const sim::TreeSpec& t, const sim::WindSpec& w)
+      : ctx(c), spec(t), wind_spec(w), user(scene_user_wind(w)), noise(tree::make_noise_table(w.seed)),
+        lighting(loop.scene().lighting), srgb_target(is_srgb(loop.color_format())),
+        pipes(create_tree_pipelines(c, loop.color_format(), FrameLoop::kDepthFormat)) {
+    const vk::DescriptorPoolSize sizes[] = {
+        {.type = vk::DescriptorType::eUniformBuffer, .descriptorCount = FrameLoop::kFramesInFlight},
+        {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 2 * FrameLoop::kFramesInFlight}};
+    pool = vk::raii::DescriptorPool(
+        ctx.device(), vk::DescriptorPoolCreateInfo{.flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
+                                                   .maxSets = FrameLoop::kFramesInFlight, .poolSizeCount = 2,
+                                                   .pPoolSizes = sizes});
+    for (std::uint32_t k = 0; k < FrameLoop::kFramesInFlight; ++k) {
+      SlotResources s;
+      s.uniforms = create_buffer(ctx, sizeof(sh::TreeRenderFrame), BU::eUniformBuffer, MemoryUse::upload,
+                                 "tree frame uniforms, slot " + std::to_string(k));
+      const vk::DescriptorSetLayout layout = *pipes.set_layout;
+      s.set = std::move(vk::raii::DescriptorSets(
+          ctx.device(), vk::DescriptorSetAllocateInfo{.descriptorPool = *pool, .descriptorSetCount = 1,
+                                                      .pSetLayouts = &layout})[0]);
+      slots.push_back(std::move(s));
+    }
+    grow();
+    const sim::WaterModel& model = loop.model();
+    const double land = loop.scene().view.land_height;
+    for (std::size_t k = 0; k < spec.positions.size(); ++k) {
+      Instance inst;
+      const auto& rc = spec.positions[k];
+      inst.base = {static_cast<float>(rc[1] * model.spacing), static_cast<float>(land),
+                   static_cast<float>(rc[0] * model.spacing), 0.0f};
+      inst.wind.phase = tree::instance_phase(static_cast<int>(k));
+      instances.push_back(inst);
+    }
+    rescale();
+  }
+
+  // Grows spec's tree at trunk length 1 (tree units; each instance scales it to spec.height) and
+  // uploads its mesh and skeleton.
+  void grow() {
+    grown = tree::grow_tree(tree::TreeParams{.depth = spec.depth, .seed = spec.seed, .trunk_length = 1.0f});
+    mesh = build_tree_mesh(grown);
+    vertices = create_buffer(ctx, mesh.vertices.size() * sizeof(TreeMeshVertex), BU::eVertexBuffer | BU::eTransferDst,
+                             MemoryUse::device, "tree mesh vertices");
+    upload(ctx, vertices, std::as_bytes(std::span(mesh.vertices)));
+    indices = create_buffer(ctx, mesh.indices.size() * 4, BU::eIndexBuffer | BU::eTransferDst, MemoryUse::device,
+                            "tree mesh indices");
+    upload(ctx, indices, std::as_bytes(std::span(mesh.indices)));
+    skeleton = create_buffer(ctx, grown.size() * sizeof(tree::TreeVertex), BU::eStorageBuffer | BU::eTransferDst,
+                             MemoryUse::device, "tree skeleton");
+    upload(ctx, skeleton, std::as_bytes(std::span(grown.vertices)));
+    parents = create_buffer(ctx, grown.size() * sizeof(std::int32_t), BU::eStorageBuffer | BU::eTransferDst,
+                            MemoryUse::device, "tree parents");
+    upload(ctx, parents, std::as_bytes(std::span(grown.parents)));
+    for (const SlotResources& s : slots) {
+      const vk::DescriptorBufferInfo infos[] = {s.uniforms.whole(), skeleton.whole(), parents.whole()};
+      const vk::WriteDescriptorSet writes[] = {
+          {.dstSet = *s.set, .dstBinding = POND_TREE_BINDING_FRAME, .descriptorCount = 1,
+           .descriptorType = vk::DescriptorType::eUniformBuffer, .pBufferInfo = &infos[0]},
+          {.dstSet = *s.set, .dstBinding = POND_TREE_BINDING_SKELETON, .descriptorCount = 1,
+           .descriptorType = vk::DescriptorType::eStorageBuffer, .pBufferInfo = &infos[1]},
+          {.dstSet = *s.set, .dstBinding = POND_TREE_BINDING_PARENTS, .descriptorCount = 1,
+           .descriptorType = vk::DescriptorType::eStorageBuffer, .pBufferInfo = &infos[2]}};
+      ctx.device().updateDescriptorSets(writes, nullptr);
+    }
+  }
+
+  void rescale() {
+    const float scale = static_cast<float>(spec.height) / mesh.rest_height;
+    for (Instance& inst : instances) inst.base.w = scale;
+  }
+
+  tree::BendMode bend_mode() const {
+    return spec.bend == sim::TreeBend::keep_length ? tree::BendMode::keep_length : tree::BendMode::article;
+  }
+
+  void prepare(const FrameInfo& info) {
+    double dt = pending_seconds;
+    if (!manual_clock) dt = info.seconds - last_seconds;
+    last_seconds = info.seconds;
+    pending_seconds = 0.0;
+    for (Instance& inst : instances) tree::advance_wind(inst.wind, noise, user, dt);
+
+    const auto& sun = lighting.sun;
+    const double sl = std::sqrt(sun[0] * sun[0] + sun[1] * sun[1] + sun[2] * sun[2]);
+    sh::TreeRenderFrame f;
+    std::memcpy(f.view_proj.m, info.view_proj, sizeof f.view_proj.m);
+    f.eye = {info.eye[0], info.eye[1], info.eye[2], 0.0f};
+    f.sun = v4({sun[0] / sl, sun[1] / sl, sun[2] / sl});
+    f.sky = v4(lighting.sky);
+    f.bark = kBark;
+    f.leaf = kLeaf;
+    f.line = kLine;
+    f.flags = {srgb_target ? 0u : sh::kTreeEncodeSrgb, 0, 0, 0};
+    std::memcpy(slots[info.slot].uniforms.mapped, &f, sizeof f);
+  }
+
+  void draw_range(const vk::raii::CommandBuffer& cmd, IndexRange r) const {
+    if (r.count == 0) return;
+    for (const Instance& inst : instances) {
+      const sh::TreeInstance push{.base = inst.base, .wind = tree::wind_frame(inst.wind, noise, user, bend_mode())};
+      cmd.pushConstants<sh::TreeInstance>(*pipes.layout, vk::ShaderStageFlagBits::eVertex, 0, push);
+      cmd.drawIndexed(r.count, 1, r.first, 0, 0);
+    }
+  }
+
+  void draw(const FrameInfo& info) const {
+    const vk::raii::CommandBuffer& cmd = info.cmd;
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *slots[info.slot].set, nullptr);
+    cmd.bindVertexBuffers(0, *vertices.buffer, vk::DeviceSize{0});
+    cmd.bindIndexBuffer(*indices.buffer, 0, vk::IndexType::eUint32);
+    if (spec.draw == sim::TreeDraw::lines) {
+      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.lines);
+      draw_range(cmd, mesh.lines);
+    } else {
+      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.solid);
+      draw_range(cmd, mesh.tubes);
+    }
+    if (spec.leaves) {
+      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.solid);
+      draw_range(cmd, mesh.leaves);
+    }
+  }
+};
+
+TreeDrawable::TreeDrawable(const Context& ctx, const FrameLoop& loop, const sim::TreeSpec& tree,
+                           const sim::WindSpec& wind)
+    : impl_(std::make_unique<Impl>(ctx, loop, tree, wind)) {}
+
+// Frames in flight may still read the tree's buffers.
+TreeDrawable::~TreeDrawable() {
+  if (impl_) impl_->ctx.device().waitIdle();
+}
+
+void TreeDrawable::prepare(const FrameInfo& frame) { impl_->prepare(frame); }
+void TreeDrawable::draw(const FrameInfo& frame) { impl_->draw(frame); }
+
+void TreeDrawable::set_wind_direction(double radians) {
+  impl_->user.direction = static_cast<float>(radians);
+  impl_->wind_spec.direction_deg = radians * 180.0 / std::numbers::pi;
+}
+
+void TreeDrawable::set_strength(double strength) {
+  const double s = std::clamp(strength, 0.0, static_cast<double>(tree::kMaxWindStrength));
+  impl_->user.strength = static_cast<float>(s);
+  impl_->wind_spec.strength = s;
+}
+
+void TreeDrawable::regrow(std::uint64_t seed) {
+  impl_->ctx.device().waitIdle();  // the buffers being replaced may still be read by frames in flight
+  impl_->spec.seed = seed;
+  impl_->grow();
+  impl_->rescale();
+}
+
+void TreeDrawable::set_bend_mode(sim::TreeBend mode) { impl_->spec.bend = mode; }
+void TreeDrawable::set_draw_mode(sim::TreeDraw mode) { impl_->spec.draw = mode; }
+void TreeDrawable::set_leaves(bool leaves) { impl_->spec.leaves = leaves; }
+
+void TreeDrawable::set_manual_clock() { impl_->manual_clock = true; }
+void TreeDrawable::advance_clock(double seconds) {
+  if (seconds > 0.0) impl_->pending_seconds += seconds;
+}
+
+const sim::TreeSpec& TreeDrawable::spec() const { return impl_->spec; }
+const sim::WindSpec& TreeDrawable::wind() const { return impl_->wind_spec; }
+const tree::Tree& TreeDrawable::tree() const { return impl_->grown; }
+double TreeDrawable::wind_time() const {
+  return impl_->instances.empty() ? 0.0 : impl_->instances.front().wind.time;
+}
+
+std::vector<tree::TreeWindFrame> TreeDrawable::wind_frames() const {
+  std::vector<tree::TreeWindFrame> out;
+  for (const Instance& inst : impl_->instances)
+    out.push_back(tree::wind_frame(inst.wind, impl_->noise, impl_->user, impl_->bend_mode()));
+  return out;
+}
+
+TreeDrawStats TreeDrawable::stats() const {
+  const Impl& m = *impl_;
+  return {.instances = m.instances.size(),
+          .skeleton_vertices = m.grown.size(),
+          .mesh_vertices = m.mesh.vertices.size(),
+          .line_segments = m.mesh.lines.count / 2,
+          .tube_triangles = m.mesh.tubes.count / 3,
+          .leaf_triangles = m.mesh.leaves.count / 3};
+}
+
+}  // namespace pond::gpu

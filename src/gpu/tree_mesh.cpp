@@ -1,0 +1,117 @@
+#include "gpu/tree_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace pond::gpu {
+namespace {
+
+namespace sh = shared::tree_wind;
+using tree::Vec3;
+
+constexpr float kTrunkRadius = 0.065f;
+constexpr float kRadiusRatio = 0.62f;
+// Sides per ring: six where a branch is thick enough to show its roundness, four for the two
+// thinnest levels (2/3 of all segments, a pixel or two wide at any sensible distance).
+constexpr int kSidesThick = 6, kSidesThin = 4;
+// A leaf is a diamond this many times its twig's length long and wide.
+constexpr float kLeafLength = 1.1f, kLeafWidth = 0.6f;
+
+sh::vec4 v4(Vec3 a) { return {a.x, a.y, a.z, 0.0f}; }
+
+// A unit vector perpendicular to unit `d`: crossed with the axis it is least aligned with.
+Vec3 perpendicular(Vec3 d) {
+  const float ax = std::abs(d.x), ay = std::abs(d.y), az = std::abs(d.z);
+  const Vec3 axis = ax <= ay && ax <= az ? Vec3{1, 0, 0} : ay <= az ? Vec3{0, 1, 0} : Vec3{0, 0, 1};
+  return tree::normalize(tree::cross(d, axis));
+}
+
+// A small deterministic hash (splitmix-style) for the leaves' shade variation.
+std::uint32_t hash(std::uint32_t x) {
+  x ^= x >> 16;
+  x *= 0x7feb352du;
+  x ^= x >> 15;
+  x *= 0x846ca68bu;
+  x ^= x >> 16;
+  return x;
+}
+
+TreeMeshVertex mesh_vertex(const tree::Tree& t, std::size_t branch, Vec3 offset, Vec3 normal,
+                           std::uint32_t material, std::uint32_t shade = 0) {
+  TreeMeshVertex v;
+  v.branch = t.vertices[branch];
+  v.offset = v4(offset);
+  v.normal = v4(normal);
+  v.info = {static_cast<std::uint32_t>(branch), material, shade, 0};
+  return v;
+}
+
+}  // namespace
+
+float tree_tube_radius(int depth, int level) {
+  return kTrunkRadius * std::pow(kRadiusRatio, static_cast<float>(depth - level));
+}
+
+TreeMesh build_tree_mesh(const tree::Tree& t) {
+  TreeMesh m;
+  const std::size_t n = t.size();
+  for (std::size_t i = 0; i < n; ++i) m.rest_height = std::max(m.rest_height, t.vertices[i].position.y);
+
+  // Lines: vertex i is skeleton vertex i.
+  for (std::size_t i = 0; i < n; ++i) m.vertices.push_back(mesh_vertex(t, i, {}, {}, sh::kTreeMaterialLine));
+  m.lines.first = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    m.indices.insert(m.indices.end(), {static_cast<std::uint32_t>(t.parents[i]), static_cast<std::uint32_t>(i)});
+  m.lines.count = static_cast<std::uint32_t>(m.indices.size());
+
+  // Tubes.
+  m.tubes.first = static_cast<std::uint32_t>(m.indices.size());
+  for (std::size_t i = 1; i < n; ++i) {
+    const auto p = static_cast<std::size_t>(t.parents[i]);
+    const int level = t.levels[i];
+    const Vec3 dir = t.vertices[i].position - t.vertices[p].position;
+    const Vec3 d = tree::normalize(dir);
+    const Vec3 u = perpendicular(d), w = tree::cross(d, u);
+    const int sides = level <= 2 ? kSidesThin : kSidesThick;
+    const float r_base = tree_tube_radius(t.depth, level), r_tip = tree_tube_radius(t.depth, level - 1);
+    const auto base = static_cast<std::uint32_t>(m.vertices.size());
+    for (int ring = 0; ring < 2; ++ring) {
+      const float r = ring == 0 ? r_base : r_tip;
+      for (int k = 0; k < sides; ++k) {
+        const float a = 2.0f * std::numbers::pi_v<float> * static_cast<float>(k) / static_cast<float>(sides);
+        const Vec3 normal = u * std::cos(a) + w * std::sin(a);
+        m.vertices.push_back(mesh_vertex(t, ring == 0 ? p : i, normal * r, normal, sh::kTreeMaterialBark));
+      }
+    }
+    const auto s = static_cast<std::uint32_t>(sides);
+    for (std::uint32_t k = 0; k < s; ++k) {
+      const std::uint32_t a = base + k, b = base + (k + 1) % s, c = a + s, e = b + s;
+      m.indices.insert(m.indices.end(), {a, b, e, a, e, c});
+    }
+  }
+  m.tubes.count = static_cast<std::uint32_t>(m.indices.size()) - m.tubes.first;
+
+  // Leaves at the tips of the thinnest twigs: a diamond in the plane of the twig and a side vector,
+  // from the tip out along the twig.
+  m.leaves.first = static_cast<std::uint32_t>(m.indices.size());
+  for (std::size_t i = 1; i < n; ++i) {
+    if (t.levels[i] != 1) continue;
+    const auto p = static_cast<std::size_t>(t.parents[i]);
+    const Vec3 dir = t.vertices[i].position - t.vertices[p].position;
+    const float len = tree::length(dir);
+    const Vec3 d = dir * (1.0f / len);
+    const Vec3 side = perpendicular(d);
+    const Vec3 normal = tree::cross(d, side);
+    const std::uint32_t shade = hash(static_cast<std::uint32_t>(i)) & 255u;
+    const Vec3 along = d * (kLeafLength * len), across = side * (0.5f * kLeafWidth * len);
+    const auto base = static_cast<std::uint32_t>(m.vertices.size());
+    for (const Vec3 corner : {Vec3{}, along * 0.45f + across, along, along * 0.45f - across * 1.0f})
+      m.vertices.push_back(mesh_vertex(t, i, corner, normal, sh::kTreeMaterialLeaf, shade));
+    m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+  }
+  m.leaves.count = static_cast<std::uint32_t>(m.indices.size()) - m.leaves.first;
+  return m;
+}
+
+}  // namespace pond::gpu

@@ -1,0 +1,109 @@
+#include "gpu/tree_pipeline.h"
+
+#include "shared/tree_render.h"
+
+namespace pond::gpu {
+namespace {
+#include "tree_frag.spv.h"
+#include "tree_vert.spv.h"
+
+namespace sh = shared::tree_wind;
+
+vk::raii::ShaderModule module(const Context& ctx, std::span<const std::uint32_t> spirv) {
+  return vk::raii::ShaderModule(ctx.device(), vk::ShaderModuleCreateInfo{.codeSize = spirv.size_bytes(),
+                                                                         .pCode = spirv.data()});
+}
+
+vk::raii::Pipeline create(const Context& ctx, const vk::raii::PipelineLayout& layout, vk::Format color,
+                          vk::Format depth, bool lines, const char* name) {
+  const vk::raii::ShaderModule vs = module(ctx, tree_vert_spirv()), fs = module(ctx, tree_frag_spirv());
+  const vk::PipelineShaderStageCreateInfo stages[] = {
+      {.stage = vk::ShaderStageFlagBits::eVertex, .module = *vs, .pName = "main"},
+      {.stage = vk::ShaderStageFlagBits::eFragment, .module = *fs, .pName = "main"}};
+  using V = sh::TreeMeshVertex;
+  const vk::VertexInputBindingDescription binding{.binding = 0, .stride = sizeof(V),
+                                                  .inputRate = vk::VertexInputRate::eVertex};
+  constexpr auto f3 = vk::Format::eR32G32B32Sfloat;
+  constexpr auto branch = offsetof(V, branch);
+  const vk::VertexInputAttributeDescription attributes[] = {
+      {.location = sh::kTreeAttribPosition, .binding = 0, .format = f3,
+       .offset = static_cast<std::uint32_t>(branch + sh::kTreeVertexPosition * sizeof(float))},
+      {.location = sh::kTreeAttribWindX, .binding = 0, .format = f3,
+       .offset = static_cast<std::uint32_t>(branch + sh::kTreeVertexWindX * sizeof(float))},
+      {.location = sh::kTreeAttribWindZ, .binding = 0, .format = f3,
+       .offset = static_cast<std::uint32_t>(branch + sh::kTreeVertexWindZ * sizeof(float))},
+      {.location = sh::kTreeAttribJitter, .binding = 0, .format = f3,
+       .offset = static_cast<std::uint32_t>(branch + sh::kTreeVertexJitter * sizeof(float))},
+      {.location = sh::kTreeAttribOffset, .binding = 0, .format = vk::Format::eR32G32B32A32Sfloat,
+       .offset = offsetof(V, offset)},
+      {.location = sh::kTreeAttribNormal, .binding = 0, .format = vk::Format::eR32G32B32A32Sfloat,
+       .offset = offsetof(V, normal)},
+      {.location = sh::kTreeAttribInfo, .binding = 0, .format = vk::Format::eR32G32B32A32Uint,
+       .offset = offsetof(V, info)}};
+  const vk::PipelineVertexInputStateCreateInfo vertex_input{.vertexBindingDescriptionCount = 1,
+                                                            .pVertexBindingDescriptions = &binding,
+                                                            .vertexAttributeDescriptionCount = 7,
+                                                            .pVertexAttributeDescriptions = attributes};
+  const vk::PipelineInputAssemblyStateCreateInfo assembly{
+      .topology = lines ? vk::PrimitiveTopology::eLineList : vk::PrimitiveTopology::eTriangleList};
+  const vk::PipelineViewportStateCreateInfo viewport{.viewportCount = 1, .scissorCount = 1};
+  const vk::PipelineRasterizationStateCreateInfo raster{.polygonMode = vk::PolygonMode::eFill,
+                                                        .cullMode = vk::CullModeFlagBits::eNone,
+                                                        .frontFace = vk::FrontFace::eCounterClockwise,
+                                                        .lineWidth = 1.0f};
+  const vk::PipelineMultisampleStateCreateInfo multisample{.rasterizationSamples = vk::SampleCountFlagBits::e1};
+  const vk::PipelineDepthStencilStateCreateInfo depth_state{
+      .depthTestEnable = VK_TRUE, .depthWriteEnable = VK_TRUE, .depthCompareOp = vk::CompareOp::eLessOrEqual};
+  using CC = vk::ColorComponentFlagBits;
+  const vk::PipelineColorBlendAttachmentState blend{.colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
+  const vk::PipelineColorBlendStateCreateInfo blending{.attachmentCount = 1, .pAttachments = &blend};
+  const vk::DynamicState dynamic_states[] = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
+  const vk::PipelineDynamicStateCreateInfo dynamic{.dynamicStateCount = 2, .pDynamicStates = dynamic_states};
+  const vk::PipelineRenderingCreateInfo rendering{.colorAttachmentCount = 1, .pColorAttachmentFormats = &color,
+                                                  .depthAttachmentFormat = depth};
+  const vk::GraphicsPipelineCreateInfo info{.pNext = &rendering,
+                                            .stageCount = 2,
+                                            .pStages = stages,
+                                            .pVertexInputState = &vertex_input,
+                                            .pInputAssemblyState = &assembly,
+                                            .pViewportState = &viewport,
+                                            .pRasterizationState = &raster,
+                                            .pMultisampleState = &multisample,
+                                            .pDepthStencilState = &depth_state,
+                                            .pColorBlendState = &blending,
+                                            .pDynamicState = &dynamic,
+                                            .layout = *layout};
+  vk::raii::Pipeline pipeline(ctx.device(), nullptr, info);
+  ctx.name(pipeline, name);
+  return pipeline;
+}
+
+}  // namespace
+
+std::span<const std::uint32_t> tree_vert_spirv() { return pond_spirv_tree_vert; }
+std::span<const std::uint32_t> tree_frag_spirv() { return pond_spirv_tree_frag; }
+
+TreePipelines create_tree_pipelines(const Context& ctx, vk::Format color_format, vk::Format depth_format) {
+  TreePipelines p;
+  using SS = vk::ShaderStageFlagBits;
+  const vk::DescriptorSetLayoutBinding bindings[] = {
+      {.binding = POND_TREE_BINDING_FRAME, .descriptorType = vk::DescriptorType::eUniformBuffer,
+       .descriptorCount = 1, .stageFlags = SS::eVertex | SS::eFragment},
+      {.binding = POND_TREE_BINDING_SKELETON, .descriptorType = vk::DescriptorType::eStorageBuffer,
+       .descriptorCount = 1, .stageFlags = SS::eVertex},
+      {.binding = POND_TREE_BINDING_PARENTS, .descriptorType = vk::DescriptorType::eStorageBuffer,
+       .descriptorCount = 1, .stageFlags = SS::eVertex}};
+  p.set_layout = vk::raii::DescriptorSetLayout(
+      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = 3, .pBindings = bindings});
+  const vk::DescriptorSetLayout set_layout = *p.set_layout;
+  const vk::PushConstantRange push{.stageFlags = SS::eVertex, .offset = 0, .size = sizeof(sh::TreeInstance)};
+  p.layout = vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo{.setLayoutCount = 1,
+                                                                                 .pSetLayouts = &set_layout,
+                                                                                 .pushConstantRangeCount = 1,
+                                                                                 .pPushConstantRanges = &push});
+  p.lines = create(ctx, p.layout, color_format, depth_format, true, "tree lines");
+  p.solid = create(ctx, p.layout, color_format, depth_format, false, "tree tubes and leaves");
+  return p;
+}
+
+}  // namespace pond::gpu

@@ -1,0 +1,27 @@
+#pragma once
+// The wind tree's graphics pipelines (dynamic rendering into the frame loop's color format and
+// depth), sharing one descriptor-set layout (shared/tree_render.h bindings) and the TreeInstance
+// push constants:
+//  - lines: the skeleton as a line list, unlit (the article's look);
+//  - solid: tubes and leaves as triangles, lit, no culling (leaves are seen from both sides).
+#include <cstdint>
+#include <span>
+
+#include "gpu/context.h"
+
+namespace pond::gpu {
+
+struct TreePipelines {
+  vk::raii::DescriptorSetLayout set_layout = nullptr;
+  vk::raii::PipelineLayout layout = nullptr;
+  vk::raii::Pipeline lines = nullptr;
+  vk::raii::Pipeline solid = nullptr;
+};
+
+TreePipelines create_tree_pipelines(const Context& ctx, vk::Format color_format, vk::Format depth_format);
+
+// SPIR-V of shaders/tree.vert and tree.frag (embedded at build time).
+std::span<const std::uint32_t> tree_vert_spirv();
+std::span<const std::uint32_t> tree_frag_spirv();
+
+}  // namespace pond::gpu
