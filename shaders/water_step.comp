@@ -6,12 +6,15 @@
 //  - An SSBO access with a per-invocation address becomes a loop over the 8 lanes with two
 //    branches per lane (exec mask, bounds); a texel-buffer fetch is a straight-line gather and a
 //    storage-texel store an unrolled masked scatter. So the state is read and written through
-//    texel-buffer views of the same SoA buffers (shared/water_gpu.h; the layout is unchanged).
+//    texel-buffer views of the same SoA buffers (shared/water_gpu.h; the layout is unchanged),
+//    except the quad path's vec4 stores (below).
 //  - Quad path (kQuadColumns, used when cols % 4 == 0): one invocation owns 4 consecutive
 //    columns of a strip of POND_STEP_ROWS_PER_INVOCATION rows. A node row of the 4 columns is one
 //    RGBA32F texel per component (16-byte aligned because cols and the stride are multiples of 4),
 //    plus the two side neighbours as R32F texels; velocities, outputs and the 4 kinds (RGBA8UI)
-//    are one texel each. That is 19 memory operations per 4 nodes instead of 19 per node. Within
+//    are one texel each; the 6 outputs are vec4 SSBO stores (one lane loop per 4 floats, where a
+//    RGBA32F imageStore loops over lanes x channels). 19 memory operations per 4 nodes instead of
+//    19 per node. Within
 //    the invocation each spring is evaluated once: per row 5 horizontal springs and the band to
 //    the row above (4 vertical, 5 + 5 diagonal), the band kept as the next row's lower band
 //    (4.75 spring evaluations per node instead of 8). In SoA code the column shuffles are free.
@@ -48,7 +51,7 @@ layout(constant_id = POND_SPEC_QUAD_COLUMNS) const bool kQuadColumns = false;
 layout(set = 0, binding = POND_STEP_BINDING_SRC1) uniform samplerBuffer src1;  // R32F: float n
 layout(set = 0, binding = POND_STEP_BINDING_SRC4) uniform samplerBuffer src4;  // RGBA32F: floats 4n..4n+3
 layout(set = 0, binding = POND_STEP_BINDING_DST1, r32f) uniform restrict writeonly imageBuffer dst1;
-layout(set = 0, binding = POND_STEP_BINDING_DST4, rgba32f) uniform restrict writeonly imageBuffer dst4;
+layout(std430, set = 0, binding = POND_STEP_BINDING_DST4) restrict writeonly buffer Dst4 { vec4 dst4[]; };
 layout(set = 0, binding = POND_STEP_BINDING_KINDS1) uniform usamplerBuffer kinds1;  // R8UI: node n
 layout(set = 0, binding = POND_STEP_BINDING_KINDS4) uniform usamplerBuffer kinds4;  // RGBA8UI: nodes 4n..4n+3
 layout(push_constant) uniform Push { StepPush p; };
@@ -208,12 +211,12 @@ void main_quad() {
     const vec4 ovy = vec4(v1[0].y, v1[1].y, v1[2].y, v1[3].y);
     const vec4 ovz = vec4(v1[0].z, v1[1].z, v1[2].z, v1[3].z);
     if (in_grid) {
-      imageStore(dst4, int(q), ox);
-      imageStore(dst4, int(q4 + q), oy);
-      imageStore(dst4, int(2u * q4 + q), oz);
-      imageStore(dst4, int(3u * q4 + q), ovx);
-      imageStore(dst4, int(4u * q4 + q), ovy);
-      imageStore(dst4, int(5u * q4 + q), ovz);
+      dst4[q] = ox;
+      dst4[q4 + q] = oy;
+      dst4[2u * q4 + q] = oz;
+      dst4[3u * q4 + q] = ovx;
+      dst4[4u * q4 + q] = ovy;
+      dst4[5u * q4 + q] = ovz;
     }
     // Not for shared data: llvmpipe runs the workgroup 8 invocations at a time, and a barrier
     // makes it run row i for all of them before row i+1 (coroutines), so the row is read and

@@ -31,7 +31,7 @@
 #define POND_STEP_BINDING_SRC1 0    // uniform texel buffer, R32_SFLOAT view of the source state
 #define POND_STEP_BINDING_SRC4 1    // uniform texel buffer, R32G32B32A32_SFLOAT view of the source state
 #define POND_STEP_BINDING_DST1 2    // storage texel buffer, R32_SFLOAT view of the destination state
-#define POND_STEP_BINDING_DST4 3    // storage texel buffer, R32G32B32A32_SFLOAT view of the destination
+#define POND_STEP_BINDING_DST4 3    // storage buffer: the destination state as vec4[] (4 floats per element)
 #define POND_STEP_BINDING_KINDS1 4  // uniform texel buffer, R8_UINT view of the kinds (node n = texel n)
 #define POND_STEP_BINDING_KINDS4 5  // uniform texel buffer, R8G8B8A8_UINT view (nodes 4t..4t+3 = texel t)
 #define POND_STEP_BINDINGS 6

@@ -50,7 +50,8 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model)
   using DT = vk::DescriptorType;
   std::vector<DT> step_bindings(POND_STEP_BINDINGS);
   step_bindings[POND_STEP_BINDING_SRC1] = step_bindings[POND_STEP_BINDING_SRC4] = DT::eUniformTexelBuffer;
-  step_bindings[POND_STEP_BINDING_DST1] = step_bindings[POND_STEP_BINDING_DST4] = DT::eStorageTexelBuffer;
+  step_bindings[POND_STEP_BINDING_DST1] = DT::eStorageTexelBuffer;
+  step_bindings[POND_STEP_BINDING_DST4] = DT::eStorageBuffer;
   step_bindings[POND_STEP_BINDING_KINDS1] = step_bindings[POND_STEP_BINDING_KINDS4] = DT::eUniformTexelBuffer;
   step_pipe_ = create_compute_pipeline(ctx_, water_step_spirv(), step_bindings, sizeof(StepPush), step_constants,
                                        fast ? "water_step (fast)" : "water_step (exact)");
@@ -92,9 +93,9 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model)
   kinds_r8_ = view(kinds_, vk::Format::eR8Uint);
   kinds_rgba8_ = view(kinds_, vk::Format::eR8G8B8A8Uint);
 
-  const vk::DescriptorPoolSize sizes[] = {{.type = DT::eStorageBuffer, .descriptorCount = 8},
+  const vk::DescriptorPoolSize sizes[] = {{.type = DT::eStorageBuffer, .descriptorCount = 12},
                                           {.type = DT::eUniformTexelBuffer, .descriptorCount = 8},
-                                          {.type = DT::eStorageTexelBuffer, .descriptorCount = 4}};
+                                          {.type = DT::eStorageTexelBuffer, .descriptorCount = 2}};
   pool_ = vk::raii::DescriptorPool(ctx_.device(), vk::DescriptorPoolCreateInfo{
                                                       .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
                                                       .maxSets = 6, .poolSizeCount = 3, .pPoolSizes = sizes});
@@ -118,9 +119,14 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model)
     views[POND_STEP_BINDING_KINDS1] = *kinds_r8_;
     views[POND_STEP_BINDING_KINDS4] = *kinds_rgba8_;
     std::vector<vk::WriteDescriptorSet> writes;
+    const vk::DescriptorBufferInfo dst_info = state_[1 - c].whole();
     for (std::uint32_t b = 0; b < views.size(); ++b)
-      writes.push_back({.dstSet = *step_sets_[c], .dstBinding = b, .descriptorCount = 1,
-                        .descriptorType = step_bindings[b], .pTexelBufferView = &views[b]});
+      if (step_bindings[b] == DT::eStorageBuffer)
+        writes.push_back({.dstSet = *step_sets_[c], .dstBinding = b, .descriptorCount = 1,
+                          .descriptorType = step_bindings[b], .pBufferInfo = &dst_info});
+      else
+        writes.push_back({.dstSet = *step_sets_[c], .dstBinding = b, .descriptorCount = 1,
+                          .descriptorType = step_bindings[b], .pTexelBufferView = &views[b]});
     ctx_.device().updateDescriptorSets(writes, nullptr);
     write_set(ctx_, perturb_sets_[c], {&state_[c], &table_});
     write_set(ctx_, normals_sets_[c], {&state_[c], &normals_});
