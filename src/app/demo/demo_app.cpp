@@ -27,6 +27,7 @@
 #include "core/output_file.h"
 #include "gpu/context.h"
 #include "gpu/frame_loop.h"
+#include "gpu/tree_drawable.h"
 #include "sim/backends.h"
 #include "sim/scene.h"
 
@@ -119,6 +120,14 @@ class DemoApp final : public ControlTarget {
   void on_pan(double dx, double dy) override { camera_.pan(dx, dy, static_cast<int>(swapchain_.extent().height)); }
   void on_zoom(double steps) override { camera_.zoom(steps); }
   void on_splash(double x, double y, SplashKind kind) override;
+  // The wind tree (when the scene has one): right drag, keys 1-9, double-click.
+  void on_wind_drag(double x0, double y0, double x, double y) override;
+  void on_wind_strength(int digit) override {
+    if (tree_) tree_->set_strength(digit);
+  }
+  void on_new_tree(double /*x*/, double /*y*/) override {
+    if (tree_) tree_->regrow(tree_->spec().seed + 1);
+  }
 
  private:
   static gpu::WindowSurface window_surface(const Window& window) {
@@ -149,6 +158,7 @@ class DemoApp final : public ControlTarget {
   ImGuiRenderer imgui_;
   ScreenshotWriter shots_;
   std::unique_ptr<gpu::FrameLoop> loop_;
+  std::optional<gpu::TreeDrawable> tree_;  // the scene's wind tree; waits for the device when destroyed
   IdleBeforeTeardown idle_;
 
   DemoSettings settings_;
@@ -176,6 +186,14 @@ void DemoApp::build_loop(gpu::SolverChoice solver) {
   sim::Scene scene = apply_modes(base_scene_, settings_.modes);
   scene.physics = settings_.physics;
   loop_ = std::make_unique<gpu::FrameLoop>(ctx_, scene, solver, swapchain_.format());
+  if (scene.tree) {  // drawn before the UI; the controls' changes carry over to the rebuilt loop
+    const sim::TreeSpec spec = tree_ ? tree_->spec() : *scene.tree;
+    const sim::WindSpec wind = tree_ ? tree_->wind() : scene.wind;
+    tree_.reset();
+    tree_.emplace(ctx_, *loop_, spec, wind);
+    tree_->set_manual_clock();  // the water runs faster than real time; the wind runs in real time
+    loop_->add_drawable(*tree_);
+  }
   loop_->add_drawable(imgui_);
   if (carried) {
     constrain(*carried, loop_->model());
@@ -237,6 +255,17 @@ void DemoApp::on_action(Action action) {
       break;
     }
   }
+}
+
+// The wind blows along the drag as seen on screen: right on screen is the camera's right, up on
+// screen is away from the camera (both in the ground plane).
+void DemoApp::on_wind_drag(double x0, double y0, double x, double y) {
+  if (!tree_ || (x == x0 && y == y0)) return;
+  const lod::Camera c = camera_.camera(1, 1);
+  const double fx = c.target[0] - c.eye[0], fz = c.target[2] - c.eye[2];
+  const double right_x = -fz, right_z = fx;  // forward rotated a quarter turn clockwise seen from +y
+  const double wx = (x - x0) * right_x - (y - y0) * fx, wz = (x - x0) * right_z - (y - y0) * fz;
+  tree_->set_wind_direction(std::atan2(wz, wx));
 }
 
 void DemoApp::on_splash(double x, double y, SplashKind kind) {
@@ -400,6 +429,7 @@ int DemoApp::run() {
     stats_.present_mode = vk::to_string(swapchain_.present_mode());
 
     make_rain();
+    if (tree_) tree_->advance_clock(stats_.frame_ms / 1000.0);  // the previous frame's wall time
     draw_ui();
     const bool last_frame = options_.frames > 0 && frame + 1 == options_.frames;
     std::optional<std::string> shot = std::move(pending_shot_);
