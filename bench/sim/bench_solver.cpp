@@ -52,7 +52,7 @@ void BM_Solver(benchmark::State& state) {
 void solver_args(benchmark::internal::Benchmark* b) {
   const int all = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   for (int size : {50, 256, 1024})
-    for (int backend : {0, 1, 2})
+    for (int backend : {0, 1, 2, 3})
       for (int threads : {1, all})
         for (int math : {0, 1}) {
           if (threads == all && all == 1 && threads != 1) continue;
@@ -67,7 +67,7 @@ BENCHMARK(BM_Solver)->Apply(solver_args)->ArgNames({"backend", "size", "threads"
 void sweep_args(benchmark::internal::Benchmark* b) {
   const int all = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   for (int size : {32, 64, 128, 256, 512, 1024, 2048})
-    for (int backend : {0, 1, 2})
+    for (int backend : {0, 1, 2, 3})
       for (int threads : {1, all}) b->Args({backend, size, threads, 0});
 }
 BENCHMARK(BM_Solver)->Name("Sweep")->Apply(sweep_args)->ArgNames({"backend", "size", "threads", "fast"})

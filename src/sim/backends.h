@@ -8,7 +8,7 @@
 
 namespace pond::sim {
 
-enum class Backend { scalar, sse, avx2 };
+enum class Backend { scalar, sse, avx2, avx512 };
 
 // A substep of rows [r0, r1) with a scratch of kSpringRows * kSlots floats.
 using StepRowsFn = float (*)(const StepView&, int r0, int r1, float* scratch);
@@ -16,11 +16,12 @@ using StepRowsFn = float (*)(const StepView&, int r0, int r1, float* scratch);
 // The kernel of one backend for a number of Newton steps (shared::kRsqrtStepsExact or ...Fast).
 StepRowsFn step_rows_scalar(int rsqrt_steps);
 StepRowsFn step_rows_sse2(int rsqrt_steps);
-StepRowsFn step_rows_avx2(int rsqrt_steps);  // nullptr in builds without AVX2 (IA-32)
+StepRowsFn step_rows_avx2(int rsqrt_steps);    // nullptr in builds without AVX2 (IA-32)
+StepRowsFn step_rows_avx512(int rsqrt_steps);  // nullptr in builds without AVX-512 (IA-32)
 
 bool cpu_supports(Backend b);        // compiled in and supported by this CPU
 Backend best_backend();              // the widest supported
-const char* backend_name(Backend b);  // "scalar", "sse", "avx2"
+const char* backend_name(Backend b);  // "scalar", "sse", "avx2", "avx512"
 std::optional<Backend> parse_backend(std::string_view name);
 StepRowsFn step_rows_for(Backend b, int rsqrt_steps);  // throws InputError naming the missing CPU feature
 

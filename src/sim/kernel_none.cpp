@@ -1,6 +1,7 @@
-// Builds without an AVX2 backend (IA-32) link this instead of kernel_avx2.cpp.
+// Builds without the AVX2 and AVX-512 backends (IA-32) link this instead of their kernels.
 #include "sim/backends.h"
 
 namespace pond::sim {
 StepRowsFn step_rows_avx2(int) { return nullptr; }
+StepRowsFn step_rows_avx512(int) { return nullptr; }
 }  // namespace pond::sim

@@ -78,14 +78,20 @@ struct StepKernel {
     return y;
   }
 
+  struct Node {
+    F x, y, z;
+  };
+  POND_KERNEL_INLINE static Node load(const StepView& v, std::size_t n) {
+    return {W::load(v.ux + n), W::load(v.uy + n), W::load(v.uz + n)};
+  }
+
   // The term of spring a->b on node a, b at column offset DJ and row offset DI from a, stored in
   // the three spring rows at `out` (x, y, z).
   template <int DJ, int DI>
-  POND_KERNEL_INLINE static void spring(const StepView& v, std::size_t na, std::size_t nb,
-                                        float rest, float* out) {
-    F dx = W::sub(W::load(v.ux + nb), W::load(v.ux + na));
-    const F dy = W::sub(W::load(v.uy + nb), W::load(v.uy + na));
-    F dz = W::sub(W::load(v.uz + nb), W::load(v.uz + na));
+  POND_KERNEL_INLINE static void spring(const Node& a, const Node& b, float rest, float* out) {
+    F dx = W::sub(b.x, a.x);
+    const F dy = W::sub(b.y, a.y);
+    F dz = W::sub(b.z, a.z);
     if constexpr (DJ != 0) dx = W::add(dx, W::set1(static_cast<float>(DJ)));
     if constexpr (DI != 0) dz = W::add(dz, W::set1(static_cast<float>(DI)));
     const F l2 = W::add(W::add(W::mul(dx, dx), W::mul(dy, dy)), W::mul(dz, dz));
@@ -118,23 +124,30 @@ void block_springs(const StepView& v, int i, int c0, int c1, float* scratch, int
   const int lo = c0 > 0 ? c0 - 1 : 0, hi = c1 - 1 < C - 2 ? c1 - 1 : C - 2;
   const float re = v.k.rest_edge, rd = v.k.rest_diag;
   if (band) {
+    // The four springs of a cell corner from the cell's four nodes, each loaded once. S is also
+    // evaluated at index c0-1 (slot 0, never read); S(C-1), the one spring without a right
+    // neighbour, is evaluated on its own.
     for_chunks<W>(lo, hi + 1, [&]<class V>(int j) {
       using K = StepKernel<V, Steps>;
-      const std::size_t n = row + j, up = n + C;
-      const int s = j + slot0;
-      K::template spring<1, 0>(v, n, n + 1, re, h + s);                      // H:  (i,j) -> (i,j+1)
-      K::template spring<1, 1>(v, n, up + 1, rd, b + kBandD1 * kSlots + s);  // D1: (i,j) -> (i+1,j+1)
-      K::template spring<-1, 1>(v, n + 1, up, rd, b + kBandD2 * kSlots + s);  // D2: (i,j+1) -> (i+1,j)
-    });
-    for_chunks<W>(c0, c1, [&]<class V>(int j) {
       const std::size_t n = row + j;
-      StepKernel<V, Steps>::template spring<0, 1>(v, n, n + C, re, b + kBandS * kSlots + j + slot0);  // S
-
+      const auto a = K::load(v, n), e = K::load(v, n + 1), u = K::load(v, n + C),
+                 ue = K::load(v, n + C + 1);
+      const int s = j + slot0;
+      K::template spring<1, 0>(a, e, re, h + s);                      // H:  (i,j) -> (i,j+1)
+      K::template spring<0, 1>(a, u, re, b + kBandS * kSlots + s);    // S:  (i,j) -> (i+1,j)
+      K::template spring<1, 1>(a, ue, rd, b + kBandD1 * kSlots + s);  // D1: (i,j) -> (i+1,j+1)
+      K::template spring<-1, 1>(e, u, rd, b + kBandD2 * kSlots + s);  // D2: (i,j+1) -> (i+1,j)
     });
+    if (c1 == C) {
+      using K = StepKernel<WideScalar, Steps>;
+      const std::size_t n = row + C - 1;
+      K::template spring<0, 1>(K::load(v, n), K::load(v, n + C), re, b + kBandS * kSlots + C - 1 + slot0);
+    }
   } else {
     for_chunks<W>(lo, hi + 1, [&]<class V>(int j) {
+      using K = StepKernel<V, Steps>;
       const std::size_t n = row + j;
-      StepKernel<V, Steps>::template spring<1, 0>(v, n, n + 1, re, h + j + slot0);
+      K::template spring<1, 0>(K::load(v, n), K::load(v, n + 1), re, h + j + slot0);
     });
     fill_band(scratch, cur, c1 - c0, -0.0f);
   }

@@ -20,7 +20,7 @@ constexpr std::uint64_t kGoldenDefaultScene1000 = 0x338fc857b8648871ull;
 
 std::vector<Backend> available() {
   std::vector<Backend> out;
-  for (Backend b : {Backend::scalar, Backend::sse, Backend::avx2})
+  for (Backend b : {Backend::scalar, Backend::sse, Backend::avx2, Backend::avx512})
     if (cpu_supports(b)) out.push_back(b);
   return out;
 }

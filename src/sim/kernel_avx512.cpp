@@ -1,0 +1,11 @@
+// Built with -mavx512f (see src/sim/CMakeLists.txt); only called after a run-time CPU check.
+#include "sim/backends.h"
+#include "sim/step_kernel.h"
+#include "sim/wide_avx512.h"
+
+namespace pond::sim {
+StepRowsFn step_rows_avx512(int rsqrt_steps) {
+  return rsqrt_steps == shared::kRsqrtStepsFast ? &step_rows<WideAvx512, shared::kRsqrtStepsFast>
+                                                : &step_rows<WideAvx512, shared::kRsqrtStepsExact>;
+}
+}  // namespace pond::sim

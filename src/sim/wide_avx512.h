@@ -1,0 +1,48 @@
+#pragma once
+// The AVX-512 backend of the wide-float operation table: 16 floats per operation. Compiled only in
+// the translation unit built with -mavx512f; no FMA intrinsic is used and -ffp-contract=off keeps
+// the compiler from fusing, so the bits equal every other backend's.
+#include <cstdint>
+#include <immintrin.h>
+
+#include "sim/isa_namespace.h"
+
+namespace pond::sim {
+inline namespace POND_ISA {
+
+struct WideAvx512 {
+  static constexpr int width = 16;
+  using F = __m512;
+  using M = __mmask16;
+
+  static F load(const float* p) { return _mm512_loadu_ps(p); }
+  static void store(float* p, F v) { _mm512_storeu_ps(p, v); }
+  static F set1(float v) { return _mm512_set1_ps(v); }
+  static F add(F a, F b) { return _mm512_add_ps(a, b); }
+  static F sub(F a, F b) { return _mm512_sub_ps(a, b); }
+  static F mul(F a, F b) { return _mm512_mul_ps(a, b); }
+  static F neg(F a) {
+    return _mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(a), _mm512_set1_epi32(INT32_MIN)));
+  }
+  static F rsqrt_seed(F x, std::uint32_t magic) {
+    // The masked form: GCC 12 warns (falsely) about the undefined pass-through of the plain one.
+    const __m512i bits = _mm512_maskz_srli_epi32(0xffff, _mm512_castps_si512(x), 1);
+    return _mm512_castsi512_ps(_mm512_sub_epi32(_mm512_set1_epi32(static_cast<int>(magic)), bits));
+  }
+  static M kind_below(const std::uint8_t* kinds, std::uint8_t limit) {
+    const __m512i k =
+        _mm512_maskz_cvtepu8_epi32(0xffff, _mm_loadu_si128(reinterpret_cast<const __m128i*>(kinds)));
+    return _mm512_cmplt_epi32_mask(k, _mm512_set1_epi32(limit));
+  }
+  static F keep(M m, F v) { return _mm512_maskz_mov_ps(m, v); }  // +0 where not m
+  static float sum_lanes(F v) {
+    alignas(64) float l[16];
+    _mm512_store_ps(l, v);
+    float s = 0.0f;
+    for (float x : l) s += x;
+    return s;
+  }
+};
+
+}  // namespace POND_ISA
+}  // namespace pond::sim
