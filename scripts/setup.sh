@@ -11,6 +11,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev libmeshoptimizer-dev
   xvfb xauth gcc-multilib g++-multilib
   gnuplot-nox
+  clang-14 libclang-rt-14-dev  # scripts/fuzz.sh: libFuzzer and clang's ASan/UBSan runtimes
 )
 
 missing=()

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs every test: the release build (CPU, GPU on lavapipe with the validation
-# layer, the IA-32 golden hash, CLI), then the CPU tests again under AddressSanitizer and
-# UndefinedBehaviorSanitizer. Exits non-zero on the first failure.
+# layer, the IA-32 golden hash, CLI, faults), then the CPU tests again under AddressSanitizer and
+# UndefinedBehaviorSanitizer, then each libFuzzer target for a short time on its committed corpus
+# (FUZZ_SECONDS, default 20 here; scripts/fuzz.sh). The soak (label soak, ~12 min) is left
+# out: scripts/soak.sh runs it. Exits non-zero on the first failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -16,4 +18,6 @@ cmake --build --preset sanitize -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --preset sanitize -j "$jobs"
 
-ctest --preset release -j "$jobs"
+ctest --preset release -j "$jobs" -LE soak
+
+FUZZ_SECONDS=${FUZZ_SECONDS:-20} FUZZ_JOBS=$jobs scripts/fuzz.sh

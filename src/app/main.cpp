@@ -1,33 +1,24 @@
 // pond: parses the command line and dispatches to one subcommand. Errors are exceptions caught here
 // once: bad input (InputError, CLI11 parse errors) exits 2, run-time failures exit 1, each with one
-// line on stderr.
+// line on stderr; a command stopped by SIGINT or SIGTERM exits 128 + the signal (app/interrupt.h).
 #include <cstdio>
 #include <exception>
 #include <new>
 #include <string>
-#include <vector>
 
-#include "app/commands.h"
+#include "app/command_line.h"
+#include "app/interrupt.h"
 #include "core/errors.h"
 
 int main(int argc, char** argv) {
-  CLI::App app{"pond: a spring-mass water surface and a tree in the wind, on Vulkan compute", "pond"};
-  app.require_subcommand(0, 1);
   try {
-    using namespace pond::app;
-    const std::vector<Command> commands = {add_demo_command(app), add_simulate_command(app),
-                                           add_render_command(app), add_lod_command(app),
-                                           add_tree_command(app)};
-    try {
-      app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-      if (e.get_exit_code() == 0) return app.exit(e);  // --help
-      std::fprintf(stderr, "pond: %s\n", e.what());
-      return 2;
-    }
-    for (const Command& c : commands)
-      if (c.sub && c.sub->parsed()) return c.run();
-    return commands.front().run();  // no subcommand: the demo
+    pond::app::CommandLine command_line;
+    const pond::app::CommandLine::Parsed parsed = command_line.parse(argc, argv);
+    if (!parsed.command) return parsed.exit_code;
+    return parsed.command->run();
+  } catch (const pond::app::Interrupted& e) {  // SIGINT/SIGTERM: 128 + the signal, as a shell reports it
+    std::fprintf(stderr, "pond: %s\n", e.what());
+    return 128 + e.signal;
   } catch (const pond::InputError& e) {
     std::fprintf(stderr, "pond: %s\n", e.what());
     return 2;

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
@@ -23,6 +24,18 @@ void check_output_path(const fs::path& path) {
     throw InputError("output path '" + path.string() + "' is a folder");
   if (::access(folder.c_str(), W_OK) != 0)
     throw InputError("output folder '" + folder.string() + "' is not writable");
+  // access() says yes to root everywhere but on read-only mounts, and procfs or sysfs refuse new
+  // files whatever it says: so try to create one (unless the target is an existing device or pipe,
+  // written in place), so that an unwritable folder fails now and as bad input, not after the run.
+  if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) return;
+  const fs::path probe = folder / (".pond-probe." + std::to_string(::getpid()));
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (const int err = fd < 0 ? errno : 0; err && err != EEXIST)
+    throw InputError("output folder '" + folder.string() + "' is not writable: " + std::strerror(err));
+  if (fd >= 0) {
+    ::close(fd);
+    ::unlink(probe.c_str());
+  }
 }
 
 namespace {
