@@ -18,6 +18,7 @@ cmake --build --preset sanitize -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --preset sanitize -j "$jobs"
 
-ctest --preset release -j "$jobs" -LE soak
-
 FUZZ_SECONDS=${FUZZ_SECONDS:-20} FUZZ_JOBS=$jobs scripts/fuzz.sh
+
+# Last, so its summary closes the output.
+ctest --preset release -j "$jobs" -LE soak
