@@ -1,5 +1,6 @@
 #include "gpu/tree_pipeline.h"
 
+#include "gpu/graphics_pipeline.h"
 #include "shared/tree_render.h"
 
 namespace pond::gpu {
@@ -9,17 +10,8 @@ namespace {
 
 namespace sh = shared::tree_wind;
 
-vk::raii::ShaderModule module(const Context& ctx, std::span<const std::uint32_t> spirv) {
-  return vk::raii::ShaderModule(ctx.device(), vk::ShaderModuleCreateInfo{.codeSize = spirv.size_bytes(),
-                                                                         .pCode = spirv.data()});
-}
-
 vk::raii::Pipeline create(const Context& ctx, const vk::raii::PipelineLayout& layout, vk::Format color,
                           vk::Format depth, bool lines, const char* name) {
-  const vk::raii::ShaderModule vs = module(ctx, tree_vert_spirv()), fs = module(ctx, tree_frag_spirv());
-  const vk::PipelineShaderStageCreateInfo stages[] = {
-      {.stage = vk::ShaderStageFlagBits::eVertex, .module = *vs, .pName = "main"},
-      {.stage = vk::ShaderStageFlagBits::eFragment, .module = *fs, .pName = "main"}};
   using V = sh::TreeMeshVertex;
   const vk::VertexInputBindingDescription binding{.binding = 0, .stride = sizeof(V),
                                                   .inputRate = vk::VertexInputRate::eVertex};
@@ -46,36 +38,17 @@ vk::raii::Pipeline create(const Context& ctx, const vk::raii::PipelineLayout& la
                                                             .pVertexAttributeDescriptions = attributes};
   const vk::PipelineInputAssemblyStateCreateInfo assembly{
       .topology = lines ? vk::PrimitiveTopology::eLineList : vk::PrimitiveTopology::eTriangleList};
-  const vk::PipelineViewportStateCreateInfo viewport{.viewportCount = 1, .scissorCount = 1};
   const vk::PipelineRasterizationStateCreateInfo raster{.polygonMode = vk::PolygonMode::eFill,
                                                         .cullMode = vk::CullModeFlagBits::eNone,
                                                         .frontFace = vk::FrontFace::eCounterClockwise,
                                                         .lineWidth = 1.0f};
-  const vk::PipelineMultisampleStateCreateInfo multisample{.rasterizationSamples = vk::SampleCountFlagBits::e1};
   const vk::PipelineDepthStencilStateCreateInfo depth_state{
       .depthTestEnable = VK_TRUE, .depthWriteEnable = VK_TRUE, .depthCompareOp = vk::CompareOp::eLessOrEqual};
   using CC = vk::ColorComponentFlagBits;
   const vk::PipelineColorBlendAttachmentState blend{.colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
-  const vk::PipelineColorBlendStateCreateInfo blending{.attachmentCount = 1, .pAttachments = &blend};
-  const vk::DynamicState dynamic_states[] = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
-  const vk::PipelineDynamicStateCreateInfo dynamic{.dynamicStateCount = 2, .pDynamicStates = dynamic_states};
-  const vk::PipelineRenderingCreateInfo rendering{.colorAttachmentCount = 1, .pColorAttachmentFormats = &color,
-                                                  .depthAttachmentFormat = depth};
-  const vk::GraphicsPipelineCreateInfo info{.pNext = &rendering,
-                                            .stageCount = 2,
-                                            .pStages = stages,
-                                            .pVertexInputState = &vertex_input,
-                                            .pInputAssemblyState = &assembly,
-                                            .pViewportState = &viewport,
-                                            .pRasterizationState = &raster,
-                                            .pMultisampleState = &multisample,
-                                            .pDepthStencilState = &depth_state,
-                                            .pColorBlendState = &blending,
-                                            .pDynamicState = &dynamic,
-                                            .layout = *layout};
-  vk::raii::Pipeline pipeline(ctx.device(), nullptr, info);
-  ctx.name(pipeline, name);
-  return pipeline;
+  return create_graphics_pipeline(ctx, layout, color, depth,
+                                  {tree_vert_spirv(), tree_frag_spirv(), vertex_input, assembly, raster,
+                                   depth_state, blend, name});
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <span>
 
+#include "gpu/graphics_pipeline.h"
 #include "gpu/render_layout.h"
 #include "gpu/render_shaders.h"
 
@@ -15,17 +16,8 @@ struct PipelineSpec {
   const char* name;
 };
 
-vk::raii::ShaderModule module(const Context& ctx, std::span<const std::uint32_t> spirv) {
-  return vk::raii::ShaderModule(ctx.device(), vk::ShaderModuleCreateInfo{.codeSize = spirv.size_bytes(),
-                                                                         .pCode = spirv.data()});
-}
-
 vk::raii::Pipeline create(const Context& ctx, const vk::raii::PipelineLayout& layout, vk::Format color,
                           vk::Format depth, const PipelineSpec& s) {
-  const vk::raii::ShaderModule vs = module(ctx, s.vert), fs = module(ctx, s.frag);
-  const vk::PipelineShaderStageCreateInfo stages[] = {
-      {.stage = vk::ShaderStageFlagBits::eVertex, .module = *vs, .pName = "main"},
-      {.stage = vk::ShaderStageFlagBits::eFragment, .module = *fs, .pName = "main"}};
   const vk::VertexInputBindingDescription binding{.binding = 0, .stride = sizeof(LandVertex),
                                                   .inputRate = vk::VertexInputRate::eVertex};
   const vk::VertexInputAttributeDescription attributes[] = {
@@ -38,7 +30,6 @@ vk::raii::Pipeline create(const Context& ctx, const vk::raii::PipelineLayout& la
                                                                .pVertexAttributeDescriptions = attributes}
                       : vk::PipelineVertexInputStateCreateInfo{};
   const vk::PipelineInputAssemblyStateCreateInfo assembly{.topology = vk::PrimitiveTopology::eTriangleList};
-  const vk::PipelineViewportStateCreateInfo viewport{.viewportCount = 1, .scissorCount = 1};
   // Lines: pulled towards the camera by a bias proportional to the slope, so they win over the
   // surface they lie on without showing through waves in front.
   const vk::PipelineRasterizationStateCreateInfo raster{
@@ -49,7 +40,6 @@ vk::raii::Pipeline create(const Context& ctx, const vk::raii::PipelineLayout& la
       .depthBiasConstantFactor = s.lines ? -2.0f : 0.0f,
       .depthBiasSlopeFactor = s.lines ? -1.5f : 0.0f,
       .lineWidth = 1.0f};
-  const vk::PipelineMultisampleStateCreateInfo multisample{.rasterizationSamples = vk::SampleCountFlagBits::e1};
   const vk::PipelineDepthStencilStateCreateInfo depth_state{
       .depthTestEnable = VK_TRUE, .depthWriteEnable = s.lines ? VK_FALSE : VK_TRUE,
       .depthCompareOp = vk::CompareOp::eLessOrEqual};
@@ -61,26 +51,8 @@ vk::raii::Pipeline create(const Context& ctx, const vk::raii::PipelineLayout& la
       .srcAlphaBlendFactor = vk::BlendFactor::eZero, .dstAlphaBlendFactor = vk::BlendFactor::eOne,
       .alphaBlendOp = vk::BlendOp::eAdd,
       .colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
-  const vk::PipelineColorBlendStateCreateInfo blending{.attachmentCount = 1, .pAttachments = &blend};
-  const vk::DynamicState dynamic_states[] = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
-  const vk::PipelineDynamicStateCreateInfo dynamic{.dynamicStateCount = 2, .pDynamicStates = dynamic_states};
-  const vk::PipelineRenderingCreateInfo rendering{.colorAttachmentCount = 1, .pColorAttachmentFormats = &color,
-                                                  .depthAttachmentFormat = depth};
-  const vk::GraphicsPipelineCreateInfo info{.pNext = &rendering,
-                                            .stageCount = 2,
-                                            .pStages = stages,
-                                            .pVertexInputState = &vertex_input,
-                                            .pInputAssemblyState = &assembly,
-                                            .pViewportState = &viewport,
-                                            .pRasterizationState = &raster,
-                                            .pMultisampleState = &multisample,
-                                            .pDepthStencilState = &depth_state,
-                                            .pColorBlendState = &blending,
-                                            .pDynamicState = &dynamic,
-                                            .layout = *layout};
-  vk::raii::Pipeline pipeline(ctx.device(), nullptr, info);
-  ctx.name(pipeline, s.name);
-  return pipeline;
+  return create_graphics_pipeline(ctx, layout, color, depth,
+                                  {s.vert, s.frag, vertex_input, assembly, raster, depth_state, blend, s.name});
 }
 
 }  // namespace

@@ -1,0 +1,42 @@
+#include "gpu/graphics_pipeline.h"
+
+namespace pond::gpu {
+namespace {
+vk::raii::ShaderModule module(const Context& ctx, std::span<const std::uint32_t> spirv) {
+  return vk::raii::ShaderModule(ctx.device(), vk::ShaderModuleCreateInfo{.codeSize = spirv.size_bytes(),
+                                                                         .pCode = spirv.data()});
+}
+}  // namespace
+
+vk::raii::Pipeline create_graphics_pipeline(const Context& ctx, const vk::raii::PipelineLayout& layout,
+                                            vk::Format color, vk::Format depth,
+                                            const GraphicsPipelineDesc& d) {
+  const vk::raii::ShaderModule vs = module(ctx, d.vert), fs = module(ctx, d.frag);
+  const vk::PipelineShaderStageCreateInfo stages[] = {
+      {.stage = vk::ShaderStageFlagBits::eVertex, .module = *vs, .pName = "main"},
+      {.stage = vk::ShaderStageFlagBits::eFragment, .module = *fs, .pName = "main"}};
+  const vk::PipelineViewportStateCreateInfo viewport{.viewportCount = 1, .scissorCount = 1};
+  const vk::PipelineMultisampleStateCreateInfo multisample{.rasterizationSamples = vk::SampleCountFlagBits::e1};
+  const vk::PipelineColorBlendStateCreateInfo blending{.attachmentCount = 1, .pAttachments = &d.blend};
+  const vk::DynamicState dynamic_states[] = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
+  const vk::PipelineDynamicStateCreateInfo dynamic{.dynamicStateCount = 2, .pDynamicStates = dynamic_states};
+  const vk::PipelineRenderingCreateInfo rendering{.colorAttachmentCount = 1, .pColorAttachmentFormats = &color,
+                                                  .depthAttachmentFormat = depth};
+  const vk::GraphicsPipelineCreateInfo info{.pNext = &rendering,
+                                            .stageCount = 2,
+                                            .pStages = stages,
+                                            .pVertexInputState = &d.vertex_input,
+                                            .pInputAssemblyState = &d.assembly,
+                                            .pViewportState = &viewport,
+                                            .pRasterizationState = &d.raster,
+                                            .pMultisampleState = &multisample,
+                                            .pDepthStencilState = &d.depth,
+                                            .pColorBlendState = &blending,
+                                            .pDynamicState = &dynamic,
+                                            .layout = *layout};
+  vk::raii::Pipeline pipeline(ctx.device(), nullptr, info);
+  ctx.name(pipeline, d.name);
+  return pipeline;
+}
+
+}  // namespace pond::gpu
