@@ -353,7 +353,7 @@ void DemoApp::draw_ui() {
   io.DisplayFramebufferScale = ImVec2(1, 1);
   ImGui::NewFrame();
   PanelRequests req;
-  if (settings_.show_panel) req = draw_panel(settings_, stats_, loop_->scene());
+  if (settings_.show_panel) req = draw_panel(settings_, stats_, loop_->scene(), tree_ ? &*tree_ : nullptr);
   if (settings_.show_help) draw_help_overlay(settings_.show_help);
   ImGui::Render();
   apply_requests(req);

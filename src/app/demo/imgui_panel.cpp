@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "app/demo/controls.h"
 #include "sim/stability.h"
@@ -14,9 +15,38 @@ bool input_double(const char* label, double& value, double step, const char* for
   return ImGui::InputDouble(label, &value, step, step * 10, format);
 }
 
+// The wind tree: the same controls as right drag, keys 1-9 and double-click.
+void draw_tree_section(gpu::TreeDrawable& tree) {
+  if (!ImGui::CollapsingHeader("Wind tree", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  float strength = static_cast<float>(tree.wind().strength);
+  if (ImGui::SliderFloat("wind strength (1-9)", &strength, 0.0f, 9.0f, "%.1f")) tree.set_strength(strength);
+  float direction = static_cast<float>(tree.wind().direction_deg);
+  if (ImGui::SliderFloat("wind direction (right drag)", &direction, -180.0f, 180.0f, "%.0f deg"))
+    tree.set_wind_direction(direction * std::numbers::pi / 180.0);
+  int bend = tree.spec().bend == sim::TreeBend::article ? 0 : 1;
+  ImGui::Text("bend:");
+  ImGui::SameLine();
+  bool bend_changed = ImGui::RadioButton("article", &bend, 0);
+  ImGui::SameLine();
+  bend_changed |= ImGui::RadioButton("keep length", &bend, 1);
+  if (bend_changed) tree.set_bend_mode(bend == 0 ? sim::TreeBend::article : sim::TreeBend::keep_length);
+  int draw = tree.spec().draw == sim::TreeDraw::lines ? 0 : 1;
+  ImGui::Text("draw:");
+  ImGui::SameLine();
+  bool draw_changed = ImGui::RadioButton("lines", &draw, 0);
+  ImGui::SameLine();
+  draw_changed |= ImGui::RadioButton("tubes", &draw, 1);
+  if (draw_changed) tree.set_draw_mode(draw == 0 ? sim::TreeDraw::lines : sim::TreeDraw::tubes);
+  bool leaves = tree.spec().leaves;
+  if (ImGui::Checkbox("leaves", &leaves)) tree.set_leaves(leaves);
+  ImGui::SameLine();
+  if (ImGui::Button("new tree (double-click)")) tree.regrow(tree.spec().seed + 1);
+}
+
 }  // namespace
 
-PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, const sim::Scene& scene) {
+PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, const sim::Scene& scene,
+                         gpu::TreeDrawable* tree) {
   PanelRequests req;
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
@@ -101,6 +131,7 @@ PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, const sim::Sce
     input_double("drops / frame", s.rain.drops_per_frame, 0.1, "%.2f");
     input_double("drop velocity", s.rain.amplitude, 0.1, "%.2f");
   }
+  if (tree) draw_tree_section(*tree);
   if (!s.message.empty()) ImGui::TextWrapped("%s", s.message.c_str());
   ImGui::End();
   return req;

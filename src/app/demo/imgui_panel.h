@@ -1,7 +1,8 @@
 #pragma once
 // The ImGui windows of the demo: the control panel (physics with the stability bound, steps per
-// frame, LOD tolerance, splash and rain settings, stats) and the help overlay listing the keys.
+// frame, LOD tolerance, splash and rain settings, the wind tree, stats) and the help overlay.
 #include "app/demo/demo_settings.h"
+#include "gpu/tree_drawable.h"
 
 namespace pond::app::demo {
 
@@ -14,8 +15,10 @@ struct PanelRequests {
   bool reset_camera = false;
 };
 
-// Builds this frame's windows (between ImGui::NewFrame and ImGui::Render).
-PanelRequests draw_panel(DemoSettings& settings, const DemoStats& stats, const sim::Scene& scene);
+// Builds this frame's windows (between ImGui::NewFrame and ImGui::Render). `tree` is the scene's
+// wind tree, or null: its controls act on it directly (they only change what the next frame uses).
+PanelRequests draw_panel(DemoSettings& settings, const DemoStats& stats, const sim::Scene& scene,
+                         gpu::TreeDrawable* tree);
 void draw_help_overlay(bool& open);
 
 }  // namespace pond::app::demo
