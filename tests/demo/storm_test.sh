@@ -1,0 +1,49 @@
+#!/bin/sh
+# A swapchain storm: the demo under a virtual X server with the validation layer, resized on every
+# one of 200 frames (sizes from 64x48 to 1280x720, a 1x1 window among them) while vsync is toggled
+# every 7 frames and splashes keep the water busy. It must exit 0 with no validation message
+# (the demo exits non-zero on any) and leave a final screenshot of the scene; the process's peak
+# RSS must not grow with the number of recreations (compared with a 40-frame storm).
+# Usage: storm_test.sh PATH/TO/pond WORKDIR
+set -u
+pond=$1
+work=$2
+rm -rf "$work" && mkdir -p "$work" || exit 1
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+storm() {  # storm FRAMES SCRIPT
+  frames=$1 out=$2
+  : > "$out"
+  f=0
+  while [ $f -lt "$frames" ]; do
+    w=$(( 64 + (f * 397) % 1217 )); h=$(( 48 + (f * 211) % 673 ))
+    [ $((f % 50)) -eq 25 ] && { w=1; h=1; }
+    echo "frame $f resize $w $h" >> "$out"
+    [ $((f % 7)) -eq 3 ] && echo "frame $f key F3" >> "$out"
+    [ $((f % 11)) -eq 5 ] && echo "frame $f click $((w / 2)) $((h / 2))" >> "$out"
+    f=$((f + 1))
+  done
+  echo "frame $((frames - 1)) resize 320 200" >> "$out"
+}
+
+run() {  # run FRAMES NAME: prints the peak RSS in KiB
+  storm "$1" "$work/$2.script"
+  xvfb-run -a -s "-screen 0 1400x900x24" /usr/bin/time -f "%M" -o "$work/$2.rss" \
+    "$pond" demo --frames "$1" --size 320x200 --script "$work/$2.script" --validation --quiet \
+    --screenshot "$work/$2.png" > "$work/$2.out" 2>&1
+  rc=$?
+  [ $rc -eq 0 ] || fail "$2: exit $rc: $(tail -n 5 "$work/$2.out")"
+  [ "$(wc -c < "$work/$2.png" 2> /dev/null || echo 0)" -gt 1000 ] || fail "$2: no screenshot"
+  tail -n 1 "$work/$2.rss"
+}
+
+short=$(run 40 short)
+long=$(run 200 long)
+echo "peak RSS: 40-frame storm ${short} KiB, 200-frame storm ${long} KiB"
+case "$short$long" in *[!0-9]*|"") fail "could not read the peak RSS ($short, $long)" ;; *)
+  [ "$long" -le $((short + 32768)) ] || fail "peak RSS grew by more than 32 MiB: $short -> $long KiB" ;;
+esac
+
+if [ $failures -eq 0 ]; then echo "swapchain storm passed"; exit 0; fi
+exit 1
