@@ -1,8 +1,8 @@
 // Golden images of the water renderer on lavapipe (labels image, gpu), validation on (any message
 // fails). Each case renders 256x160 through the same FrameLoop `pond render` and the demo use.
 //
-// Tolerance: an image matches its golden when at most kShare of its pixels differ by more than
-// kLevels (of 255) in some channel; a failure writes <name>.actual.png and <name>.diff.png (red =
+// Tolerance: an image matches its golden when at most kGoldenShare of its pixels differ by more than
+// kGoldenLevels (of 255) in some channel; a failure writes <name>.actual.png and <name>.diff.png (red =
 // differing) into the build tree's tests/render/out. Regenerate after a deliberate change:
 //   POND_REGENERATE_GOLDENS=1 ctest --test-dir <build> -L image
 #include <cstdlib>
@@ -13,6 +13,7 @@
 #include "gpu/png.h"
 #include "gpu/render_target.h"
 #include "gpu_fixture.h"
+#include "golden.h"
 #include "image_compare.h"
 #include "sim/scene.h"
 
@@ -20,8 +21,6 @@ namespace pond::test {
 namespace {
 
 constexpr int kWidth = 256, kHeight = 160;
-constexpr int kLevels = 4;        // channel difference still counted as equal
-constexpr double kShare = 0.005;  // share of pixels allowed to differ by more
 // LOD at 1 px against the full mesh (same state, same camera): at most this share of pixels differs
 // by more than kLodLevels. A 1 px error bound moves edges and shading by about a pixel.
 constexpr int kLodLevels = 16;
@@ -67,28 +66,6 @@ class RenderTest : public GpuTest {
     view.wait = true;
     last_ = loop.frame(target.frame_target(), view);
     return Rgba{kWidth, kHeight, target.read_rgba()};
-  }
-
-  void expect_golden(const std::string& name, const Rgba& img) {
-    const std::filesystem::path golden = std::filesystem::path(POND_GOLDEN_DIR) / (name + ".png");
-    const std::filesystem::path out = POND_TEST_OUT_DIR;
-    std::filesystem::create_directories(out);
-    gpu::write_png(out / (name + ".actual.png"), img.width, img.height, img.pixels);
-    if (std::getenv("POND_REGENERATE_GOLDENS")) {
-      gpu::write_png(golden, img.width, img.height, img.pixels);
-      std::printf("regenerated %s\n", golden.c_str());
-      return;
-    }
-    const Rgba expected = read_png(golden);
-    ASSERT_GT(expected.width, 0) << "missing golden " << golden
-                                 << "; regenerate: POND_REGENERATE_GOLDENS=1 ctest --test-dir <build> -L image";
-    const ImageDiff d = compare(expected, img, kLevels);
-    if (d.share > kShare) {
-      if (d.diff.width) gpu::write_png(out / (name + ".diff.png"), d.diff.width, d.diff.height, d.diff.pixels);
-      ADD_FAILURE() << name << ": " << 100 * d.share << "% of pixels differ by more than " << kLevels
-                    << " levels (allowed " << 100 * kShare << "%), max difference " << d.max_difference
-                    << "; see " << (out / (name + ".diff.png")) << " and .actual.png";
-    }
   }
 
   gpu::FrameStats last_;

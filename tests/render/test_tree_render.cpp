@@ -24,6 +24,7 @@
 #include "gpu/tree_mesh.h"
 #include "gpu/tree_ripples.h"
 #include "gpu_fixture.h"
+#include "golden.h"
 #include "image_compare.h"
 #include "shared/tree_render.h"
 #include "sim/scene.h"
@@ -38,8 +39,6 @@ namespace {
 namespace sh = shared::tree_wind;
 
 constexpr int kWidth = 256, kHeight = 160;
-constexpr int kLevels = 4;
-constexpr double kShare = 0.005;
 
 // ---- Parity --------------------------------------------------------------------------------------
 
@@ -176,28 +175,6 @@ class TreeRenderTest : public GpuTest {
     EXPECT_NEAR(tree.wind_time(), static_cast<double>(steps) * scene.physics.dt, 1e-9);
     return Rgba{kWidth, kHeight, target.read_rgba()};
   }
-
-  void expect_golden(const std::string& name, const Rgba& img) {
-    const std::filesystem::path golden = std::filesystem::path(POND_GOLDEN_DIR) / (name + ".png");
-    const std::filesystem::path out = POND_TEST_OUT_DIR;
-    std::filesystem::create_directories(out);
-    gpu::write_png(out / (name + ".actual.png"), img.width, img.height, img.pixels);
-    if (std::getenv("POND_REGENERATE_GOLDENS")) {
-      gpu::write_png(golden, img.width, img.height, img.pixels);
-      std::printf("regenerated %s\n", golden.c_str());
-      return;
-    }
-    const Rgba expected = read_png(golden);
-    ASSERT_GT(expected.width, 0) << "missing golden " << golden
-                                 << "; regenerate: POND_REGENERATE_GOLDENS=1 ctest --test-dir <build> -L image";
-    const ImageDiff d = compare(expected, img, kLevels);
-    if (d.share > kShare) {
-      if (d.diff.width) gpu::write_png(out / (name + ".diff.png"), d.diff.width, d.diff.height, d.diff.pixels);
-      ADD_FAILURE() << name << ": " << 100 * d.share << "% of pixels differ by more than " << kLevels
-                    << " levels (allowed " << 100 * kShare << "%), max difference " << d.max_difference << "; see "
-                    << (out / (name + ".diff.png")) << " and .actual.png";
-    }
-  }
 };
 
 constexpr std::int64_t kWindSteps = 25;  // 10 s of wind: the inertial wind has caught up with the gusts
@@ -218,9 +195,9 @@ TEST_F(TreeRenderTest, KeepLengthBend) {
   const std::string keep = R"({"depth": 7, "draw": "tubes", "leaves": true, "bend": "keep-length"})";
   const Rgba img = render(tree_scene(keep, kWind), kWindSteps);
   expect_golden("tree_tubes_wind_keep_length", img);
-  EXPECT_GT(compare(render(tree_scene(kTubes, kWind), kWindSteps), img, kLevels).share, 0.002);
-  EXPECT_LE(compare(render(tree_scene(kTubes, kCalm), kWindSteps), render(tree_scene(keep, kCalm), kWindSteps), kLevels).share,
-            kShare);
+  EXPECT_GT(compare(render(tree_scene(kTubes, kWind), kWindSteps), img, kGoldenLevels).share, 0.002);
+  EXPECT_LE(compare(render(tree_scene(kTubes, kCalm), kWindSteps), render(tree_scene(keep, kCalm), kWindSteps), kGoldenLevels).share,
+            kGoldenShare);
 }
 
 // Wind moves the tree: the calm and windy pictures differ, and so do two times in the wind.
@@ -228,8 +205,8 @@ TEST_F(TreeRenderTest, WindMovesTheTreeOverTime) {
   const Rgba calm = render(tree_scene(kLines, kCalm), kWindSteps);
   const Rgba a = render(tree_scene(kLines, kWind), kWindSteps);
   const Rgba b = render(tree_scene(kLines, kWind), kWindSteps + 3);
-  EXPECT_GT(compare(calm, a, kLevels).share, 0.002);
-  EXPECT_GT(compare(a, b, kLevels).share, 0.0005);
+  EXPECT_GT(compare(calm, a, kGoldenLevels).share, 0.002);
+  EXPECT_GT(compare(a, b, kGoldenLevels).share, 0.0005);
 }
 
 // Two instances of the same tree under the same wind sway out of step (instance_phase).
@@ -275,7 +252,7 @@ TEST_F(TreeRenderTest, ControlsAndRegrow) {
   EXPECT_NEAR(tree.wind_time(), 2.0 + 0.4, 1e-9);  // the first frame's step, then 2 s by hand
   EXPECT_EQ(tree.wind_frames().at(0).bend_mode, sh::kTreeBendKeepLength);
   const Rgba after{kWidth, kHeight, target.read_rgba()};
-  EXPECT_GT(compare(before, after, kLevels).share, 0.002);
+  EXPECT_GT(compare(before, after, kGoldenLevels).share, 0.002);
   const std::size_t vertices = tree.tree().size();
   const float y = tree.tree().vertices.back().position.y;
   tree.regrow(99);
