@@ -207,9 +207,10 @@ void GpuSolver::advance(std::int64_t steps) {
   }
 }
 
-sim::WaterState GpuSolver::read_state() const {
-  const Buffer& src = state_[cur_];
-  const Buffer staging = create_buffer(ctx_, src.size, BU::eTransferDst, MemoryUse::readback, "state readback");
+// Copies `src` into a new host-visible buffer after every compute or transfer write before it, and
+// makes the copy visible to the host.
+Buffer GpuSolver::copy_to_host(const Buffer& src, const char* name) const {
+  Buffer staging = create_buffer(ctx_, src.size, BU::eTransferDst, MemoryUse::readback, name);
   ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
     record_barrier(cmd);
     cmd.copyBuffer(*src.buffer, *staging.buffer, vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = src.size});
@@ -220,6 +221,11 @@ sim::WaterState GpuSolver::read_state() const {
     cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_host});
   });
   staging.invalidate(ctx_);
+  return staging;
+}
+
+sim::WaterState GpuSolver::read_state() const {
+  const Buffer staging = copy_to_host(state_[cur_], "state readback");
   sim::WaterState s(model_.nodes());
   const auto* words = static_cast<const float*>(staging.mapped);
   float* const dst[kComponents] = {s.ux.data(), s.uy.data(), s.uz.data(), s.vx.data(), s.vy.data(), s.vz.data()};
@@ -251,16 +257,7 @@ void GpuSolver::compute_normals() {
 
 sim::Normals GpuSolver::read_normals() {
   compute_normals();
-  const Buffer staging = create_buffer(ctx_, normals_.size, BU::eTransferDst, MemoryUse::readback, "normals readback");
-  ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
-    cmd.copyBuffer(*normals_.buffer, *staging.buffer, vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = normals_.size});
-    const vk::MemoryBarrier2 to_host{.srcStageMask = vk::PipelineStageFlagBits2::eTransfer,
-                                     .srcAccessMask = vk::AccessFlagBits2::eTransferWrite,
-                                     .dstStageMask = vk::PipelineStageFlagBits2::eHost,
-                                     .dstAccessMask = vk::AccessFlagBits2::eHostRead};
-    cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_host});
-  });
-  staging.invalidate(ctx_);
+  const Buffer staging = copy_to_host(normals_, "normals readback");
   sim::Normals n;
   const auto* v = static_cast<const float*>(staging.mapped);
   for (std::size_t k = 0; k < model_.nodes(); ++k) {

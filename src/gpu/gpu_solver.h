@@ -49,6 +49,7 @@ class GpuSolver {
  private:
   void record_step(const vk::raii::CommandBuffer& cmd);
   void record_barrier(const vk::raii::CommandBuffer& cmd) const;
+  Buffer copy_to_host(const Buffer& src, const char* name) const;
 
   const Context& ctx_;
   sim::WaterModel model_;
