@@ -2,10 +2,16 @@
 // The exact test of one candidate leaf: does every node in the closed triangle lie within its
 // budget of the triangle's interpolation (barycentric in index space)? Used when the nested
 // bound cannot prove it; stops at the first node over budget.
+#include <cstddef>
+
 #include "lod/grid_hierarchy.h"
 #include "lod/node_positions.h"
 
 namespace pond::lod {
+
+// Rows are read four nodes at a time: the position and budget arrays must stay readable this
+// many floats past the last node (values there are ignored).
+constexpr std::size_t kScanOverread = 3;
 
 // positions: stride 1; `largest` bounds every |coordinate| (it sizes the float rounding margin).
 // Counts the nodes visited into *visited (statistics).
