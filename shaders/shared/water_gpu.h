@@ -18,13 +18,16 @@
 
 // Macros, not constants: GLSL needs literals in layout(local_size_x = ...) and
 // layout(constant_id = ...). The C++ side reads the same macros to derive group counts.
-#define POND_STEP_LOCAL_X 64       // columns per workgroup of water_step.comp (one per invocation)
+#define POND_STEP_LOCAL_X 64       // default local size of water_step.comp; the solver sets it (below)
+#define POND_STEP_LOCAL_X_MAX 256  // most invocations per workgroup of water_step.comp: a 1024-wide row
+                                   // in the quad path (see water_step.comp); a multiple of 8
 #define POND_STEP_ROWS_PER_INVOCATION 16  // each invocation walks a strip of this many rows
 #define POND_PERTURB_LOCAL_X 64    // table entries per workgroup of water_perturb.comp
 #define POND_NORMALS_LOCAL_X 64    // nodes per workgroup of water_normals.comp
 #define POND_SPEC_FAST_MATH 0      // specialization constant: bool, true = fast math
 #define POND_SPEC_RSQRT_STEPS 1    // specialization constant: int, Newton steps of exact rsqrt
 #define POND_SPEC_QUAD_COLUMNS 2   // specialization constant: bool, 4 columns per invocation (cols % 4 == 0)
+#define POND_SPEC_STEP_LOCAL_X 3   // specialization constant: water_step.comp's local_size_x
 
 // Bindings of water_step.comp: texel-buffer views of the state and the kinds (see the buffer notes
 // above; the buffers are the same, only the views differ).

@@ -43,10 +43,18 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model)
   // Rows of a multiple of 4 nodes keep every group of 4 columns 16-byte aligned (the stride is a
   // multiple of 16 floats), so the step shader can move 4 nodes per texel.
   quad_columns_ = model_.cols % 4 == 0;
+  // Quad path: one invocation per 4 columns; column path: one per column. The workgroup spans
+  // the row strip in as few groups as possible (at most POND_STEP_LOCAL_X_MAX invocations, a
+  // multiple of 8 = llvmpipe's lanes) and as evenly as possible: the shader's barrier per row then
+  // makes a group read and write whole rows, contiguous runs the hardware prefetcher follows.
+  step_threads_x_ = static_cast<std::uint32_t>(quad_columns_ ? model_.cols / 4 : model_.cols);
+  const std::uint32_t groups_x = std::max(1u, group_count(step_threads_x_, POND_STEP_LOCAL_X_MAX));
+  step_local_x_ = std::max(8u, (group_count(step_threads_x_, groups_x) + 7u) / 8u * 8u);
   const SpecConstant step_constants[] = {
       {POND_SPEC_FAST_MATH, fast ? 1u : 0u},
       {POND_SPEC_RSQRT_STEPS, static_cast<std::uint32_t>(model_.constants.rsqrt_steps)},
-      {POND_SPEC_QUAD_COLUMNS, quad_columns_ ? 1u : 0u}};
+      {POND_SPEC_QUAD_COLUMNS, quad_columns_ ? 1u : 0u},
+      {POND_SPEC_STEP_LOCAL_X, step_local_x_}};
   using DT = vk::DescriptorType;
   std::vector<DT> step_bindings(POND_STEP_BINDINGS);
   step_bindings[POND_STEP_BINDING_SRC1] = step_bindings[POND_STEP_BINDING_SRC4] = DT::eUniformTexelBuffer;
@@ -185,9 +193,7 @@ void GpuSolver::record_step(const vk::raii::CommandBuffer& cmd) {
   cmd.pushConstants<StepPush>(*step_pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
   for (int s = 0; s < model_.substeps; ++s) {
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *step_pipe_.layout, 0, *step_sets_[cur_], nullptr);
-    // Quad path: one invocation per 4 columns; column path: one per column.
-    const std::uint32_t threads_x = quad_columns_ ? cols / 4 : cols;
-    cmd.dispatch(group_count(threads_x, POND_STEP_LOCAL_X), group_count(rows, POND_STEP_ROWS_PER_INVOCATION), 1);
+    cmd.dispatch(group_count(step_threads_x_, step_local_x_), group_count(rows, POND_STEP_ROWS_PER_INVOCATION), 1);
     record_barrier(cmd);
     cur_ = 1 - cur_;
   }

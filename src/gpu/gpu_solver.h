@@ -61,6 +61,8 @@ class GpuSolver {
   vk::raii::BufferView state_r32_[2] = {nullptr, nullptr}, state_rgba32_[2] = {nullptr, nullptr};
   vk::raii::BufferView kinds_r8_ = nullptr, kinds_rgba8_ = nullptr;
   bool quad_columns_ = false;  // the step shader's 4-columns-per-invocation path (cols % 4 == 0)
+  std::uint32_t step_threads_x_ = 0;  // invocations per row strip of the step shader
+  std::uint32_t step_local_x_ = 0;    // its workgroup width (specialization constant)
   std::vector<std::uint32_t> table_first_;  // first entry of each perturbation in table_
   vk::raii::DescriptorPool pool_ = nullptr;
   // step_sets_[c]: reads state c, writes 1 - c; perturb_sets_[c], normals_sets_[c] use state c.
