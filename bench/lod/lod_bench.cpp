@@ -82,6 +82,7 @@ void BM_BuildRain(benchmark::State& st) {
     benchmark::DoNotOptimize(out.data());
   }
   report_counts(st, n / 3, side);
+  st.counters["tested_tris"] = static_cast<double>(b.stats().tested);
   st.counters["scanned_tris"] = static_cast<double>(b.stats().scanned);
   st.counters["proved_tris"] = static_cast<double>(b.stats().proved);
   st.counters["scan_nodes"] = static_cast<double>(b.stats().scanned_nodes);
