@@ -21,5 +21,5 @@ void main() {
   const float wet = clamp(-in_world.y / max(f.pool.y, 1e-3) + 0.3, 0.0, 1.0);  // darker below the rim top
   albedo *= 1.0 - 0.45 * wet * (1.0 - top);
   const vec3 ambient = f.sky.rgb * (0.25 + 0.15 * n.y);
-  out_color = finish_color(albedo * (ambient + 0.85 * diffuse * vec3(1.0, 0.96, 0.9)), f.grid.w);
+  out_color = finish_color(albedo * (ambient + 0.85 * diffuse * vec3(1.0, 0.96, 0.9)));
 }

@@ -16,9 +16,8 @@ layout(location = 2) flat in uvec2 in_material;
 layout(location = 0) out vec4 out_color;
 
 void main() {
-  const uint flags = (f.flags.x & kTreeEncodeSrgb) != 0u ? kRenderEncodeSrgb : 0u;
   if (in_material.x == kTreeMaterialLine) {
-    out_color = finish_color(f.line.rgb, flags);
+    out_color = finish_color(f.line.rgb);
     return;
   }
   vec3 n = normalize(in_normal);
@@ -30,5 +29,5 @@ void main() {
   const vec3 ambient = f.sky.rgb * (0.3 + 0.15 * n.y);
   // Light through a leaf: its far side still glows a little when the sun is behind it.
   const float through = leaf ? 0.25 * max(-dot(n, f.sun.xyz), 0.0) : 0.0;
-  out_color = finish_color(albedo * (ambient + (0.85 * diffuse + through) * vec3(1.0, 0.96, 0.9)), flags);
+  out_color = finish_color(albedo * (ambient + (0.85 * diffuse + through) * vec3(1.0, 0.96, 0.9)));
 }

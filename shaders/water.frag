@@ -56,5 +56,5 @@ void main() {
   spec *= 3.0;
 
   vec3 color = mix(seen_through, reflected, fresnel) + spec * vec3(1.0, 0.95, 0.85) * fresnel * 4.0;
-  out_color = finish_color(color, f.grid.w);
+  out_color = finish_color(color);
 }

@@ -4,6 +4,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/water_render.h"
+#include "shared/water_shading.h"
 
 layout(std140, set = 0, binding = POND_RENDER_BINDING_FRAME) uniform Frame { WaterFrame f; };
 
@@ -12,7 +13,5 @@ layout(location = 1) in vec3 in_normal;
 layout(location = 0) out vec4 out_color;
 
 void main() {
-  vec3 c = f.wire.rgb;
-  if ((f.grid.w & kRenderEncodeSrgb) != 0u) c = pow(c, vec3(1.0 / 2.2));
-  out_color = vec4(c, f.wire.a);
+  out_color = vec4(encode_target(f.wire.rgb), f.wire.a);
 }

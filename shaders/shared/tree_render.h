@@ -53,9 +53,6 @@ POND_CONST uint kTreeMaterialLeaf = 2u;  // leaf, lit from both sides
 // per level, and a tree has at most 10 levels (tree::kMaxTreeDepth).
 POND_CONST int kTreeMaxChain = 11;
 
-// TreeRenderFrame.flags.x bits.
-POND_CONST uint kTreeEncodeSrgb = 1u;  // the target is UNORM: the shader encodes sRGB itself
-
 // Per frame slot (std140): the camera and the light, shared by every instance.
 struct TreeRenderFrame {
   mat4 view_proj;  // world -> clip, Vulkan conventions (the water's matrix)
@@ -65,7 +62,6 @@ struct TreeRenderFrame {
   vec4 bark;       // rgb: bark colour (linear)
   vec4 leaf;       // rgb: leaf colour (linear)
   vec4 line;       // rgb: the line look's colour (linear); a: unused
-  uvec4 flags;     // x: kTreeEncodeSrgb; yzw: 0
 };
 
 // Push constants (std430): one instance. Its bent tree, in tree units (trunk length 1), is placed
@@ -87,11 +83,10 @@ static_assert(sizeof(uvec4) == 16 && sizeof(mat4) == 64);
 static_assert(sizeof(TreeMeshVertex) == 96);
 static_assert(offsetof(TreeMeshVertex, branch) == 0 && offsetof(TreeMeshVertex, offset) == 48 &&
               offsetof(TreeMeshVertex, normal) == 64 && offsetof(TreeMeshVertex, info) == 80);
-static_assert(sizeof(TreeRenderFrame) == 176);
+static_assert(sizeof(TreeRenderFrame) == 160);
 static_assert(offsetof(TreeRenderFrame, eye) == 64 && offsetof(TreeRenderFrame, sun) == 80 &&
               offsetof(TreeRenderFrame, sky) == 96 && offsetof(TreeRenderFrame, bark) == 112 &&
-              offsetof(TreeRenderFrame, leaf) == 128 && offsetof(TreeRenderFrame, line) == 144 &&
-              offsetof(TreeRenderFrame, flags) == 160);
+              offsetof(TreeRenderFrame, leaf) == 128 && offsetof(TreeRenderFrame, line) == 144);
 static_assert(sizeof(TreeInstance) == 64 && offsetof(TreeInstance, wind) == 16);
 }  // namespace pond::shared::tree_wind
 #endif

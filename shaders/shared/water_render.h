@@ -37,8 +37,9 @@ struct mat4 {
 #define POND_RENDER_BINDING_STATE 1
 #define POND_RENDER_BINDING_NORMALS 2
 
-// WaterFrame.grid.w flags.
-POND_RENDER_CONST uint kRenderEncodeSrgb = 1u;  // the target is UNORM: the shader encodes sRGB itself
+// Fragment-shader specialization constant (bool), set by gpu/graphics_pipeline.cpp from the colour
+// format: true when the target is UNORM and the shader must encode sRGB itself.
+#define POND_SPEC_ENCODE_SRGB 0
 
 // Everything a frame's shaders need, one uniform block (std140), written per frame slot.
 struct WaterFrame {
@@ -50,7 +51,7 @@ struct WaterFrame {
   vec4 ground;     // rgb: pool floor, shore and island colour (linear); w: unused
   vec4 pool;       // x: floor depth below the rest surface; y: land height above it (world); zw: 0
   vec4 wire;       // rgb: LOD wireframe colour; a: its opacity
-  uvec4 grid;      // x: rows; y: cols; z: stride of the state arrays (floats); w: flags
+  uvec4 grid;      // x: rows; y: cols; z: stride of the state arrays (floats); w: 0
 };
 
 // One vertex of the land mesh: position (world, w = 1) and normal (w = 0).

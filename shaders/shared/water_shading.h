@@ -11,15 +11,22 @@ vec3 sky_color(vec3 zenith, vec3 d, vec3 sun) {
   return base + glow * vec3(1.0, 0.9, 0.7) * 0.3;
 }
 
-// Linear colour -> the target: tone-clamped, and encoded to sRGB by hand when the target format
-// does not do it (flags & kRenderEncodeSrgb).
-vec4 finish_color(vec3 c, uint flags) {
-  c = c / (vec3(1.0) + max(c - vec3(0.8), vec3(0.0)));  // soft shoulder above 0.8
-  c = clamp(c, 0.0, 1.0);
-  if ((flags & kRenderEncodeSrgb) != 0u) {
+// True when the target is UNORM (POND_SPEC_ENCODE_SRGB, shared/water_render.h): the shader
+// encodes sRGB itself. A constant, so the sRGB target's pipelines contain no pow() at all.
+layout(constant_id = POND_SPEC_ENCODE_SRGB) const bool kEncodeSrgb = false;
+
+// Linear colour in 0..1 -> what the target stores.
+vec3 encode_target(vec3 c) {
+  if (kEncodeSrgb) {
     const vec3 lo = c * 12.92;
     const vec3 hi = 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055;
     c = mix(hi, lo, lessThanEqual(c, vec3(0.0031308)));
   }
-  return vec4(c, 1.0);
+  return c;
+}
+
+// Linear colour -> the target: tone-clamped, then encoded.
+vec4 finish_color(vec3 c) {
+  c = c / (vec3(1.0) + max(c - vec3(0.8), vec3(0.0)));  // soft shoulder above 0.8
+  return vec4(encode_target(clamp(c, 0.0, 1.0)), 1.0);
 }

@@ -1,11 +1,13 @@
 #include "gpu/frame_loop.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
 
 #include "core/errors.h"
 #include "gpu/buffer.h"
+#include "gpu/color_format.h"
 #include "gpu/land_mesh.h"
 #include "gpu/render_layout.h"
 #include "gpu/render_target.h"
@@ -46,10 +48,6 @@ vk::ImageMemoryBarrier2 layout_barrier(vk::Image image, vk::ImageAspectFlags asp
 
 shared::water_render::vec4 v4(const std::array<double, 3>& a, double w = 0) {
   return {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2]), static_cast<float>(w)};
-}
-
-bool is_srgb(vk::Format f) {
-  return f == vk::Format::eR8G8B8A8Srgb || f == vk::Format::eB8G8R8A8Srgb || f == vk::Format::eA8B8G8R8SrgbPack32;
 }
 
 double ms_since(std::chrono::steady_clock::time_point& t) {
@@ -167,7 +165,7 @@ struct FrameLoop::Impl {
     st.lod_ms = ms_since(t);
 
     const std::array<float, 16> view_proj = view_projection(camera, model);  // 4. draw
-    write_frame_uniforms(s, camera, view_proj, bufs.stride, target.format);
+    write_frame_uniforms(s, camera, view_proj, bufs.stride);
     bind_buffers(s, bufs);
     ensure_depth(s, target.extent);
     const FrameInfo info{s.cmd, slot, view_proj.data(),
@@ -182,7 +180,7 @@ struct FrameLoop::Impl {
   }
 
   void write_frame_uniforms(const Slot& s, const lod::Camera& camera, const std::array<float, 16>& view_proj,
-                            std::uint32_t stride, vk::Format format) const {
+                            std::uint32_t stride) const {
     const sim::LightingSpec& l = scene.lighting;
     const double sl = std::sqrt(l.sun[0] * l.sun[0] + l.sun[1] * l.sun[1] + l.sun[2] * l.sun[2]);
     WaterFrame f;
@@ -194,8 +192,7 @@ struct FrameLoop::Impl {
     f.ground = v4(l.ground);
     f.pool = {static_cast<float>(scene.view.floor_depth), static_cast<float>(scene.view.land_height), 0, 0};
     f.wire = {0.02f, 0.05f, 0.08f, 0.55f};
-    f.grid = {static_cast<std::uint32_t>(model.rows), static_cast<std::uint32_t>(model.cols), stride,
-              is_srgb(format) ? 0u : shared::water_render::kRenderEncodeSrgb};
+    f.grid = {static_cast<std::uint32_t>(model.rows), static_cast<std::uint32_t>(model.cols), stride, 0};
     std::memcpy(s.uniforms.mapped, &f, sizeof f);
   }
 
@@ -219,10 +216,15 @@ struct FrameLoop::Impl {
                            vk::ImageAspectFlagBits::eDepth, "depth");
   }
 
-  // The sky at the horizon (water_shading.h's sky_color at d.y = 0): the background.
-  std::array<float, 4> horizon_color() const {
+  // The sky at the horizon (water_shading.h's sky_color at d.y = 0): the background. A clear value
+  // is stored as given, so for a UNORM target it is sRGB-encoded here, as the shaders encode theirs.
+  std::array<float, 4> horizon_color(vk::Format format) const {
     const auto& z = scene.lighting.sky;
-    auto c = [&](int k) { return static_cast<float>(z[k] + (1.0 - z[k]) * 0.55); };
+    auto c = [&](int k) {
+      const double linear = std::min(z[k] + (1.0 - z[k]) * 0.55, 1.0);
+      if (is_srgb(format)) return static_cast<float>(linear);
+      return static_cast<float>(linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055);
+    };
     return {c(0), c(1), c(2), 1.0f};
   }
 
@@ -249,7 +251,7 @@ struct FrameLoop::Impl {
     const vk::RenderingAttachmentInfo color{
         .imageView = target.view, .imageLayout = vk::ImageLayout::eColorAttachmentOptimal,
         .loadOp = vk::AttachmentLoadOp::eClear, .storeOp = vk::AttachmentStoreOp::eStore,
-        .clearValue = vk::ClearValue{.color = {.float32 = horizon_color()}}};
+        .clearValue = vk::ClearValue{.color = {.float32 = horizon_color(target.format)}}};
     const vk::RenderingAttachmentInfo depth{
         .imageView = *s.depth.view, .imageLayout = vk::ImageLayout::eDepthAttachmentOptimal,
         .loadOp = vk::AttachmentLoadOp::eClear, .storeOp = vk::AttachmentStoreOp::eDontCare,

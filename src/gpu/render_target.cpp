@@ -59,14 +59,14 @@ void check_target_size(const Context& ctx, int width, int height, vk::Format for
                      " MiB of images, more than " + ctx.device_name() + " allows");
 }
 
-RenderTarget::RenderTarget(const Context& ctx, int width, int height)
+RenderTarget::RenderTarget(const Context& ctx, int width, int height, vk::Format format)
     : ctx_(ctx),
       image_(create_image(ctx, vk::Extent2D{static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)},
-                          kFormat, vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eTransferSrc,
+                          format, vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eTransferSrc,
                           vk::ImageAspectFlagBits::eColor, "offscreen color target")) {}
 
 FrameTarget RenderTarget::frame_target() const {
-  return FrameTarget{.image = *image_.image, .view = *image_.view, .format = kFormat, .extent = image_.extent,
+  return FrameTarget{.image = *image_.image, .view = *image_.view, .format = image_.format, .extent = image_.extent,
                      .old_layout = vk::ImageLayout::eUndefined,
                      .final_layout = vk::ImageLayout::eTransferSrcOptimal, .wait_semaphore = {}, .signal_semaphore = {}};
 }

@@ -26,13 +26,13 @@ Image create_image(const Context& ctx, vk::Extent2D extent, vk::Format format, v
 // can render or hold (checked before any work, so `pond render` refuses bad sizes up front).
 void check_target_size(const Context& ctx, int width, int height, vk::Format format);
 
-// The offscreen color image of headless rendering, RGBA8 (sRGB-encoded by the format: the shaders
-// write linear colour).
+// The offscreen color image of headless rendering, RGBA8: sRGB-encoded by the format (kFormat: the
+// shaders write linear colour), or R8G8B8A8Unorm, where the shaders encode (as for a UNORM swapchain).
 class RenderTarget {
  public:
   static constexpr vk::Format kFormat = vk::Format::eR8G8B8A8Srgb;
 
-  RenderTarget(const Context& ctx, int width, int height);
+  RenderTarget(const Context& ctx, int width, int height, vk::Format format = kFormat);
 
   // The FrameTarget for FrameLoop::frame(): cleared each frame, left in eTransferSrcOptimal.
   FrameTarget frame_target() const;

@@ -25,10 +25,6 @@ constexpr sh::vec4 kBark{0.16f, 0.1f, 0.06f, 0.0f};
 constexpr sh::vec4 kLeaf{0.09f, 0.24f, 0.045f, 0.0f};
 constexpr sh::vec4 kLine{0.05f, 0.04f, 0.03f, 1.0f};
 
-bool is_srgb(vk::Format f) {
-  return f == vk::Format::eR8G8B8A8Srgb || f == vk::Format::eB8G8R8A8Srgb || f == vk::Format::eA8B8G8R8SrgbPack32;
-}
-
 sh::vec4 v4(const std::array<double, 3>& a) {
   return {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2]), 0.0f};
 }
@@ -52,7 +48,6 @@ struct TreeDrawable::Impl {
   tree::UserWind user;
   tree::NoiseTable noise;
   sim::LightingSpec lighting;
-  bool srgb_target;
   TreePipelines pipes;
   tree::Tree grown;
   TreeMesh mesh;
@@ -66,7 +61,7 @@ struct TreeDrawable::Impl {
 
   Impl(const Context& c, const FrameLoop& loop, const sim::TreeSpec& t, const sim::WindSpec& w)
       : ctx(c), spec(t), wind_spec(w), user(scene_user_wind(w)), noise(tree::make_noise_table(w.seed)),
-        lighting(loop.scene().lighting), srgb_target(is_srgb(loop.color_format())),
+        lighting(loop.scene().lighting),
         pipes(create_tree_pipelines(c, loop.color_format(), FrameLoop::kDepthFormat)) {
     const vk::DescriptorPoolSize sizes[] = {
         {.type = vk::DescriptorType::eUniformBuffer, .descriptorCount = FrameLoop::kFramesInFlight},
@@ -155,7 +150,6 @@ struct TreeDrawable::Impl {
     f.bark = kBark;
     f.leaf = kLeaf;
     f.line = kLine;
-    f.flags = {srgb_target ? 0u : sh::kTreeEncodeSrgb, 0, 0, 0};
     std::memcpy(slots[info.slot].uniforms.mapped, &f, sizeof f);
   }
 

@@ -32,6 +32,7 @@ struct RenderCase {
   bool wireframe = false;
   gpu::SolverChoice solver{};
   std::string json{};  // empty: the embedded default scene
+  vk::Format format = gpu::RenderTarget::kFormat;
 };
 
 // The scenes: the embedded default (island + splash), and small variations of it.
@@ -55,8 +56,8 @@ class RenderTest : public GpuTest {
  protected:
   Rgba render(const RenderCase& c) {
     const sim::Scene scene = sim::parse_scene(c.json.empty() ? std::string(sim::default_scene_json()) : c.json, "test");
-    gpu::FrameLoop loop(ctx(), scene, c.solver, gpu::RenderTarget::kFormat);
-    const gpu::RenderTarget target(ctx(), kWidth, kHeight);
+    gpu::FrameLoop loop(ctx(), scene, c.solver, c.format);
+    const gpu::RenderTarget target(ctx(), kWidth, kHeight, c.format);
     loop.advance(c.steps);
     gpu::FrameView view;
     view.camera = loop.default_camera(kWidth, kHeight);
@@ -81,6 +82,22 @@ TEST_F(RenderTest, VerticalOnlyPool) { expect_golden("pool", render({.steps = 30
 
 TEST_F(RenderTest, AllVerticalWavesPassThrough) {
   expect_golden("all_vertical", render({.steps = 26, .json = kAllVertical}));
+}
+
+// A UNORM target (a swapchain without an sRGB format) gets the encoding from the shaders, chosen by
+// a specialization constant, and the clear colour is encoded on the CPU: the same picture as the
+// sRGB target. (Not the wireframe: its alpha blend mixes encoded values in a UNORM target.)
+TEST_F(RenderTest, UnormTargetShowsTheSamePictureAsSrgb) {
+  const RenderCase c{.steps = 24};
+  const Rgba srgb = render(c);
+  RenderCase unorm = c;
+  unorm.format = vk::Format::eR8G8B8A8Unorm;
+  const ImageDiff d = compare(srgb, render(unorm), 2);
+  std::printf("UNORM vs sRGB target: largest difference %d levels, %.3f%% of pixels beyond 2\n", d.max_difference,
+              100 * d.share);
+  EXPECT_LE(d.share, 0.001);
+  // And the encoding happened: without it the picture would be much darker.
+  EXPECT_LE(d.max_difference, 8);
 }
 
 TEST_F(RenderTest, LodOnAndOffAndTheirDifferenceIsBounded) {

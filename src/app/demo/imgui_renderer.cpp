@@ -5,6 +5,7 @@
 #include <cstring>
 #include <span>
 
+#include "gpu/color_format.h"
 #include "imgui_frag.spv.h"
 #include "imgui_vert.spv.h"
 
@@ -17,10 +18,6 @@ struct Push {
   std::uint32_t srgb_target;
 };
 
-bool is_srgb(vk::Format f) {
-  return f == vk::Format::eB8G8R8A8Srgb || f == vk::Format::eR8G8B8A8Srgb || f == vk::Format::eA8B8G8R8SrgbPack32;
-}
-
 vk::raii::ShaderModule module(const gpu::Context& ctx, std::span<const std::uint32_t> words) {
   return vk::raii::ShaderModule(ctx.device(), vk::ShaderModuleCreateInfo{.codeSize = words.size_bytes(), .pCode = words.data()});
 }
@@ -28,7 +25,7 @@ vk::raii::ShaderModule module(const gpu::Context& ctx, std::span<const std::uint
 }  // namespace
 
 ImGuiRenderer::ImGuiRenderer(const gpu::Context& ctx, vk::Format color_format)
-    : ctx_(ctx), srgb_target_(is_srgb(color_format)) {
+    : ctx_(ctx), srgb_target_(gpu::is_srgb(color_format)) {
   // The font atlas, uploaded once.
   unsigned char* pixels = nullptr;
   int width = 0, height = 0;
