@@ -1,13 +1,13 @@
 #include "lod/lod_builder.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 #include "core/errors.h"
 #include "lod/error_bounds.h"
+#include "lod/position_copy.h"
 #include "lod/triangle_scan.h"
 
 namespace pond::lod {
@@ -93,17 +93,7 @@ std::size_t LodBuilder::build(const NodePositions& p, const Camera& camera, doub
                             " indices, needs " + std::to_string(max_indices()));
   stats_ = {};
   const std::size_t n = p.nodes();
-  // The copy also finds the largest magnitude (on the bit patterns with the sign cleared, which
-  // order like the magnitudes; inf and NaN compare above every finite value).
-  std::uint32_t largest_bits = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const float x = p.x[k * p.stride], y = p.y[k * p.stride], z = p.z[k * p.stride];
-    x_[k] = x, y_[k] = y, z_[k] = z;
-    largest_bits = std::max({largest_bits, std::bit_cast<std::uint32_t>(x) & 0x7fffffffu,
-                             std::bit_cast<std::uint32_t>(y) & 0x7fffffffu,
-                             std::bit_cast<std::uint32_t>(z) & 0x7fffffffu});
-  }
-  const float largest = std::bit_cast<float>(largest_bits);
+  const float largest = copy_positions(p, x_.data(), y_.data(), z_.data());
   largest_ = largest;
   if (!std::isfinite(largest))
     for (std::size_t k = 0; k < n; ++k)

@@ -1,0 +1,54 @@
+#include "lod/position_copy.h"
+
+#include <algorithm>
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+
+#include <emmintrin.h>  // SSE2: four interleaved records at a time
+
+namespace pond::lod {
+namespace {
+
+// The largest magnitude is taken on the bit patterns with the sign cleared: they order like the
+// magnitudes (inf and NaN above every finite value) and, as non-negative int32, compare right
+// with SSE2's signed compare.
+std::uint32_t magnitude_bits(float v) { return std::bit_cast<std::uint32_t>(v) & 0x7fffffffu; }
+
+__m128i max_magnitude_bits(__m128i largest, __m128 v) {
+  const __m128i bits = _mm_and_si128(_mm_castps_si128(v), _mm_set1_epi32(0x7fffffff));
+  const __m128i greater = _mm_cmpgt_epi32(bits, largest);
+  return _mm_or_si128(_mm_and_si128(greater, bits), _mm_andnot_si128(greater, largest));
+}
+
+}  // namespace
+
+float copy_positions(const NodePositions& p, float* x, float* y, float* z) {
+  const std::size_t n = p.nodes(), stride = p.stride;
+  const float* src = p.x;
+  std::size_t k = 0;
+  std::uint32_t largest = 0;
+  if (p.y == src + 1 && p.z == src + 2 && stride >= 4) {
+    // Interleaved records (STATE.npy: x, y, z, vx, vy, vz): each record's first four floats are
+    // one load, four records are transposed into x, y, z (and an unused fourth) vectors.
+    __m128i largest4 = _mm_setzero_si128();
+    for (; k + 4 <= n; k += 4) {
+      const float* r = src + k * stride;
+      __m128 vx = _mm_loadu_ps(r), vy = _mm_loadu_ps(r + stride);
+      __m128 vz = _mm_loadu_ps(r + 2 * stride), unused = _mm_loadu_ps(r + 3 * stride);
+      _MM_TRANSPOSE4_PS(vx, vy, vz, unused);
+      _mm_storeu_ps(x + k, vx), _mm_storeu_ps(y + k, vy), _mm_storeu_ps(z + k, vz);
+      largest4 = max_magnitude_bits(max_magnitude_bits(max_magnitude_bits(largest4, vx), vy), vz);
+    }
+    alignas(16) std::uint32_t lanes[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(lanes), largest4);
+    largest = std::max({lanes[0], lanes[1], lanes[2], lanes[3]});
+  }
+  for (; k < n; ++k) {
+    x[k] = p.x[k * stride], y[k] = p.y[k * stride], z[k] = p.z[k * stride];
+    largest = std::max({largest, magnitude_bits(x[k]), magnitude_bits(y[k]), magnitude_bits(z[k])});
+  }
+  return std::bit_cast<float>(largest);
+}
+
+}  // namespace pond::lod

@@ -1,0 +1,12 @@
+#pragma once
+// The builder's per-frame copy of the node positions into its own structure-of-arrays buffers,
+// finding the largest |coordinate| on the way (it sizes every float rounding margin).
+#include "lod/node_positions.h"
+
+namespace pond::lod {
+
+// Copies node n's position to x[n], y[n], z[n] and returns the largest |coordinate|: +inf or NaN
+// when some coordinate is not finite.
+float copy_positions(const NodePositions& positions, float* x, float* y, float* z);
+
+}  // namespace pond::lod
