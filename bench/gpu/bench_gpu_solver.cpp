@@ -1,9 +1,11 @@
 // GPU solver speed on the device pond chooses (lavapipe here): node-steps per second at 256²,
 // 512², 1024², exact and fast math; the cost of one dispatch (1,000 substeps of an 8x8 grid, one
 // command buffer); and the scalar CPU backend on one thread at 1024² in the same run, for the
-// ratio. Validation is off (it would measure the layer).
+// ratio, also alternated with the GPU within one benchmark (BM_GpuVsCpuScalarRatio). Validation is
+// off (it would measure the layer).
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <ctime>
 #include <memory>
@@ -95,6 +97,43 @@ void BM_CpuScalarOneThread(benchmark::State& state) {
   count_cpu(state, node_steps, cpu0);
 }
 BENCHMARK(BM_CpuScalarOneThread)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The target ratio measured robustly on a shared machine: GPU exact and CPU scalar (one thread)
+// at 1024^2 alternate within every iteration (4 GPU steps, then 1 CPU step, each timed), so both see
+// the same load over the run instead of whatever load each had in its own benchmark. Counters: the
+// wall-clock ratio of node-steps/s (what the target asks), the ratio per process CPU second (the
+// efficiency, independent of how many cores the 2 lavapipe workers get), and the cores the GPU
+// phases used on average (2 on a quiet machine).
+void BM_GpuVsCpuScalarRatio(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  gpu::GpuSolver gpu_solver(context(), square_pond(n, 1, sim::MathMode::exact));
+  sim::CpuSolver cpu_solver(square_pond(n, 1, sim::MathMode::exact), sim::Backend::scalar, 1);
+  constexpr std::int64_t kGpuSteps = 4, kCpuSteps = 1;
+  gpu_solver.advance(kGpuSteps);
+  cpu_solver.advance(kCpuSteps);
+  using Clock = std::chrono::steady_clock;
+  double gpu_wall = 0, gpu_cpu = 0, cpu_wall = 0, cpu_cpu = 0;
+  for (auto _ : state) {
+    const auto t0 = Clock::now();
+    const double c0 = process_cpu_seconds();
+    gpu_solver.advance(kGpuSteps);
+    const auto t1 = Clock::now();
+    const double c1 = process_cpu_seconds();
+    cpu_solver.advance(kCpuSteps);
+    const auto t2 = Clock::now();
+    const double c2 = process_cpu_seconds();
+    gpu_wall += std::chrono::duration<double>(t1 - t0).count();
+    cpu_wall += std::chrono::duration<double>(t2 - t1).count();
+    gpu_cpu += c1 - c0;
+    cpu_cpu += c2 - c1;
+  }
+  const double gpu_steps = static_cast<double>(kGpuSteps), cpu_steps = static_cast<double>(kCpuSteps);
+  state.counters["wall-ratio"] = (gpu_steps / gpu_wall) / (cpu_steps / cpu_wall);
+  state.counters["cpu-s-ratio"] = (gpu_steps / gpu_cpu) / (cpu_steps / cpu_cpu);
+  state.counters["gpu-cores"] = gpu_cpu / gpu_wall;
+  state.counters["cpu-cores"] = cpu_cpu / cpu_wall;
+}
+BENCHMARK(BM_GpuVsCpuScalarRatio)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(5.0);
 
 }  // namespace
 
