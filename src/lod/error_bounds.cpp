@@ -37,8 +37,21 @@ struct Pass {
               int reach) const {
     const std::size_t id = static_cast<std::size_t>(vy) * static_cast<std::size_t>(cols) +
                            static_cast<std::size_t>(vx);
-    float worst_child = 0, least = budget[id];
     const bool interior = vx >= reach && vy >= reach && vx + reach < cols && vy + reach < rows;
+    if (interior && child_count == 4) {  // most vertices: no checks, no loop
+      const std::ptrdiff_t row = cols;
+      const NestedBound c0 = out[id + child[0][1] * row + child[0][0]];
+      const NestedBound c1 = out[id + child[1][1] * row + child[1][0]];
+      const NestedBound c2 = out[id + child[2][1] * row + child[2][0]];
+      const NestedBound c3 = out[id + child[3][1] * row + child[3][0]];
+      const float worst = std::max(std::max(c0.error, c1.error), std::max(c2.error, c3.error));
+      const float least = std::min(std::min(budget[id], std::min(c0.min_budget, c1.min_budget)),
+                                   std::min(c2.min_budget, c3.min_budget));
+      const float dev = deviation(id, id - static_cast<std::size_t>(e), id + static_cast<std::size_t>(e));
+      out[id] = {(dev + worst) * kBoundGrow, least};
+      return;
+    }
+    float worst_child = 0, least = budget[id];
     for (int k = 0; k < child_count; ++k) {
       const int cx = vx + child[k][0], cy = vy + child[k][1];
       if (!interior && (cx < 0 || cy < 0 || cx >= cols || cy >= rows)) continue;
