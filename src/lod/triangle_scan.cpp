@@ -89,7 +89,7 @@ namespace {
 // The same test in double, for triangles the float pass cannot decide: every node is then
 // judged within 1e-13 relative, far inside the budgets' own 1e-5 margin.
 bool within_budget_double(const GridHierarchy& grid, const NodePositions& p, const float* budget,
-                          const Tri& t) {
+                          const Tri& t, const Tri& region) {
   const int lx = t.left.x - t.apex.x, ly = t.left.y - t.apex.y;
   const int rx = t.right.x - t.apex.x, ry = t.right.y - t.apex.y;
   const double inv_len2 = 1.0 / (double(lx) * lx + double(ly) * ly);
@@ -97,10 +97,10 @@ bool within_budget_double(const GridHierarchy& grid, const NodePositions& p, con
   const double ax = p.x[a], ay = p.y[a], az = p.z[a];
   const double lx3 = p.x[l] - ax, ly3 = p.y[l] - ay, lz3 = p.z[l] - az;
   const double rx3 = p.x[r] - ax, ry3 = p.y[r] - ay, rz3 = p.z[r] - az;
-  const int y0 = std::min({t.apex.y, t.left.y, t.right.y});
-  const int y1 = std::max({t.apex.y, t.left.y, t.right.y});
+  const int y0 = std::min({region.apex.y, region.left.y, region.right.y});
+  const int y1 = std::max({region.apex.y, region.left.y, region.right.y});
   const std::size_t cols = static_cast<std::size_t>(grid.cols());
-  const RowSpans spans(t);
+  const RowSpans spans(region);
   for (int y = y0; y <= y1; ++y) {
     const int dy = y - t.apex.y;
     for (int x = spans.first(y), x1 = spans.last(y); x <= x1; ++x) {
@@ -122,6 +122,11 @@ bool within_budget_double(const GridHierarchy& grid, const NodePositions& p, con
 
 bool within_budget(const GridHierarchy& grid, const NodePositions& p, const float* budget,
                    float largest, const Tri& t, long long* visited) {
+  return within_budget(grid, p, budget, largest, t, t, visited);
+}
+
+bool within_budget(const GridHierarchy& grid, const NodePositions& p, const float* budget,
+                   float largest, const Tri& t, const Tri& region, long long* visited) {
   // Legs apex->left and apex->right are orthogonal and of equal length, so the barycentric
   // weights of left and right are plain projections onto them. The squared leg length is a
   // power of two (legs are (2^k, 0) or (2^k, 2^k) turned), so every weight, the integer
@@ -142,13 +147,13 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
                         _mm_set1_ps(p.x[r] - ax), _mm_set1_ps(p.y[r] - ay), _mm_set1_ps(p.z[r] - az),
                         _mm_set1_ps(static_cast<float>(lx) * inv_len2),
                         _mm_set1_ps(static_cast<float>(rx) * inv_len2), _mm_set1_ps(slack)};
-  const int y0 = std::min({t.apex.y, t.left.y, t.right.y});
-  const int y1 = std::max({t.apex.y, t.left.y, t.right.y});
+  const int y0 = std::min({region.apex.y, region.left.y, region.right.y});
+  const int y1 = std::max({region.apex.y, region.left.y, region.right.y});
   const std::size_t cols = static_cast<std::size_t>(grid.cols());
   long long count = 0;
   bool ok = true;
   bool undecided = false;
-  const RowSpans spans(t);
+  const RowSpans spans(region);
   for (int y = y0; y <= y1 && ok; ++y) {
     const int x0 = spans.first(y), len = spans.last(y) - x0 + 1;
     const long long dx = x0 - t.apex.x, dy = y - t.apex.y;
@@ -163,7 +168,7 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
     undecided |= v.close;
   }
   if (visited) *visited += count;
-  if (ok && undecided) return within_budget_double(grid, p, budget, t);
+  if (ok && undecided) return within_budget_double(grid, p, budget, t, region);
   return ok;
 }
 

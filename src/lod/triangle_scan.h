@@ -18,6 +18,11 @@ constexpr std::size_t kScanOverread = 3;
 bool within_budget(const GridHierarchy& grid, const NodePositions& positions, const float* budget,
                    float largest, const Tri& t, long long* visited);
 
+// The same test for the nodes of `region`, a triangle inside t (one of its descendants), against
+// t's interpolation.
+bool within_budget(const GridHierarchy& grid, const NodePositions& positions, const float* budget,
+                   float largest, const Tri& t, const Tri& region, long long* visited);
+
 // The same test for the fan (corner[0], corner[k], corner[k+1]) of a clipped triangle, in double.
 bool fan_within_budget(const GridPolygon& polygon, const NodePositions& positions,
                        const float* budget, long long* visited);
