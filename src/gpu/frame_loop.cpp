@@ -170,7 +170,8 @@ struct FrameLoop::Impl {
     ensure_depth(s, target.extent);
     const FrameInfo info{s.cmd, slot, view_proj.data(),
                          {static_cast<float>(camera.eye[0]), static_cast<float>(camera.eye[1]), static_cast<float>(camera.eye[2])},
-                         target.extent, static_cast<double>(water->steps_done()) * model.physics.dt};
+                         target.extent, static_cast<double>(water->steps_done()) * model.physics.dt,
+                         scene.lighting};
     for (PassDrawable* d : drawables) d->prepare(info);
     record(s, target, info, full ? full_indices : s.indices, static_cast<std::uint32_t>(index_count), view.wireframe);
     submit(s, target);
@@ -335,6 +336,13 @@ void FrameLoop::splash(const sim::Perturbation& splash) {
   sim::apply_perturbation(sim::tabulate(splash, impl_->model), state);
   impl_->wait_all();
   impl_->water->set_state(state, impl_->water->steps_done());
+}
+
+void FrameLoop::set_sun(const std::array<double, 3>& toward_sun) {
+  const double length2 = toward_sun[0] * toward_sun[0] + toward_sun[1] * toward_sun[1] + toward_sun[2] * toward_sun[2];
+  if (!(std::isfinite(length2) && length2 > 0))
+    throw InputError("lighting: the sun direction must be finite and not zero");
+  impl_->scene.lighting.sun = toward_sun;
 }
 
 void FrameLoop::set_physics(const sim::Physics& physics) {

@@ -84,6 +84,7 @@ struct FrameInfo {
   std::array<float, 3> eye;
   vk::Extent2D extent;
   double seconds;               // simulated time: steps_done * dt
+  const sim::LightingSpec& lighting;  // the scene's, with the sun as set_sun() left it
 };
 
 // A second pipeline drawn in the same pass as the water (the wind tree). Its pipeline must be
@@ -122,6 +123,9 @@ class FrameLoop {
   void splash(const sim::Perturbation& splash);
   // New physics for the same grid; the state carries over. InputError when unstable.
   void set_physics(const sim::Physics& physics);
+  // A new direction toward the sun (normalized on use) for the next frames; InputError when it is
+  // zero or not finite.
+  void set_sun(const std::array<double, 3>& toward_sun);
   void reset();                                  // back to rest at step 0 (scene splashes replay)
   // Replaces the water state and step count (same grid): the demo carries the water over to a
   // loop built for new constraints. InputError when the node count differs.

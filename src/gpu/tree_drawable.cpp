@@ -47,7 +47,6 @@ struct TreeDrawable::Impl {
   sim::WindSpec wind_spec;
   tree::UserWind user;
   tree::NoiseTable noise;
-  sim::LightingSpec lighting;
   TreePipelines pipes;
   tree::Tree grown;
   TreeMesh mesh;
@@ -61,7 +60,6 @@ struct TreeDrawable::Impl {
 
   Impl(const Context& c, const FrameLoop& loop, const sim::TreeSpec& t, const sim::WindSpec& w)
       : ctx(c), spec(t), wind_spec(w), user(scene_user_wind(w)), noise(tree::make_noise_table(w.seed)),
-        lighting(loop.scene().lighting),
         pipes(create_tree_pipelines(c, loop.color_format(), FrameLoop::kDepthFormat)) {
     const vk::DescriptorPoolSize sizes[] = {
         {.type = vk::DescriptorType::eUniformBuffer, .descriptorCount = FrameLoop::kFramesInFlight},
@@ -140,13 +138,13 @@ struct TreeDrawable::Impl {
     pending_seconds = 0.0;
     for (Instance& inst : instances) tree::advance_wind(inst.wind, noise, user, dt);
 
-    const auto& sun = lighting.sun;
+    const auto& sun = info.lighting.sun;
     const double sl = std::sqrt(sun[0] * sun[0] + sun[1] * sun[1] + sun[2] * sun[2]);
     sh::TreeRenderFrame f;
     std::memcpy(f.view_proj.m, info.view_proj, sizeof f.view_proj.m);
     f.eye = {info.eye[0], info.eye[1], info.eye[2], 0.0f};
     f.sun = v4({sun[0] / sl, sun[1] / sl, sun[2] / sl});
-    f.sky = v4(lighting.sky);
+    f.sky = v4(info.lighting.sky);
     f.bark = kBark;
     f.leaf = kLeaf;
     f.line = kLine;

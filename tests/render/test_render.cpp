@@ -5,10 +5,12 @@
 // kGoldenLevels (of 255) in some channel; a failure writes <name>.actual.png and <name>.diff.png (red =
 // differing) into the build tree's tests/render/out. Regenerate after a deliberate change:
 //   POND_REGENERATE_GOLDENS=1 ctest --test-dir <build> -L image
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
 
+#include "core/errors.h"
 #include "gpu/frame_loop.h"
 #include "gpu/png.h"
 #include "gpu/render_target.h"
@@ -144,6 +146,33 @@ TEST_F(RenderTest, CpuSolverDrawsTheSamePictureAndSwitchingCarriesTheState) {
 }
 
 // A splash added at run time is the scene's perturbation applied now: same picture.
+// The demo's light control: set_sun() on a running loop draws what a scene with that sun draws, and
+// a zero or non-finite direction is refused without changing the light.
+TEST_F(RenderTest, SetSunEqualsTheSceneLightAndRefusesZero) {
+  const std::array<double, 3> low_sun{0.8, 0.25, 0.3};
+  auto draw_after_24_steps = [&](gpu::FrameLoop& loop) {
+    const gpu::RenderTarget target(ctx(), kWidth, kHeight);
+    loop.advance(24);
+    gpu::FrameView view;
+    view.camera = loop.default_camera(kWidth, kHeight);
+    view.steps = 0;
+    view.wait = true;
+    loop.frame(target.frame_target(), view);
+    return Rgba{kWidth, kHeight, target.read_rgba()};
+  };
+  sim::Scene scene = sim::load_scene("");
+  scene.lighting.sun = low_sun;
+  gpu::FrameLoop scene_lit(ctx(), scene, {}, gpu::RenderTarget::kFormat);
+  const Rgba expected = draw_after_24_steps(scene_lit);
+  EXPECT_GT(compare(render({.steps = 24}), expected, 8).share, 0.05);  // the light visibly moved
+
+  gpu::FrameLoop loop(ctx(), sim::load_scene(""), {}, gpu::RenderTarget::kFormat);
+  loop.set_sun(low_sun);
+  EXPECT_THROW(loop.set_sun({0.0, 0.0, 0.0}), InputError);
+  EXPECT_THROW(loop.set_sun({std::nan(""), 1.0, 0.0}), InputError);
+  EXPECT_EQ(compare(expected, draw_after_24_steps(loop), 0).share, 0.0);
+}
+
 TEST_F(RenderTest, RunTimeSplashEqualsTheScenePerturbation) {
   const char* no_splash = R"({"constraints": [{"kind": "fixed", "rows": [30, 35], "cols": [30, 36]}]})";
   const sim::Scene scene = sim::parse_scene(no_splash, "test");

@@ -103,6 +103,7 @@ class DemoApp final : public ControlTarget {
     settings_.modes = modes_of(base_scene_);
     settings_.steps_per_frame = base_scene_.view.steps_per_frame;
     settings_.lod_tolerance_px = base_scene_.view.lod_tolerance_px;
+    settings_.sun = base_scene_.lighting.sun;
     settings_.vsync = options.vsync;
     stats_.device = ctx_.device_name();
     if (!swapchain_.can_copy_images() && (!options.screenshot.empty() || !script_.screenshots.empty()))
@@ -185,6 +186,7 @@ void DemoApp::build_loop(gpu::SolverChoice solver) {
   loop_.reset();  // one loop at a time: its buffers and pipelines are the big allocations
   sim::Scene scene = apply_modes(base_scene_, settings_.modes);
   scene.physics = settings_.physics;
+  scene.lighting.sun = settings_.sun;
   loop_ = std::make_unique<gpu::FrameLoop>(ctx_, scene, solver, swapchain_.format());
   if (scene.tree) {  // drawn before the UI; the controls' changes carry over to the rebuilt loop
     const sim::TreeSpec spec = tree_ ? tree_->spec() : *scene.tree;
@@ -319,6 +321,7 @@ void DemoApp::apply_requests(const PanelRequests& req) {
     stats_.solver = solver_label(s);
     settings_.message = "switched to the " + stats_.solver + " (state carried over)";
   }
+  if (req.apply_sun) loop_->set_sun(settings_.sun);  // the panel's vectors are unit vectors
   if (req.apply_physics) {
     try {
       loop_->set_physics(settings_.physics);
@@ -353,7 +356,7 @@ void DemoApp::draw_ui() {
   io.DisplayFramebufferScale = ImVec2(1, 1);
   ImGui::NewFrame();
   PanelRequests req;
-  if (settings_.show_panel) req = draw_panel(settings_, stats_, loop_->scene(), tree_ ? &*tree_ : nullptr);
+  if (settings_.show_panel) req = draw_panel(settings_, stats_, tree_ ? &*tree_ : nullptr);
   if (settings_.show_help) draw_help_overlay(settings_.show_help);
   ImGui::Render();
   apply_requests(req);

@@ -1,6 +1,7 @@
 #pragma once
 // What the person controls in the demo (keys, panel) and what the panel shows. One struct, so
 // the keys, the panel and the frame code read and write the same values.
+#include <array>
 #include <cstdint>
 #include <string>
 
@@ -39,6 +40,7 @@ struct DemoSettings {
   bool vsync = true;
   bool show_panel = true;
   bool show_help = false;
+  std::array<double, 3> sun{};  // toward the sun; edited in the panel, applied with FrameLoop::set_sun
   SplashSettings splash;
   RainSettings rain;
   std::string message;  // the last notice (screenshot saved, unstable parameters refused, …)

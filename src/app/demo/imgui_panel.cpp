@@ -43,10 +43,25 @@ void draw_tree_section(gpu::TreeDrawable& tree) {
   if (ImGui::Button("new tree (double-click)")) tree.regrow(tree.spec().seed + 1);
 }
 
+// The light: the direction toward the sun as azimuth (from +x toward +z) and elevation above the
+// water, in degrees; the vector is rebuilt from them only when one is moved.
+bool edit_sun(std::array<double, 3>& sun) {
+  constexpr double kDeg = 180.0 / std::numbers::pi;
+  const double horizontal = std::hypot(sun[0], sun[2]);
+  float azimuth = static_cast<float>(std::atan2(sun[2], sun[0]) * kDeg);
+  float elevation = static_cast<float>(std::atan2(sun[1], horizontal) * kDeg);
+  bool changed = ImGui::SliderFloat("sun azimuth", &azimuth, -180.0f, 180.0f, "%.0f deg");
+  changed |= ImGui::SliderFloat("sun elevation", &elevation, 1.0f, 90.0f, "%.0f deg");
+  if (changed) {
+    const double a = azimuth / kDeg, e = elevation / kDeg;
+    sun = {std::cos(e) * std::cos(a), std::sin(e), std::cos(e) * std::sin(a)};
+  }
+  return changed;
+}
+
 }  // namespace
 
-PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, const sim::Scene& scene,
-                         gpu::TreeDrawable* tree) {
+PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, gpu::TreeDrawable* tree) {
   PanelRequests req;
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
@@ -117,8 +132,7 @@ PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, const sim::Sce
     ImGui::SameLine();
     ImGui::Checkbox("vsync (F3)", &s.vsync);
     if (ImGui::Button("reset camera (C)")) req.reset_camera = true;
-    const auto& sun = scene.lighting.sun;
-    ImGui::Text("sun direction %.2f %.2f %.2f (scene \"lighting\")", sun[0], sun[1], sun[2]);
+    req.apply_sun = edit_sun(s.sun);
   }
   if (ImGui::CollapsingHeader("Splashes")) {
     ImGui::TextDisabled("click: velocity, Shift: position, Ctrl: explosion");

@@ -13,12 +13,12 @@ struct PanelRequests {
   bool switch_solver = false;  // settings.gpu_solver changed
   bool reset_water = false;
   bool reset_camera = false;
+  bool apply_sun = false;      // settings.sun changed
 };
 
 // Builds this frame's windows (between ImGui::NewFrame and ImGui::Render). `tree` is the scene's
 // wind tree, or null: its controls act on it directly (they only change what the next frame uses).
-PanelRequests draw_panel(DemoSettings& settings, const DemoStats& stats, const sim::Scene& scene,
-                         gpu::TreeDrawable* tree);
+PanelRequests draw_panel(DemoSettings& settings, const DemoStats& stats, gpu::TreeDrawable* tree);
 void draw_help_overlay(bool& open);
 
 }  // namespace pond::app::demo
