@@ -1,7 +1,7 @@
 #pragma once
 // One substep of the water grid over a range of rows, written once against the wide-float
-// operation table W (wide_scalar.h, wide_sse2.h, wide_avx2.h). Instantiated per backend in
-// kernel_<backend>.cpp.
+// operation table W (wide_scalar.h, wide_sse2.h, wide_avx2.h, wide_avx512.h). Instantiated per
+// backend in kernel_<backend>.cpp.
 //
 // The algorithm (the paper's optimized CPU loop, vectorized along a row):
 //  - Each spring's force is computed once. For row i the kernel computes the horizontal springs
@@ -40,24 +40,64 @@
 namespace pond::sim {
 inline namespace POND_ISA {
 
-// Offsets of the spring rows in the scratch (see step_view.h).
-inline constexpr int kRowH = 0;
-POND_KERNEL_INLINE constexpr int band_row(int band) { return 3 + 9 * band; }
+// Offsets of the spring rows in the scratch (see step_view.h): two rows of H springs (x, y, z
+// each; row i's and row i+1's) and three bands of S, D1, D2 (x, y, z each; rows i-1, i, i+1).
+POND_KERNEL_INLINE constexpr int h_row(int h) { return 3 * h; }
+POND_KERNEL_INLINE constexpr int band_row(int band) { return 6 + 9 * band; }
 inline constexpr int kBandS = 0, kBandD1 = 3, kBandD2 = 6;
 
-// Calls fn.template operator()<V>(j) for chunks of V::width columns covering [begin, end): with W
-// while at least W::width columns remain, the last chunk overlapping the previous one (it recomputes
-// some columns from the same inputs: the same bits), or one column at a time with the scalar
-// backend when the range is narrower than W.
+// Chunks of columns: fn.template operator()<V, Shifted>(j) does columns [j, j + V::width). A range
+// [begin, end) is covered by chunks of W while more than W::width columns remain, then one last
+// chunk ending at `end`, which overlaps the one before it where the columns do not divide evenly
+// (it recomputes some columns from the same inputs: the same bits). The last chunk is a chunk of
+// W::Half (half as wide; half the cost where the wide unit is split in two, as on Zen 4) when that
+// covers the rest. Shifted is true for a last chunk that starts before the columns not done yet.
+// A range narrower than W is done with W::Half, or one column at a time with the scalar backend.
+//
+// ChunkWalk does the same one chunk at a time, so that two walks can be interleaved.
+template <class W>
+struct ChunkWalk {
+  int begin, j, end;
+  ChunkWalk(int b, int e) : begin(b), j(b), end(e) {}
+  // True while a full-width chunk that is not the last one remains.
+  POND_KERNEL_INLINE bool more() const { return end - j > W::width && end - begin >= W::width; }
+  template <class Fn>
+  POND_KERNEL_INLINE void next(Fn& fn) {
+    fn.template operator()<W, false>(j);
+    j += W::width;
+  }
+  // Does the rest.
+  template <class Fn>
+  POND_KERNEL_INLINE void finish(Fn& fn) {
+    using H = typename W::Half;
+    if (end - begin >= W::width) {
+      for (; end - j > W::width; j += W::width) fn.template operator()<W, false>(j);
+      if (j >= end) return;
+      if constexpr (H::width < W::width) {
+        if (end - j <= H::width) {
+          if (end - j < H::width)
+            fn.template operator()<H, true>(end - H::width);
+          else
+            fn.template operator()<H, false>(j);
+          return;
+        }
+      }
+      if (end - j < W::width)
+        fn.template operator()<W, true>(end - W::width);
+      else
+        fn.template operator()<W, false>(j);
+    } else if constexpr (H::width < W::width) {
+      ChunkWalk<H>(begin, end).finish(fn);
+    } else {
+      for (int k = begin; k < end; ++k) fn.template operator()<WideScalar, false>(k);
+    }
+    j = end;
+  }
+};
+
 template <class W, class Fn>
 POND_KERNEL_INLINE void for_chunks(int begin, int end, Fn&& fn) {
-  if (end - begin >= W::width) {
-    int j = begin;
-    for (; j + W::width <= end; j += W::width) fn.template operator()<W>(j);
-    if (j < end) fn.template operator()<W>(end - W::width);
-  } else {
-    for (int j = begin; j < end; ++j) fn.template operator()<WideScalar>(j);
-  }
+  ChunkWalk<W>(begin, end).finish(fn);
 }
 
 // Steps: the Newton steps of the reciprocal square root, a compile-time constant so the four
@@ -66,18 +106,6 @@ template <class W, int Steps>
 struct StepKernel {
   using F = typename W::F;
 
-  POND_KERNEL_INLINE static F rsqrt(F x) {
-    const F half_x = W::mul(x, W::set1(0.5f));
-    F y = W::rsqrt_seed(x, shared::kRsqrtMagic);
-    for (int k = 0; k < Steps; ++k) {
-      F t = W::mul(y, y);
-      t = W::mul(t, half_x);
-      t = W::sub(W::set1(1.5f), t);
-      y = W::mul(y, t);
-    }
-    return y;
-  }
-
   struct Node {
     F x, y, z;
   };
@@ -85,20 +113,68 @@ struct StepKernel {
     return {W::load(v.ux + n), W::load(v.uy + n), W::load(v.uz + n)};
   }
 
-  // The term of spring a->b on node a, b at column offset DJ and row offset DI from a, stored in
-  // the three spring rows at `out` (x, y, z).
+  // A spring a->b: its vector (b at column offset DJ and row offset DI from a), rest length and
+  // the three spring rows at `out` (x, y, z) its term on a goes to.
+  struct Spring {
+    F dx, dy, dz;
+    float rest;
+    float* out;
+  };
   template <int DJ, int DI>
-  POND_KERNEL_INLINE static void spring(const Node& a, const Node& b, float rest, float* out) {
+  POND_KERNEL_INLINE static Spring vec(const Node& a, const Node& b, float rest, float* out) {
     F dx = W::sub(b.x, a.x);
     const F dy = W::sub(b.y, a.y);
     F dz = W::sub(b.z, a.z);
     if constexpr (DJ != 0) dx = W::add(dx, W::set1(static_cast<float>(DJ)));
     if constexpr (DI != 0) dz = W::add(dz, W::set1(static_cast<float>(DI)));
-    const F l2 = W::add(W::add(W::mul(dx, dx), W::mul(dy, dy)), W::mul(dz, dz));
-    const F f = W::sub(W::set1(1.0f), W::mul(W::set1(rest), rsqrt(l2)));
-    W::store(out, W::mul(dx, f));
-    W::store(out + kSlots, W::mul(dy, f));
-    W::store(out + 2 * kSlots, W::mul(dz, f));
+    return {dx, dy, dz, rest, out};
+  }
+
+  // Reciprocal square roots of K values, stage by stage, so that their K independent chains of
+  // dependent operations (the Newton steps are serial) interleave in the instruction stream:
+  //   hx = x * 0.5;  y = seed(x);  Steps times: y = y * (1.5 - (y*y) * hx).
+  template <int K>
+  POND_KERNEL_INLINE static void rsqrt_n(const F (&x)[K], F (&y)[K]) {
+    F hx[K], t[K];
+    for (int k = 0; k < K; ++k) hx[k] = W::mul(x[k], W::set1(0.5f));
+    for (int k = 0; k < K; ++k) y[k] = W::rsqrt_seed(x[k], shared::kRsqrtMagic);
+    for (int step = 0; step < Steps; ++step) {
+      for (int k = 0; k < K; ++k) t[k] = W::mul(y[k], y[k]);
+      for (int k = 0; k < K; ++k) t[k] = W::mul(t[k], hx[k]);
+      for (int k = 0; k < K; ++k) t[k] = W::sub(W::set1(1.5f), t[k]);
+      for (int k = 0; k < K; ++k) y[k] = W::mul(y[k], t[k]);
+    }
+  }
+  POND_KERNEL_INLINE static F rsqrt(F x) {
+    const F in[1] = {x};
+    F out[1];
+    rsqrt_n(in, out);
+    return out[0];
+  }
+
+  // The terms d * (1 - L * rsqrt(l2)), l2 = (dx*dx + dy*dy) + dz*dz, of K springs, each stage for
+  // all K before the next (see rsqrt_n).
+  template <int K>
+  POND_KERNEL_INLINE static void springs(const Spring (&s)[K]) {
+    F l2[K], y[K];
+    for (int k = 0; k < K; ++k)
+      l2[k] = W::add(W::add(W::mul(s[k].dx, s[k].dx), W::mul(s[k].dy, s[k].dy)),
+                     W::mul(s[k].dz, s[k].dz));
+    rsqrt_n(l2, y);
+    for (int k = 0; k < K; ++k) {
+      const F f = W::sub(W::set1(1.0f), W::mul(W::set1(s[k].rest), y[k]));
+      W::store(s[k].out, W::mul(s[k].dx, f));
+      W::store(s[k].out + kSlots, W::mul(s[k].dy, f));
+      W::store(s[k].out + 2 * kSlots, W::mul(s[k].dz, f));
+    }
+  }
+
+  // The term of spring a->b on node a, b at column offset DJ and row offset DI from a, stored in
+  // the three spring rows at `out` (x, y, z).
+  template <int DJ, int DI>
+  POND_KERNEL_INLINE static void spring(const Node& a, const Node& b, float rest, float* out) {
+    const Spring one[1] = {vec<DJ, DI>(a, b, rest, out)};
+    springs<1>(one);
   }
 };
 
@@ -111,75 +187,103 @@ POND_KERNEL_INLINE void fill_band(float* scratch, int band, int slots, float zer
 }
 
 // The springs of row i that block [c0, c1) needs: H, D1, D2 at column indices
-// [max(c0-1, 0), min(c1-1, C-2)], S at [c0, c1), into band `cur`; without a row above, band `cur`
-// becomes -0. Missing indices -1 and C-1 get the signed zero that makes their use an identity.
+// [lo, hi] = [max(c0-1, 0), min(c1-1, C-2)] into H row `hs` and band `cur`, S at [c0, c1) into
+// band `cur`; without a row below, band `cur` becomes -0. Missing indices -1 and C-1 get the signed
+// zero that makes their use an identity. Chunk by chunk (walk(), then finish()).
 template <class W, int Steps>
-void block_springs(const StepView& v, int i, int c0, int c1, float* scratch, int cur) {
-  const int C = v.cols;
-  const bool band = i + 1 < v.rows;
-  float* h = scratch + kRowH * kSlots;
-  float* b = scratch + band_row(cur) * kSlots;
-  const int slot0 = 1 - c0;  // slot of column j is j + slot0
-  const std::size_t row = static_cast<std::size_t>(i) * C;
-  const int lo = c0 > 0 ? c0 - 1 : 0, hi = c1 - 1 < C - 2 ? c1 - 1 : C - 2;
-  const float re = v.k.rest_edge, rd = v.k.rest_diag;
-  if (band) {
-    // The four springs of a cell corner from the cell's four nodes, each loaded once. S is also
-    // evaluated at index c0-1 (slot 0, never read); S(C-1), the one spring without a right
-    // neighbour, is evaluated on its own.
-    for_chunks<W>(lo, hi + 1, [&]<class V>(int j) {
-      using K = StepKernel<V, Steps>;
-      const std::size_t n = row + j;
+struct RowSprings {
+  const StepView& v;
+  int C, c0, c1, lo, hi, slot0;
+  bool band;
+  std::size_t row;
+  float *h, *b;
+  float re, rd;
+  bool s_last = false;
+
+  POND_KERNEL_INLINE RowSprings(const StepView& view, int i, int block0, int block1, float* scratch,
+                                int hs, int cur)
+      : v(view), C(view.cols), c0(block0), c1(block1), lo(block0 > 0 ? block0 - 1 : 0),
+        hi(block1 - 1 < view.cols - 2 ? block1 - 1 : view.cols - 2), slot0(1 - block0),
+        band(i + 1 < view.rows), row(static_cast<std::size_t>(i) * view.cols),
+        h(scratch + h_row(hs) * kSlots), b(scratch + band_row(cur) * kSlots), re(view.k.rest_edge),
+        rd(view.k.rest_diag) {
+    if (!band) fill_band(scratch, cur, c1 - c0, -0.0f);
+  }
+  ChunkWalk<W> walk() const { return ChunkWalk<W>(lo, hi + 1); }
+
+  // The four springs of a cell corner from the cell's four nodes, each loaded once. S is also
+  // evaluated at index c0-1 (slot 0, never read). S(C-1), the one spring without a right
+  // neighbour, comes from the last chunk's right column pair when that chunk overlaps the one
+  // before it (S(j+1) from e and ue instead of S(j) from a and u: the same spring, the same
+  // inputs), else on its own in finish(). (S(c1) of an inner block, also computed then, is never
+  // read.) Without a row below, only H.
+  template <class V, bool Shifted>
+  POND_KERNEL_INLINE void operator()(int j) {
+    using K = StepKernel<V, Steps>;
+    const std::size_t n = row + j;
+    const int s = j + slot0;
+    if (band) {
       const auto a = K::load(v, n), e = K::load(v, n + 1), u = K::load(v, n + C),
                  ue = K::load(v, n + C + 1);
-      const int s = j + slot0;
-      K::template spring<1, 0>(a, e, re, h + s);                      // H:  (i,j) -> (i,j+1)
-      K::template spring<0, 1>(a, u, re, b + kBandS * kSlots + s);    // S:  (i,j) -> (i+1,j)
-      K::template spring<1, 1>(a, ue, rd, b + kBandD1 * kSlots + s);  // D1: (i,j) -> (i+1,j+1)
-      K::template spring<-1, 1>(e, u, rd, b + kBandD2 * kSlots + s);  // D2: (i,j+1) -> (i+1,j)
-    });
-    if (c1 == C) {
+      const typename K::Spring sp[4] = {
+          K::template vec<1, 0>(a, e, re, h + s),  // H:  (i,j) -> (i,j+1)
+          // S:  (i,j) -> (i+1,j), or S(j+1) in a shifted last chunk
+          Shifted ? K::template vec<0, 1>(e, ue, re, b + kBandS * kSlots + s + 1)
+                  : K::template vec<0, 1>(a, u, re, b + kBandS * kSlots + s),
+          K::template vec<1, 1>(a, ue, rd, b + kBandD1 * kSlots + s),   // D1: (i,j) -> (i+1,j+1)
+          K::template vec<-1, 1>(e, u, rd, b + kBandD2 * kSlots + s)};  // D2: (i,j+1) -> (i+1,j)
+      K::springs(sp);
+      if constexpr (Shifted) s_last = true;
+    } else {
+      K::template spring<1, 0>(K::load(v, n), K::load(v, n + 1), re, h + s);
+    }
+  }
+
+  POND_KERNEL_INLINE void finish() {
+    if (band && c1 == C && !s_last) {
       using K = StepKernel<WideScalar, Steps>;
       const std::size_t n = row + C - 1;
-      K::template spring<0, 1>(K::load(v, n), K::load(v, n + C), re, b + kBandS * kSlots + C - 1 + slot0);
+      K::template spring<0, 1>(K::load(v, n), K::load(v, n + C), re,
+                               b + kBandS * kSlots + C - 1 + slot0);
     }
-  } else {
-    for_chunks<W>(lo, hi + 1, [&]<class V>(int j) {
-      using K = StepKernel<V, Steps>;
-      const std::size_t n = row + j;
-      K::template spring<1, 0>(K::load(v, n), K::load(v, n + 1), re, h + j + slot0);
-    });
-    fill_band(scratch, cur, c1 - c0, -0.0f);
-  }
-  for (int c = 0; c < 3; ++c) {
-    if (c0 == 0) {  // index -1 is slot 0
-      h[c * kSlots] = +0.0f;  // only subtracted (by node 0)
-      if (band) {
-        b[(kBandD1 + c) * kSlots] = +0.0f;  // only subtracted (as the lower band)
-        b[(kBandD2 + c) * kSlots] = -0.0f;  // only added (as the upper band)
+    for (int c = 0; c < 3; ++c) {
+      if (c0 == 0) {  // index -1 is slot 0
+        h[c * kSlots] = +0.0f;  // only subtracted (by node 0)
+        if (band) {
+          b[(kBandD1 + c) * kSlots] = +0.0f;  // only subtracted (as the lower band)
+          b[(kBandD2 + c) * kSlots] = -0.0f;  // only added (as the upper band)
+        }
       }
-    }
-    if (c1 == C) {
-      const int s = C - 1 + slot0;
-      h[c * kSlots + s] = -0.0f;  // index C-1: only added (by node C-1)
-      if (band) {
-        b[(kBandD1 + c) * kSlots + s] = -0.0f;  // only added (as the upper band)
-        b[(kBandD2 + c) * kSlots + s] = +0.0f;  // only subtracted (as the lower band)
+      if (c1 == C) {
+        const int s = C - 1 + slot0;
+        h[c * kSlots + s] = -0.0f;  // index C-1: only added (by node C-1)
+        if (band) {
+          b[(kBandD1 + c) * kSlots + s] = -0.0f;  // only added (as the upper band)
+          b[(kBandD2 + c) * kSlots + s] = +0.0f;  // only subtracted (as the lower band)
+        }
       }
     }
   }
+};
+
+template <class W, int Steps>
+POND_KERNEL_INLINE void block_springs(const StepView& v, int i, int c0, int c1, float* scratch,
+                                      int hs, int cur) {
+  RowSprings<W, Steps> sp(v, i, c0, c1, scratch, hs, cur);
+  sp.walk().finish(sp);
+  sp.finish();
 }
 
 // Sums the spring terms of nodes [j, j + width) of row i in canonical order and integrates them.
 // Returns `check` plus the new velocity components (non-finite iff the step blew up).
 template <class W>
 POND_KERNEL_INLINE typename W::F integrate_at(const StepView& v, int i, int j, int c0,
-                                              const float* scratch, int below, int above,
+                                              const float* scratch, int hs, int below, int above,
                                               typename W::F check) {
   using F = typename W::F;
   const std::size_t n = static_cast<std::size_t>(i) * v.cols + j;
   const int s = j - c0 + 1;  // slot of column j
-  const float* h = scratch + kRowH * kSlots + s;
+  const float* h = scratch + h_row(hs) * kSlots + s;
   const float* lo = scratch + band_row(below) * kSlots + s;
   const float* up = scratch + band_row(above) * kSlots + s;
   const F kc = W::set1(v.k.kc), kd = W::set1(v.k.kd), dt = W::set1(v.k.dt);
@@ -209,32 +313,83 @@ POND_KERNEL_INLINE typename W::F integrate_at(const StepView& v, int i, int j, i
   return check;
 }
 
+// The integration of row i of a block, chunk by chunk, with its blow-up check per chunk width.
+template <class W>
+struct RowIntegrate {
+  using H = typename W::Half;
+  const StepView& v;
+  int i = 0, c0 = 0, hs = 0, below = 0, above = 0;
+  const float* scratch = nullptr;
+  typename W::F check = W::set1(0.0f);
+  typename H::F half_check = H::set1(0.0f);
+  float tail_check = 0.0f;
+
+  explicit RowIntegrate(const StepView& view) : v(view) {}
+  template <class V, bool>
+  POND_KERNEL_INLINE void operator()(int j) {
+    if constexpr (V::width == W::width && W::width > 1)
+      check = integrate_at<W>(v, i, j, c0, scratch, hs, below, above, check);
+    else if constexpr (V::width == H::width && H::width > 1)
+      half_check = integrate_at<H>(v, i, j, c0, scratch, hs, below, above, half_check);
+    else
+      tail_check = integrate_at<WideScalar>(v, i, j, c0, scratch, hs, below, above, tail_check);
+  }
+  float sum() const { return W::sum_lanes(check) + H::sum_lanes(half_check) + tail_check; }
+};
+
 // One substep for rows [r0, r1), block by block. Returns the sum of the new velocity components
 // of those rows (non-finite iff some velocity is non-finite or astronomically large).
+//
+// The springs run one row ahead of the integration, in the same loop: a chunk of row i+1's springs
+// (long dependency chains, multiplier-bound), then a chunk of row i's integration (loads and
+// additions), so the two kinds of work overlap in the core; and the spring rows row i reads were
+// stored a whole row earlier (a load that straddles two stores still in flight, as the j-1 terms
+// do, cannot be forwarded from them and waits).
 template <class W, int Steps>
-float step_rows(const StepView& v, int r0, int r1, float* scratch) {
-  typename W::F check = W::set1(0.0f);
-  float tail_check = 0.0f;
+float step_rows(const StepView& v, int r0, int r1, float* scratch_base) {
+  RowIntegrate<W> in(v);
   for (int c0 = 0; c0 < v.cols; c0 += kBlockCols) {
     const int c1 = c0 + kBlockCols < v.cols ? c0 + kBlockCols : v.cols;
-    int below = 0, above = 1;
+    // The spring chunks start at slot 1 (first block) or 0: shift the slots so that it is 64-byte
+    // aligned (scratch and kSlots are), making the chunks' stores aligned where they do not
+    // overlap. Unaligned vector stores cost Zen 4 about twice as much.
+    float* const scratch = scratch_base + (c0 == 0 ? kSlotAlign - 1 : 0);
+    int below = 0, above = 1, ahead = 2;  // bands of rows i-1, i, i+1
+    int hs = 0;                           // H row of row i (row i+1's is 1 - hs)
     if (r0 == 0) {
       fill_band(scratch, below, c1 - c0, +0.0f);  // no row -1: lower-band terms subtract +0
     } else {
-      block_springs<W, Steps>(v, r0 - 1, c0, c1, scratch, below);
+      block_springs<W, Steps>(v, r0 - 1, c0, c1, scratch, 1 - hs, below);  // its H is not used
     }
+    block_springs<W, Steps>(v, r0, c0, c1, scratch, hs, above);
+    in.c0 = c0;
+    in.scratch = scratch;
     for (int i = r0; i < r1; ++i) {
-      block_springs<W, Steps>(v, i, c0, c1, scratch, above);
-      for_chunks<W>(c0, c1, [&]<class V>(int j) {
-        if constexpr (V::width == W::width && W::width > 1)
-          check = integrate_at<W>(v, i, j, c0, scratch, below, above, check);
-        else
-          tail_check = integrate_at<WideScalar>(v, i, j, c0, scratch, below, above, tail_check);
-      });
-      std::swap(below, above);
+      in.i = i;
+      in.hs = hs;
+      in.below = below;
+      in.above = above;
+      ChunkWalk<W> iw(c0, c1);
+      if (i + 1 < r1) {
+        RowSprings<W, Steps> sp(v, i + 1, c0, c1, scratch, 1 - hs, ahead);
+        ChunkWalk<W> sw = sp.walk();
+        if constexpr (W::kInterleave)
+          while (sw.more() && iw.more()) {
+            sw.next(sp);
+            iw.next(in);
+          }
+        sw.finish(sp);
+        sp.finish();
+      }
+      iw.finish(in);
+      const int done = below;
+      below = above;
+      above = ahead;
+      ahead = done;
+      hs = 1 - hs;
     }
   }
-  return W::sum_lanes(check) + tail_check;
+  return in.sum();
 }
 
 }  // namespace POND_ISA

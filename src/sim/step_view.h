@@ -17,13 +17,16 @@ struct StepView {
 };
 
 // The kernel walks the grid in blocks of kBlockCols columns, each block down the rows of a thread's
-// range, so its spring rows stay in L1 and every spring row sits at a compile-time offset from one
-// base pointer. Per thread, a scratch of kSpringRows rows of kSlots floats: the horizontal springs
-// H (x, y, z) and two bands (the one below the current row and the one above) of S, D1, D2
-// (x, y, z each). Slot s of a row holds column index j = c0 + s - 1 of the block starting at c0,
-// so slot 0 is the column left of the block (or the missing column -1).
+// range, so its spring rows stay in the core's caches and every spring row sits at a compile-time
+// offset from one base pointer. Per thread, a scratch of kSpringRows rows of kSlots floats: two
+// rows of horizontal springs H (x, y, z; the current row's and the next row's) and three bands
+// (below the current row, above it, and above the next row) of S, D1, D2 (x, y, z each). Slot s of
+// a row holds column index j = c0 + s - 1 of the block starting at c0, so slot 0 is the column
+// left of the block (or the missing column -1); the kernel may shift all slots by up to
+// kSlotAlign - 1 to align its stores.
 inline constexpr int kBlockCols = 512;
-inline constexpr int kSlots = kBlockCols + 8;
-inline constexpr int kSpringRows = 3 + 2 * 9;
+inline constexpr int kSlotAlign = 16;  // floats in 64 bytes
+inline constexpr int kSlots = kBlockCols + 2 * kSlotAlign;  // a multiple of kSlotAlign
+inline constexpr int kSpringRows = 2 * 3 + 3 * 9;
 
 }  // namespace pond::sim
