@@ -3,21 +3,29 @@
 # one of 200 frames (sizes from 64x48 to 1280x720, a 1x1 window among them) while vsync is toggled
 # every 7 frames and splashes keep the water busy. It must exit 0 with no validation message
 # (the demo exits non-zero on any) and leave a final screenshot of the scene; the process's peak
-# RSS must not grow with the number of recreations (compared with a 40-frame storm).
+# RSS must not grow with the number of recreations: the sizes repeat every 50 frames, so a 50-frame
+# storm reaches the same sizes (and the same peak, bar allocator noise) as the 200-frame one, which
+# recreates the swapchain four times as often. glibc's dynamic mmap threshold is pinned for the
+# runs: otherwise each freed swapchain-sized block raises it, later blocks come from the heap, and
+# the peak grows with fragmentation (measured: +21 MiB from 50 to 400 frames, against +3 MiB
+# pinned), which is the allocator's choice, not a leak. Leaked Vulkan objects are reported by the
+# validation layer when the device is destroyed.
 # Usage: storm_test.sh PATH/TO/pond WORKDIR
 set -u
 pond=$1
 work=$2
 rm -rf "$work" && mkdir -p "$work" || exit 1
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# Failures are counted in a file: run() is called in a command substitution (a subshell).
+: > "$work/failures"
+fail() { echo "FAIL: $*" | tee -a "$work/failures" >&2; }
 
 storm() {  # storm FRAMES SCRIPT
   frames=$1 out=$2
   : > "$out"
   f=0
   while [ $f -lt "$frames" ]; do
-    w=$(( 64 + (f * 397) % 1217 )); h=$(( 48 + (f * 211) % 673 ))
+    p=$((f % 50))
+    w=$(( 64 + (p * 397) % 1217 )); h=$(( 48 + (p * 211) % 673 ))
     [ $((f % 50)) -eq 25 ] && { w=1; h=1; }
     echo "frame $f resize $w $h" >> "$out"
     [ $((f % 7)) -eq 3 ] && echo "frame $f key F3" >> "$out"
@@ -29,7 +37,7 @@ storm() {  # storm FRAMES SCRIPT
 
 run() {  # run FRAMES NAME: prints the peak RSS in KiB
   storm "$1" "$work/$2.script"
-  xvfb-run -a -s "-screen 0 1400x900x24" /usr/bin/time -f "%M" -o "$work/$2.rss" \
+  MALLOC_MMAP_THRESHOLD_=131072 xvfb-run -a -s "-screen 0 1400x900x24" /usr/bin/time -f "%M" -o "$work/$2.rss" \
     "$pond" demo --frames "$1" --size 320x200 --script "$work/$2.script" --validation --quiet \
     --screenshot "$work/$2.png" > "$work/$2.out" 2>&1
   rc=$?
@@ -38,12 +46,12 @@ run() {  # run FRAMES NAME: prints the peak RSS in KiB
   tail -n 1 "$work/$2.rss"
 }
 
-short=$(run 40 short)
+short=$(run 50 short)
 long=$(run 200 long)
-echo "peak RSS: 40-frame storm ${short} KiB, 200-frame storm ${long} KiB"
+echo "peak RSS: 50-frame storm ${short} KiB, 200-frame storm ${long} KiB"
 case "$short$long" in *[!0-9]*|"") fail "could not read the peak RSS ($short, $long)" ;; *)
-  [ "$long" -le $((short + 32768)) ] || fail "peak RSS grew by more than 32 MiB: $short -> $long KiB" ;;
+  [ "$long" -le $((short + 8192)) ] || fail "peak RSS grew by more than 8 MiB: $short -> $long KiB" ;;
 esac
 
-if [ $failures -eq 0 ]; then echo "swapchain storm passed"; exit 0; fi
+if [ ! -s "$work/failures" ]; then echo "swapchain storm passed"; exit 0; fi
 exit 1
