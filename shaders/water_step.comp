@@ -24,7 +24,19 @@
 //    span the whole row strip (up to POND_STEP_LOCAL_X_MAX = 256 invocations, a 1024-wide grid in
 //    the quad path). With the barrier per row (main_quad) a group then reads and writes each row
 //    as one contiguous run per component, which the hardware prefetcher follows: at 1024^2 this
-//    cut the samples on the fetches from ~24% to ~11% and gained ~25% per CPU second over 64.
+//    cut the samples on the fetches from ~24% to ~11% and gained 14-25% per CPU second over 64.
+//  - Where the time goes now (perf on the JIT code, 1024^2 exact): ~38% the 6 vec4 store loops
+//    (per lane: exec test, then per float a spill of the value vector, an extract, a bounds
+//    compare + branch and a 4-byte store; the loop counter lives in the coroutine frame the
+//    barrier makes), ~20% the spring arithmetic (324 vmulps per 8 lanes x 4 columns x 1 row: the
+//    4.75 springs per node, straight-line), ~10% coroutine-frame and stack traffic (the carried
+//    band and rows do not fit the 32 vector registers), ~10% the texel fetches, the rest
+//    llvmpipe's and the kernel's. The stores are the floor with 32-bit types in Mesa 22.3:
+//    a 64-bit store moves 8 bytes per lane step (u64vec2 stores measured +5-10% per CPU
+//    second) but needs shaderInt64, which the context does not enable.
+//  - Tried and slower: R32F imageStores for the quad outputs (~1.5x worse); no barrier (each
+//    8-lane chunk walks its strip alone; memory-bound, 2x worse, also with 2-row strips); a
+//    barrier every 2 or 4 rows; 32 or 64 rows per strip (32 equal within noise, 64 worse).
 //
 // Exact mode (kFastMath false) is bit-identical to the CPU kernel (src/sim/step_kernel.h): every
 // operation `precise` (no FMA contraction), the Newton rsqrt of shared/exact_math.h (only + - *),
