@@ -65,23 +65,56 @@ struct Pass {
   }
 };
 
-// The scale-1 diagonal vertices: the centres (odd x, odd y) of the 2x2 squares. Their four
-// children (x -+ 1, y) and (x, y -+ 1) are scale-1 axis vertices, computed before and inside the
-// grid whenever the vertex is, so the general vertex()'s border checks and child loop go away.
-void diagonal_centres_of_cells(const Pass& pass) {
+// Scale 1, row by row. Horizontal hypotenuses (even y, odd x) and vertical ones (odd y, even x)
+// have no children: plain loops over contiguous triples.
+void horizontal_row(const Pass& pass, int y) {
+  const std::size_t r0 = static_cast<std::size_t>(y) * static_cast<std::size_t>(pass.cols);
+  for (int x = 1; x + 1 < pass.cols; x += 2) {
+    const std::size_t id = r0 + static_cast<std::size_t>(x);
+    pass.out[id] = {pass.deviation(id, id - 1, id + 1) * kBoundGrow, pass.budget[id]};
+  }
+}
+
+void vertical_row(const Pass& pass, int y) {
+  const std::size_t row = static_cast<std::size_t>(pass.cols);
+  const std::size_t r0 = static_cast<std::size_t>(y) * row;
+  for (int x = 0; x < pass.cols; x += 2) {
+    const std::size_t id = r0 + static_cast<std::size_t>(x);
+    pass.out[id] = {pass.deviation(id, id - row, id + row) * kBoundGrow, pass.budget[id]};
+  }
+}
+
+// The diagonal ones are the centres (odd x, odd y) of the 2x2 squares. Their four children
+// (x -+ 1, y) and (x, y -+ 1) are scale-1 axis vertices, inside the grid whenever the vertex is,
+// so the general vertex()'s border checks and child loop go away.
+void diagonal_row(const Pass& pass, int y) {
   const std::size_t row = static_cast<std::size_t>(pass.cols);
   const NestedBound* bounds = pass.out;
-  for (int y = 1, b = 0; y + 1 < pass.rows; y += 2, ++b)
-    for (int x = 1, a = 0; x + 1 < pass.cols; x += 2, ++a) {
-      const std::size_t id = static_cast<std::size_t>(y) * row + static_cast<std::size_t>(x);
-      const std::size_t e = ((a + b) & 1) == 0 ? row + 1 : row - 1;  // main or anti diagonal
-      const NestedBound w = bounds[id - 1], east = bounds[id + 1];
-      const NestedBound n = bounds[id - row], s = bounds[id + row];
-      const float worst_child = std::max(std::max(w.error, east.error), std::max(n.error, s.error));
-      const float least = std::min(std::min(pass.budget[id], std::min(w.min_budget, east.min_budget)),
-                                   std::min(n.min_budget, s.min_budget));
-      pass.out[id] = {(pass.deviation(id, id - e, id + e) + worst_child) * kBoundGrow, least};
+  const int b = y / 2;  // the squares' row index
+  for (int x = 1, a = 0; x + 1 < pass.cols; x += 2, ++a) {
+    const std::size_t id = static_cast<std::size_t>(y) * row + static_cast<std::size_t>(x);
+    const std::size_t e = ((a + b) & 1) == 0 ? row + 1 : row - 1;  // main or anti diagonal
+    const NestedBound w = bounds[id - 1], east = bounds[id + 1];
+    const NestedBound n = bounds[id - row], s = bounds[id + row];
+    const float worst_child = std::max(std::max(w.error, east.error), std::max(n.error, s.error));
+    const float least = std::min(std::min(pass.budget[id], std::min(w.min_budget, east.min_budget)),
+                                 std::min(n.min_budget, s.min_budget));
+    pass.out[id] = {(pass.deviation(id, id - e, id + e) + worst_child) * kBoundGrow, least};
+  }
+}
+
+// All of scale 1 (three quarters of the vertices) in one sweep down the rows, so that each row is
+// still in cache when the next needs it: even row y's horizontal vertices, then the odd row above,
+// whose vertical vertices need rows y - 2 .. y and whose diagonal ones need those and the
+// horizontal vertices of rows y - 2 and y.
+void scale_one(const Pass& pass) {
+  for (int y = 0; y < pass.rows; y += 2) {
+    horizontal_row(pass, y);
+    if (y >= 2) {
+      vertical_row(pass, y - 1);
+      diagonal_row(pass, y - 1);
     }
+  }
 }
 
 }  // namespace
@@ -92,10 +125,6 @@ void nested_bounds(const GridHierarchy& grid, const NodePositions& p, float larg
   // Float rounding of a deviation: each of its ~6 operations errs by at most half an ulp of the
   // largest magnitude involved (<= 2 * largest), so 16 ulps of `largest` is a safe slack.
   const float slack = 16 * largest * std::numeric_limits<float>::epsilon();
-  // Vertices whose hypotenuse leaves the grid (their triangles are clipped, and always scanned)
-  // keep "nothing proved": an infinite bound and a zero budget, so their parents prove nothing
-  // from them either.
-  std::fill(bounds, bounds + p.nodes(), NestedBound{std::numeric_limits<float>::infinity(), 0.0f});
   const Pass pass{p.x, p.y, p.z, budget, bounds, rows, cols,
                   slack};
   const std::ptrdiff_t row = cols;
@@ -105,30 +134,16 @@ void nested_bounds(const GridHierarchy& grid, const NodePositions& p, float larg
     // Axis-aligned hypotenuses of length 2h: horizontal (x = h mod 2h, y = 0 mod 2h) and vertical
     // (x = 0 mod 2h, y = h mod 2h). Their children are the diagonal centres of scale h/2 around.
     const int axis_children[4][2] = {{-q, -q}, {q, -q}, {-q, q}, {q, q}};
-    if (h == 1) {  // half of all nodes: no children, so a plain loop over contiguous triples
-      for (int y = 0; y < rows; y += 2)
-        for (int x = 1; x + 1 < cols; x += 2) {
-          const std::size_t id = static_cast<std::size_t>(y) * static_cast<std::size_t>(cols) + static_cast<std::size_t>(x);
-          bounds[id] = {pass.deviation(id, id - 1, id + 1) * kBoundGrow, budget[id]};
-        }
-      const std::size_t r = static_cast<std::size_t>(cols);
-      for (int y = 1; y + 1 < rows; y += 2)
-        for (int x = 0; x < cols; x += 2) {
-          const std::size_t id = static_cast<std::size_t>(y) * r + static_cast<std::size_t>(x);
-          bounds[id] = {pass.deviation(id, id - r, id + r) * kBoundGrow, budget[id]};
-        }
-    } else {
+    if (h == 1) {
+      scale_one(pass);
+      continue;
+    }
     for (int y = 0; y < rows; y += step)
       for (int x = h; x + h < cols; x += step) pass.vertex(x, y, h, axis_children, 4, q);
     for (int y = h; y + h < rows; y += step)
       for (int x = 0; x < cols; x += step) pass.vertex(x, y, h * row, axis_children, 4, q);
-    }
     // Diagonal hypotenuses of the squares of side 2h (main diagonal when the square's index
     // parity is even, see GridHierarchy::diamond): children are that square's edge midpoints.
-    if (h == 1) {  // a quarter of all nodes: children always inside, no per-child checks
-      diagonal_centres_of_cells(pass);
-      continue;
-    }
     const int diag_children[4][2] = {{-h, 0}, {h, 0}, {0, -h}, {0, h}};
     for (int y = h, b = 0; y + h < rows; y += step, ++b)
       for (int x = h, a = 0; x + h < cols; x += step, ++a)

@@ -10,18 +10,24 @@
 // its other two vertices and deviation(v) at v. min_budget(v) covers every node of T (and a bit
 // more: the children's diamonds reach outside T, which only makes it smaller). So
 // bound(v) <= min_budget(v) proves T needs no split: a quick, conservative accept.
+#include <limits>
+
 #include "lod/grid_hierarchy.h"
 #include "lod/node_positions.h"
 
 namespace pond::lod {
 
-// positions: stride 1 (the builder's own copy). One NestedBound per node; always-split vertices
-// get error = +infinity (they are never tested).
+// positions: stride 1 (the builder's own copy). One NestedBound per node, written for the same
+// vertices every frame. The others must hold kNothingProved, set once by the caller: tile corners
+// (always split, never tested) and vertices whose hypotenuse leaves the grid (their triangles are
+// clipped and always scanned), so that their parents prove nothing from them either.
 // Both numbers of a split vertex side by side: the refinement reads them together.
 struct NestedBound {
   float error;       // bound(v)
   float min_budget;  // min_budget(v)
 };
+
+constexpr NestedBound kNothingProved{std::numeric_limits<float>::infinity(), 0.0f};
 
 // `largest` bounds every |coordinate| (it sizes the float rounding slack).
 void nested_bounds(const GridHierarchy& grid, const NodePositions& positions, float largest,

@@ -29,7 +29,7 @@ LodBuilder::LodBuilder(int rows, int cols) : grid_(rows, cols) {
   const std::size_t n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
   // The row scan reads a few floats past the last node (triangle_scan.h).
   x_.resize(n + kScanOverread), y_.resize(n + kScanOverread), z_.resize(n + kScanOverread);
-  budget_.resize(n + kScanOverread), bounds_.resize(n);
+  budget_.resize(n + kScanOverread), bounds_.assign(n, kNothingProved);
   state_.resize(grid_.domain_nodes());
 }
 
