@@ -9,7 +9,7 @@ packages=(
   glslang-tools spirv-tools
   libglfw3-dev libglm-dev libimgui-dev libstb-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev libmeshoptimizer-dev
-  xvfb xauth time gcc-multilib g++-multilib
+  xvfb xauth twm time gcc-multilib g++-multilib
   gnuplot-nox
   clang-14 libclang-rt-14-dev  # scripts/fuzz.sh: libFuzzer and clang's ASan/UBSan runtimes
 )

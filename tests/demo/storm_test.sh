@@ -10,6 +10,9 @@
 # the peak grows with fragmentation (measured: +21 MiB from 50 to 400 frames, against +3 MiB
 # pinned), which is the allocator's choice, not a leak. Leaked Vulkan objects are reported by the
 # validation layer when the device is destroyed.
+# Then minimize and restore, twice, under a window manager (twm, tests/demo/twmrc; an X server
+# alone ignores iconify requests): the demo must see the minimized frames, draw nothing in them,
+# and come back to the same swapchain path.
 # Usage: storm_test.sh PATH/TO/pond WORKDIR
 set -u
 pond=$1
@@ -52,6 +55,19 @@ echo "peak RSS: 50-frame storm ${short} KiB, 200-frame storm ${long} KiB"
 case "$short$long" in *[!0-9]*|"") fail "could not read the peak RSS ($short, $long)" ;; *)
   [ "$long" -le $((short + 8192)) ] || fail "peak RSS grew by more than 8 MiB: $short -> $long KiB" ;;
 esac
+
+# Minimize and restore, with a splash in between.
+printf 'frame 5 minimize\nframe 15 restore\nframe 20 click 160 100\nframe 25 minimize\nframe 30 restore\n' \
+  > "$work/minimize.script"
+here=$(dirname "$0")
+xvfb-run -a -s "-screen 0 1400x900x24" sh -c "twm -f '$here/twmrc' > '$work/twm.log' 2>&1 & wm=\$!; sleep 0.5;
+  '$pond' demo --frames 40 --size 320x200 --script '$work/minimize.script' --validation \
+    --screenshot '$work/minimize.png' > '$work/minimize.out' 2>&1; rc=\$?; kill \$wm; exit \$rc"
+rc=$?
+[ $rc -eq 0 ] || fail "minimize: exit $rc: $(tail -n 5 "$work/minimize.out")"
+grep -q "frames minimized" "$work/minimize.out" || fail "minimize: the demo never saw its window minimized"
+[ "$(wc -c < "$work/minimize.png" 2> /dev/null || echo 0)" -gt 1000 ] || fail "minimize: no screenshot"
+grep "frames minimized" "$work/minimize.out"
 
 if [ ! -s "$work/failures" ]; then echo "swapchain storm passed"; exit 0; fi
 exit 1

@@ -102,7 +102,9 @@ void InputDispatch::dispatch(const InputEvent& e, bool ui_mouse, bool ui_keyboar
       return;
     case InputEvent::Kind::resize:
     case InputEvent::Kind::screenshot:
-      return;  // handled by the app (swapchain, files), not gestures
+    case InputEvent::Kind::minimize:
+    case InputEvent::Kind::restore:
+      return;  // handled by the app (window, swapchain, files), not gestures
   }
 }
 

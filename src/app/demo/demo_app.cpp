@@ -397,7 +397,7 @@ int DemoApp::run() {
   const Clock::time_point start = Clock::now();
   Clock::time_point last = start;
   std::size_t next_event = 0;
-  std::int64_t frame = 0;
+  std::int64_t frame = 0, drawn = 0, minimized_frames = 0;
   double total_ms = 0, acquire_ms = 0, present_ms = 0;
   gpu::FrameStats sum{};
   while (!quit_ && (options_.frames == 0 || frame < options_.frames)) {
@@ -409,6 +409,10 @@ int DemoApp::run() {
       const InputEvent& e = script_.events[next_event].event;
       if (e.kind == InputEvent::Kind::resize) {
         window_.set_size(static_cast<int>(e.x), static_cast<int>(e.y));
+      } else if (e.kind == InputEvent::Kind::minimize) {
+        window_.minimize();
+      } else if (e.kind == InputEvent::Kind::restore) {
+        window_.restore();
       } else if (e.kind == InputEvent::Kind::screenshot) {
         take_screenshot_next(script_.screenshots[static_cast<std::size_t>(e.screenshot)]);
       } else {
@@ -421,11 +425,15 @@ int DemoApp::run() {
     events.clear();
     if (quit_) break;
 
-    const vk::Extent2D fb = window_.framebuffer_extent();
-    if (fb.width == 0 || fb.height == 0) {  // minimized: nothing to draw into
+    // Minimized: draw nothing and sleep until something happens (at most 0.1 s). The frame still
+    // counts, so --frames ends and a script's later events (a restore) still come.
+    if (window_.minimized()) {
       window_.wait(0.1);
+      ++minimized_frames;
+      ++frame;
       continue;
     }
+    const vk::Extent2D fb = window_.framebuffer_extent();
     if (fb != swapchain_.extent() || settings_.vsync != swapchain_.vsync()) swapchain_.recreate(fb, settings_.vsync);
     stats_.width = static_cast<int>(swapchain_.extent().width);
     stats_.height = static_cast<int>(swapchain_.extent().height);
@@ -446,23 +454,29 @@ int DemoApp::run() {
     const Clock::time_point t = Clock::now();
     const double ms = std::chrono::duration<double, std::milli>(t - last).count();
     last = t;
-    stats_.frame_ms = frame == 0 ? ms : 0.9 * stats_.frame_ms + 0.1 * ms;
+    stats_.frame_ms = drawn == 0 ? ms : 0.9 * stats_.frame_ms + 0.1 * ms;
     stats_.fps = stats_.frame_ms > 0 ? 1000.0 / stats_.frame_ms : 0;
-    if (frame > 0) {  // the first frame carries pipeline and allocation warm-up
+    if (drawn > 0) {  // the first frame carries pipeline and allocation warm-up
       total_ms += ms;
       sum.simulate_ms += stats_.last.simulate_ms, sum.lod_ms += stats_.last.lod_ms, sum.draw_ms += stats_.last.draw_ms;
       sum.triangles += stats_.last.triangles;
       acquire_ms += acquire_ms_, present_ms += present_ms_;
     }
+    ++drawn;
     ++frame;
   }
   loop_->wait_idle();
   ctx_.device().waitIdle();
-  if (!options_.quiet && frame > 1) {
-    const double n = static_cast<double>(frame - 1);
+  if (minimized_frames > 0 && !options_.quiet)
+    std::printf("pond demo: %lld of %lld frames minimized (nothing drawn)\n", static_cast<long long>(minimized_frames),
+                static_cast<long long>(frame));
+  if (!options_.screenshot.empty() && window_.minimized() && options_.frames > 0)
+    throw RuntimeError("the window was minimized at the last frame: no screenshot for " + options_.screenshot);
+  if (!options_.quiet && drawn > 1) {
+    const double n = static_cast<double>(drawn - 1);
     std::printf("pond demo: %lld frames at %ux%u on %s, %s, %s: %.2f ms/frame (%.1f FPS); simulate %.2f, LOD %.2f, "
                 "draw %.2f, acquire %.2f, present %.2f ms; %.0f of %zu triangles\n",
-                static_cast<long long>(frame), swapchain_.extent().width, swapchain_.extent().height,
+                static_cast<long long>(drawn), swapchain_.extent().width, swapchain_.extent().height,
                 ctx_.device_name().c_str(), stats_.solver.c_str(), stats_.present_mode.c_str(), total_ms / n,
                 1000.0 * n / total_ms, sum.simulate_ms / n, sum.lod_ms / n, sum.draw_ms / n, acquire_ms / n, present_ms / n,
                 static_cast<double>(sum.triangles) / n, stats_.last.full_triangles);

@@ -5,7 +5,7 @@
 namespace pond::app::demo {
 
 struct InputEvent {
-  enum class Kind { key, button, cursor, scroll, resize, screenshot };
+  enum class Kind { key, button, cursor, scroll, resize, screenshot, minimize, restore };
   Kind kind = Kind::key;
   int code = 0;     // key: GLFW_KEY_*; button: GLFW_MOUSE_BUTTON_*
   int action = 0;   // GLFW_PRESS / GLFW_RELEASE / GLFW_REPEAT

@@ -110,7 +110,7 @@ Script parse_script(const std::string& text, const std::string& source) {
       e.scripted = true;
       script.events.push_back({frame, e});
     };
-    const std::string verb = p.word("event (key, click, drag, scroll, resize, screenshot)");
+    const std::string verb = p.word("event (key, click, drag, scroll, resize, screenshot, minimize, restore)");
     if (verb == "key") {
       const std::string name = p.word("key name");
       const int key = key_from_name(name);
@@ -141,13 +141,17 @@ Script parse_script(const std::string& text, const std::string& source) {
     } else if (verb == "resize") {
       const auto w = p.integer("width", 1, 16384), h = p.integer("height", 1, 16384);
       add({.kind = Kind::resize, .x = static_cast<double>(w), .y = static_cast<double>(h)});
+    } else if (verb == "minimize") {
+      add({.kind = Kind::minimize});
+    } else if (verb == "restore") {
+      add({.kind = Kind::restore});
     } else if (verb == "screenshot") {
       const std::string file = p.word("file name");
       check_output_path(file);
       script.screenshots.push_back(file);
       add({.kind = Kind::screenshot, .screenshot = static_cast<int>(script.screenshots.size() - 1)});
     } else {
-      p.fail("unknown event '" + verb + "' (key, click, drag, scroll, resize, screenshot)");
+      p.fail("unknown event '" + verb + "' (key, click, drag, scroll, resize, screenshot, minimize, restore)");
     }
     p.end();
   }

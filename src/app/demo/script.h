@@ -10,6 +10,8 @@
 //   frame N scroll DY                         mouse wheel (DY > 0 zooms in)
 //   frame N resize W H                        resize the window to W x H
 //   frame N screenshot FILE                   save frame N as a PNG (written atomically)
+//   frame N minimize / frame N restore        iconify / restore the window (needs a window
+//                                             manager; frames while minimized draw nothing)
 //
 // Frames count from 0; events of one frame run in file order, after the window's own events.
 // NAME is a letter, a digit, F1..F12, or one of SPACE ESCAPE ENTER TAB HOME LEFT RIGHT UP DOWN

@@ -82,6 +82,13 @@ vk::Extent2D Window::framebuffer_extent() const {
   return {static_cast<std::uint32_t>(w < 0 ? 0 : w), static_cast<std::uint32_t>(h < 0 ? 0 : h)};
 }
 
+bool Window::minimized() const {
+  const vk::Extent2D fb = framebuffer_extent();
+  return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) == GLFW_TRUE || fb.width == 0 || fb.height == 0;
+}
+void Window::minimize() const { glfwIconifyWindow(window_); }
+void Window::restore() const { glfwRestoreWindow(window_); }
+
 void Window::set_size(int width, int height) const { glfwSetWindowSize(window_, width, height); }
 void Window::set_title(const std::string& title) const { glfwSetWindowTitle(window_, title.c_str()); }
 

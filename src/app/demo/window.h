@@ -38,8 +38,12 @@ class Window {
   // Blocks until something happens (while minimized), at most `seconds`.
   void wait(double seconds);
   std::vector<InputEvent>& events() { return events_; }
-  // The framebuffer size in pixels (0 x 0 while minimized).
+  // The framebuffer size in pixels (0 x 0 while minimized on some systems; X11 keeps the size).
   vk::Extent2D framebuffer_extent() const;
+  // Iconified, or with an empty framebuffer: nothing to draw into, nothing anyone sees.
+  bool minimized() const;
+  void minimize() const;  // a request to the window manager (none: nothing happens)
+  void restore() const;
   void set_size(int width, int height) const;
   void set_title(const std::string& title) const;
   double cursor_x() const { return cursor_x_; }
