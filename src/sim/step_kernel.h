@@ -46,58 +46,37 @@ POND_KERNEL_INLINE constexpr int h_row(int h) { return 3 * h; }
 POND_KERNEL_INLINE constexpr int band_row(int band) { return 6 + 9 * band; }
 inline constexpr int kBandS = 0, kBandD1 = 3, kBandD2 = 6;
 
-// Chunks of columns: fn.template operator()<V, Shifted>(j) does columns [j, j + V::width). A range
-// [begin, end) is covered by chunks of W while more than W::width columns remain, then one last
-// chunk ending at `end`, which overlaps the one before it where the columns do not divide evenly
-// (it recomputes some columns from the same inputs: the same bits). The last chunk is a chunk of
+// Calls fn.template operator()<V, Shifted>(j) for chunks of V::width columns [j, j + V::width)
+// covering [begin, end): chunks of W while more than W::width columns remain, then one last chunk
+// ending at `end`, which overlaps the one before it where the columns do not divide evenly (it
+// recomputes some columns from the same inputs: the same bits). The last chunk is a chunk of
 // W::Half (half as wide; half the cost where the wide unit is split in two, as on Zen 4) when that
 // covers the rest. Shifted is true for a last chunk that starts before the columns not done yet.
 // A range narrower than W is done with W::Half, or one column at a time with the scalar backend.
-//
-// ChunkWalk does the same one chunk at a time, so that two walks can be interleaved.
-template <class W>
-struct ChunkWalk {
-  int begin, j, end;
-  ChunkWalk(int b, int e) : begin(b), j(b), end(e) {}
-  // True while a full-width chunk that is not the last one remains.
-  POND_KERNEL_INLINE bool more() const { return end - j > W::width && end - begin >= W::width; }
-  template <class Fn>
-  POND_KERNEL_INLINE void next(Fn& fn) {
-    fn.template operator()<W, false>(j);
-    j += W::width;
-  }
-  // Does the rest.
-  template <class Fn>
-  POND_KERNEL_INLINE void finish(Fn& fn) {
-    using H = typename W::Half;
-    if (end - begin >= W::width) {
-      for (; end - j > W::width; j += W::width) fn.template operator()<W, false>(j);
-      if (j >= end) return;
-      if constexpr (H::width < W::width) {
-        if (end - j <= H::width) {
-          if (end - j < H::width)
-            fn.template operator()<H, true>(end - H::width);
-          else
-            fn.template operator()<H, false>(j);
-          return;
-        }
-      }
-      if (end - j < W::width)
-        fn.template operator()<W, true>(end - W::width);
-      else
-        fn.template operator()<W, false>(j);
-    } else if constexpr (H::width < W::width) {
-      ChunkWalk<H>(begin, end).finish(fn);
-    } else {
-      for (int k = begin; k < end; ++k) fn.template operator()<WideScalar, false>(k);
-    }
-    j = end;
-  }
-};
-
 template <class W, class Fn>
 POND_KERNEL_INLINE void for_chunks(int begin, int end, Fn&& fn) {
-  ChunkWalk<W>(begin, end).finish(fn);
+  using H = typename W::Half;
+  if (end - begin >= W::width) {
+    int j = begin;
+    for (; end - j > W::width; j += W::width) fn.template operator()<W, false>(j);
+    if constexpr (H::width < W::width) {
+      if (end - j <= H::width) {
+        if (end - j < H::width)
+          fn.template operator()<H, true>(end - H::width);
+        else
+          fn.template operator()<H, false>(j);
+        return;
+      }
+    }
+    if (end - j < W::width)
+      fn.template operator()<W, true>(end - W::width);
+    else
+      fn.template operator()<W, false>(j);
+  } else if constexpr (H::width < W::width) {
+    for_chunks<H>(begin, end, fn);
+  } else {
+    for (int j = begin; j < end; ++j) fn.template operator()<WideScalar, false>(j);
+  }
 }
 
 // Steps: the Newton steps of the reciprocal square root, a compile-time constant so the four
@@ -189,7 +168,7 @@ POND_KERNEL_INLINE void fill_band(float* scratch, int band, int slots, float zer
 // The springs of row i that block [c0, c1) needs: H, D1, D2 at column indices
 // [lo, hi] = [max(c0-1, 0), min(c1-1, C-2)] into H row `hs` and band `cur`, S at [c0, c1) into
 // band `cur`; without a row below, band `cur` becomes -0. Missing indices -1 and C-1 get the signed
-// zero that makes their use an identity. Chunk by chunk (walk(), then finish()).
+// zero that makes their use an identity: for_chunks over [lo, hi] with this object, then finish().
 template <class W, int Steps>
 struct RowSprings {
   const StepView& v;
@@ -209,7 +188,6 @@ struct RowSprings {
         rd(view.k.rest_diag) {
     if (!band) fill_band(scratch, cur, c1 - c0, -0.0f);
   }
-  ChunkWalk<W> walk() const { return ChunkWalk<W>(lo, hi + 1); }
 
   // The four springs of a cell corner from the cell's four nodes, each loaded once. S is also
   // evaluated at index c0-1 (slot 0, never read). S(C-1), the one spring without a right
@@ -270,7 +248,7 @@ template <class W, int Steps>
 POND_KERNEL_INLINE void block_springs(const StepView& v, int i, int c0, int c1, float* scratch,
                                       int hs, int cur) {
   RowSprings<W, Steps> sp(v, i, c0, c1, scratch, hs, cur);
-  sp.walk().finish(sp);
+  for_chunks<W>(sp.lo, sp.hi + 1, sp);
   sp.finish();
 }
 
@@ -340,11 +318,9 @@ struct RowIntegrate {
 // One substep for rows [r0, r1), block by block. Returns the sum of the new velocity components
 // of those rows (non-finite iff some velocity is non-finite or astronomically large).
 //
-// The springs run one row ahead of the integration, in the same loop: a chunk of row i+1's springs
-// (long dependency chains, multiplier-bound), then a chunk of row i's integration (loads and
-// additions), so the two kinds of work overlap in the core; and the spring rows row i reads were
-// stored a whole row earlier (a load that straddles two stores still in flight, as the j-1 terms
-// do, cannot be forwarded from them and waits).
+// The springs run one row ahead of the integration, so the spring rows row i reads were stored a
+// whole row earlier (a load that straddles two stores still in flight, as the j-1 terms do, cannot
+// be forwarded from them and waits).
 template <class W, int Steps>
 float step_rows(const StepView& v, int r0, int r1, float* scratch_base) {
   RowIntegrate<W> in(v);
@@ -369,19 +345,8 @@ float step_rows(const StepView& v, int r0, int r1, float* scratch_base) {
       in.hs = hs;
       in.below = below;
       in.above = above;
-      ChunkWalk<W> iw(c0, c1);
-      if (i + 1 < r1) {
-        RowSprings<W, Steps> sp(v, i + 1, c0, c1, scratch, 1 - hs, ahead);
-        ChunkWalk<W> sw = sp.walk();
-        if constexpr (W::kInterleave)
-          while (sw.more() && iw.more()) {
-            sw.next(sp);
-            iw.next(in);
-          }
-        sw.finish(sp);
-        sp.finish();
-      }
-      iw.finish(in);
+      if (i + 1 < r1) block_springs<W, Steps>(v, i + 1, c0, c1, scratch, 1 - hs, ahead);
+      for_chunks<W>(c0, c1, in);
       const int done = below;
       below = above;
       above = ahead;

@@ -12,9 +12,6 @@ inline namespace POND_ISA {
 
 struct WideAvx2 {
   using Half = WideAvx2;  // no narrower tail chunk (a 4-wide one costs as much on Zen 4)
-  // Interleave the chunks of the springs and of the integration in step_rows (step_kernel.h)?
-  // Measured: pays with AVX-512 (32 registers), slower with 16 registers or fewer.
-  static constexpr bool kInterleave = false;
   static constexpr int width = 8;
   using F = __m256;
   using M = __m256;

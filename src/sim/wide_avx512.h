@@ -12,10 +12,7 @@ namespace pond::sim {
 inline namespace POND_ISA {
 
 struct WideAvx512 {
-  using Half = WideAvx2;  // the tail chunk when it covers the rest (see ChunkWalk)
-  // Interleave the chunks of the springs and of the integration in step_rows (step_kernel.h)?
-  // Measured: pays with AVX-512 (32 registers), slower with 16 registers or fewer.
-  static constexpr bool kInterleave = true;
+  using Half = WideAvx2;  // the tail chunk when it covers the rest (see for_chunks)
   static constexpr int width = 16;
   using F = __m512;
   using M = __mmask16;

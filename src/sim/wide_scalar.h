@@ -13,9 +13,6 @@ inline namespace POND_ISA {
 
 struct WideScalar {
   using Half = WideScalar;  // no narrower tail chunk
-  // Interleave the chunks of the springs and of the integration in step_rows (step_kernel.h)?
-  // Measured: pays with AVX-512 (32 registers), slower with 16 registers or fewer.
-  static constexpr bool kInterleave = false;
   static constexpr int width = 1;
   using F = float;
   using M = std::uint32_t;  // all ones = true

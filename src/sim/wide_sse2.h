@@ -12,9 +12,6 @@ inline namespace POND_ISA {
 
 struct WideSse2 {
   using Half = WideSse2;  // no narrower tail chunk
-  // Interleave the chunks of the springs and of the integration in step_rows (step_kernel.h)?
-  // Measured: pays with AVX-512 (32 registers), slower with 16 registers or fewer.
-  static constexpr bool kInterleave = false;
   static constexpr int width = 4;
   using F = __m128;
   using M = __m128;
