@@ -138,16 +138,20 @@ void nested_bounds(const GridHierarchy& grid, const NodePositions& p, float larg
       scale_one(pass);
       continue;
     }
-    for (int y = 0; y < rows; y += step)
-      for (int x = h; x + h < cols; x += step) pass.vertex(x, y, h, axis_children, 4, q);
-    for (int y = h; y + h < rows; y += step)
-      for (int x = 0; x < cols; x += step) pass.vertex(x, y, h * row, axis_children, 4, q);
     // Diagonal hypotenuses of the squares of side 2h (main diagonal when the square's index
     // parity is even, see GridHierarchy::diamond): children are that square's edge midpoints.
     const int diag_children[4][2] = {{-h, 0}, {h, 0}, {0, -h}, {0, h}};
-    for (int y = h, b = 0; y + h < rows; y += step, ++b)
+    // One sweep down the rows, as at scale 1: row y's horizontal vertices, then the row h above,
+    // whose vertical vertices' ends and children are done and whose diagonal ones need those
+    // and the horizontal vertices of rows y - 2h and y.
+    for (int y = 0; y < rows; y += step) {
+      for (int x = h; x + h < cols; x += step) pass.vertex(x, y, h, axis_children, 4, q);
+      if (y < step) continue;
+      const int above = y - h, b = above / step;  // b: the squares' row index
+      for (int x = 0; x < cols; x += step) pass.vertex(x, above, h * row, axis_children, 4, q);
       for (int x = h, a = 0; x + h < cols; x += step, ++a)
-        pass.vertex(x, y, ((a + b) & 1) == 0 ? h * row + h : h * row - h, diag_children, 4, h);
+        pass.vertex(x, above, ((a + b) & 1) == 0 ? h * row + h : h * row - h, diag_children, 4, h);
+    }
   }
 }
 
