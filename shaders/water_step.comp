@@ -33,7 +33,8 @@
 //    band and rows do not fit the 32 vector registers), ~10% the texel fetches, the rest
 //    llvmpipe's and the kernel's. The stores are the floor with 32-bit types in Mesa 22.3:
 //    a 64-bit store moves 8 bytes per lane step (u64vec2 stores measured +5-10% per CPU
-//    second) but needs shaderInt64, which the context does not enable.
+//    second; 8 columns per invocation with u64vec4 stores about the same, a speed probe only)
+//    but needs shaderInt64, which the context does not enable.
 //  - Tried and slower: R32F imageStores for the quad outputs (~1.5x worse); no barrier (each
 //    8-lane chunk walks its strip alone; memory-bound, 2x worse, also with 2-row strips); a
 //    barrier every 2 or 4 rows; 32 or 64 rows per strip (32 equal within noise, 64 worse).
