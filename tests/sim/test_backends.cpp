@@ -86,9 +86,10 @@ std::vector<Case> matrix() {
     cases.push_back({"17x9 pre-tension, substeps", s, 200});
   }
   {
-    // Wider than one column block (512) of the kernel, with a splash on the block boundary.
+    // Wider than one column block (1024) of the kernel, with a splash on the block boundary.
     Scene s = grid_scene(24, 1100);
-    s.perturbations.push_back(splash(12, 511.5, 3, 1.5));
+    s.perturbations.push_back(splash(12, 1023.5, 3, 1.5));
+    s.perturbations.push_back(splash(20, 511.5, 3, 1.5));
     s.perturbations.push_back(splash(5, 1050, 2, 1, 10));
     cases.push_back({"24x1100 across column blocks", s, 120});
   }
@@ -124,10 +125,11 @@ TEST(Backends, EveryRowWidthAgreesBitForBit) {
   // The kernel covers a row with full-width chunks, then a last chunk that may be narrower (half
   // width) or overlap the one before, and takes the one spring without a right neighbour from that
   // chunk or on its own: every remainder of every backend's width, and both sides of a column
-  // block (512), against the scalar backend.
+  // block (1024), against the scalar backend.
   std::vector<int> widths;
   for (int c = 2; c <= 70; ++c) widths.push_back(c);
-  for (int c : {95, 96, 97, 127, 128, 129, 505, 511, 512, 513, 514, 520, 527, 528, 529, 1040})
+  for (int c : {95, 96, 97, 127, 128, 129, 511, 512, 513, 1017, 1023, 1024, 1025, 1026, 1032, 1039,
+                1040, 1041, 2100})
     widths.push_back(c);
   for (int cols : widths) {
     Scene s = test::grid_scene(5, cols, NodeKind::free);
