@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs every test: the release build (CPU, GPU on lavapipe with the validation
 # layer, the IA-32 golden hash, CLI, faults), then the CPU tests again under AddressSanitizer and
-# UndefinedBehaviorSanitizer, then each libFuzzer target for a short time on its committed corpus
+# UndefinedBehaviorSanitizer, and the GPU solver's tests (context, float policy, SPIR-V checks,
+# parity) under both as well, then each libFuzzer target for a short time on its committed corpus
 # (FUZZ_SECONDS, default 20 here; scripts/fuzz.sh). The soak (label soak, ~12 min) is left
 # out: scripts/soak.sh runs it. Exits non-zero on the first failure.
 set -euo pipefail
@@ -17,6 +18,12 @@ cmake --preset sanitize
 cmake --build --preset sanitize -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --preset sanitize -j "$jobs"
+
+# The GPU solver's tests under ASan + UBSan too (lavapipe itself is not instrumented; leak checks
+# off, since the driver is unloaded before LeakSanitizer could name its allocations).
+cmake --preset sanitize-gpu
+cmake --build --preset sanitize-gpu -j "$jobs"
+ctest --preset sanitize-gpu -j "$jobs"
 
 FUZZ_SECONDS=${FUZZ_SECONDS:-20} FUZZ_JOBS=$jobs scripts/fuzz.sh
 
