@@ -1,7 +1,10 @@
 // Scene parsing: the contract's keys, defaults, and one-line errors naming the key's path.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "core/errors.h"
+#include "sim/model.h"
 #include "sim/scene.h"
 
 namespace pond::sim {
@@ -255,3 +258,17 @@ TEST(Scene, TreeAndWindErrorsNameThePath) {
 
 }  // namespace
 }  // namespace pond::sim
+
+// Every scene shipped in scenes/ loads and builds a model (a broken example would be the first
+// thing a reader runs into).
+TEST(Scene, ShippedScenesLoadAndBuild) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(POND_SCENES_DIR)) {
+    if (entry.path().extension() != ".json") continue;
+    SCOPED_TRACE(entry.path().string());
+    const pond::sim::Scene scene = pond::sim::load_scene(entry.path().string());
+    EXPECT_NO_THROW(pond::sim::build_model(scene));
+    ++count;
+  }
+  EXPECT_GE(count, 8);
+}
