@@ -59,6 +59,11 @@ class RenderTest : public GpuTest {
   Rgba render(const RenderCase& c) {
     const sim::Scene scene = sim::parse_scene(c.json.empty() ? std::string(sim::default_scene_json()) : c.json, "test");
     gpu::FrameLoop loop(ctx(), scene, c.solver, c.format);
+    return draw(loop, c);
+  }
+
+  // Advances an existing loop by c.steps and draws one frame of it (c's view settings and format).
+  Rgba draw(gpu::FrameLoop& loop, const RenderCase& c) {
     const gpu::RenderTarget target(ctx(), kWidth, kHeight, c.format);
     loop.advance(c.steps);
     gpu::FrameView view;
@@ -150,42 +155,25 @@ TEST_F(RenderTest, CpuSolverDrawsTheSamePictureAndSwitchingCarriesTheState) {
 // a zero or non-finite direction is refused without changing the light.
 TEST_F(RenderTest, SetSunEqualsTheSceneLightAndRefusesZero) {
   const std::array<double, 3> low_sun{0.8, 0.25, 0.3};
-  auto draw_after_24_steps = [&](gpu::FrameLoop& loop) {
-    const gpu::RenderTarget target(ctx(), kWidth, kHeight);
-    loop.advance(24);
-    gpu::FrameView view;
-    view.camera = loop.default_camera(kWidth, kHeight);
-    view.steps = 0;
-    view.wait = true;
-    loop.frame(target.frame_target(), view);
-    return Rgba{kWidth, kHeight, target.read_rgba()};
-  };
   sim::Scene scene = sim::load_scene("");
   scene.lighting.sun = low_sun;
   gpu::FrameLoop scene_lit(ctx(), scene, {}, gpu::RenderTarget::kFormat);
-  const Rgba expected = draw_after_24_steps(scene_lit);
+  const Rgba expected = draw(scene_lit, {.steps = 24});
   EXPECT_GT(compare(render({.steps = 24}), expected, 8).share, 0.05);  // the light visibly moved
 
   gpu::FrameLoop loop(ctx(), sim::load_scene(""), {}, gpu::RenderTarget::kFormat);
   loop.set_sun(low_sun);
   EXPECT_THROW(loop.set_sun({0.0, 0.0, 0.0}), InputError);
   EXPECT_THROW(loop.set_sun({std::nan(""), 1.0, 0.0}), InputError);
-  EXPECT_EQ(compare(expected, draw_after_24_steps(loop), 0).share, 0.0);
+  EXPECT_EQ(compare(expected, draw(loop, {.steps = 24}), 0).share, 0.0);
 }
 
 TEST_F(RenderTest, RunTimeSplashEqualsTheScenePerturbation) {
   const char* no_splash = R"({"constraints": [{"kind": "fixed", "rows": [30, 35], "cols": [30, 36]}]})";
   const sim::Scene scene = sim::parse_scene(no_splash, "test");
   gpu::FrameLoop loop(ctx(), scene, {}, gpu::RenderTarget::kFormat);
-  const gpu::RenderTarget target(ctx(), kWidth, kHeight);
   loop.splash(sim::load_scene("").perturbations.at(0));
-  loop.advance(24);
-  gpu::FrameView view;
-  view.camera = loop.default_camera(kWidth, kHeight);
-  view.steps = 0;
-  view.wait = true;
-  loop.frame(target.frame_target(), view);
-  EXPECT_EQ(compare(render({.steps = 24}), Rgba{kWidth, kHeight, target.read_rgba()}, 0).share, 0.0);
+  EXPECT_EQ(compare(render({.steps = 24}), draw(loop, {.steps = 24}), 0).share, 0.0);
 }
 
 }  // namespace
