@@ -2,27 +2,32 @@
 # a generated header with the words as a uint32_t array, compiled into the binary so `pond` runs
 # from any directory.
 #
-# pond_add_shaders(TARGET <target> SOURCES <a.comp> ...)
-#   Each <name>.<stage> becomes <binary dir>/spirv/<name>_<stage>.spv.h declaring
-#   `const uint32_t pond_spirv_<name>_<stage>[]`; the headers are sources of <target> and the
+# pond_add_shaders(TARGET <target> SOURCES <a.comp> ... [VARIANT <suffix> DEFINES <MACRO> ...])
+#   Each <name>.<stage> becomes <binary dir>/spirv/<name><suffix>_<stage>.spv.h declaring
+#   `const uint32_t pond_spirv_<name><suffix>_<stage>[]` (a VARIANT is the same source compiled
+#   with the DEFINES); the headers are sources of <target> and the
 #   directory is on its include path. Every shader depends on all of shaders/shared/*.h (the
 #   headers shared by GLSL and C++), so changing a shared layout rebuilds every shader.
 file(GLOB POND_SHARED_SHADER_HEADERS CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/shaders/shared/*.h)
 
 function(pond_add_shaders)
-  cmake_parse_arguments(S "" "TARGET" "SOURCES" ${ARGN})
+  cmake_parse_arguments(S "" "TARGET;VARIANT" "SOURCES;DEFINES" ${ARGN})
   set(out_dir ${CMAKE_CURRENT_BINARY_DIR}/spirv)
   file(MAKE_DIRECTORY ${out_dir})
   set(headers)
   foreach(src ${S_SOURCES})
     get_filename_component(abs ${src} ABSOLUTE)
     get_filename_component(name ${src} NAME_WE)
+    set(name ${name}${S_VARIANT})
     get_filename_component(ext ${src} LAST_EXT)
     string(SUBSTRING ${ext} 1 -1 stage)
     set(var pond_spirv_${name}_${stage})
     set(spv ${out_dir}/${name}_${stage}.spv)
     set(header ${out_dir}/${name}_${stage}.spv.h)
     set(flags -V --target-env vulkan1.3 -I${PROJECT_SOURCE_DIR}/shaders --quiet)
+    foreach(d ${S_DEFINES})
+      list(APPEND flags -D${d})
+    endforeach()
     add_custom_command(
       OUTPUT ${header} ${spv}
       COMMAND ${GLSLANG_VALIDATOR} ${flags} -o ${spv} ${abs}

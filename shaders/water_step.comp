@@ -31,10 +31,11 @@
 //    barrier makes), ~20% the spring arithmetic (324 vmulps per 8 lanes x 4 columns x 1 row: the
 //    4.75 springs per node, straight-line), ~10% coroutine-frame and stack traffic (the carried
 //    band and rows do not fit the 32 vector registers), ~10% the texel fetches, the rest
-//    llvmpipe's and the kernel's. The stores are the floor with 32-bit types in Mesa 22.3:
-//    a 64-bit store moves 8 bytes per lane step (u64vec2 stores measured +5-10% per CPU
-//    second; 8 columns per invocation with u64vec4 stores about the same, a speed probe only)
-//    but needs shaderInt64, which the context does not enable.
+//    llvmpipe's and the kernel's. The stores are the floor with 32-bit types in Mesa 22.3;
+//    a 64-bit store moves 8 bytes per lane step. So where the device has shaderInt64 the solver
+//    uses the POND_STEP_INT64_STORES variant (built as water_step_int64, see store4): two
+//    u64 components per 4 floats, the float bits packed unchanged. The parity suite runs it and,
+//    forced, the vec4 variant.
 //  - Tried and slower: R32F imageStores for the quad outputs (~1.5x worse); no barrier (each
 //    8-lane chunk walks its strip alone; memory-bound, 2x worse, also with 2-row strips); a
 //    barrier every 2 or 4 rows; 32 or 64 rows per strip (32 equal within noise, 64 worse).
@@ -53,6 +54,9 @@
 // src/gpu/float_policy.h. R32F/RGBA32F texel fetches and stores move the float bits unchanged.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_spirv_intrinsics : require
+#ifdef POND_STEP_INT64_STORES
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#endif
 
 #include "shared/exact_math.h"
 #include "shared/water_gpu.h"
@@ -70,7 +74,18 @@ layout(constant_id = POND_SPEC_QUAD_COLUMNS) const bool kQuadColumns = false;
 layout(set = 0, binding = POND_STEP_BINDING_SRC1) uniform samplerBuffer src1;  // R32F: float n
 layout(set = 0, binding = POND_STEP_BINDING_SRC4) uniform samplerBuffer src4;  // RGBA32F: floats 4n..4n+3
 layout(set = 0, binding = POND_STEP_BINDING_DST1, r32f) uniform restrict writeonly imageBuffer dst1;
+#ifdef POND_STEP_INT64_STORES
+// 64-bit stores (devices with shaderInt64): llvmpipe stores per lane and per scalar component, so
+// two 64-bit components move a group of 4 floats in half the iterations of a vec4. The float bits
+// are packed unchanged (floatBitsToUint, packUint2x32: x in the low half, as in memory).
+layout(std430, set = 0, binding = POND_STEP_BINDING_DST4) restrict writeonly buffer Dst8 { u64vec2 dst8[]; };
+void store4(uint index, vec4 v) {
+  dst8[index] = u64vec2(packUint2x32(floatBitsToUint(v.xy)), packUint2x32(floatBitsToUint(v.zw)));
+}
+#else
 layout(std430, set = 0, binding = POND_STEP_BINDING_DST4) restrict writeonly buffer Dst4 { vec4 dst4[]; };
+void store4(uint index, vec4 v) { dst4[index] = v; }
+#endif
 layout(set = 0, binding = POND_STEP_BINDING_KINDS1) uniform usamplerBuffer kinds1;  // R8UI: node n
 layout(set = 0, binding = POND_STEP_BINDING_KINDS4) uniform usamplerBuffer kinds4;  // RGBA8UI: nodes 4n..4n+3
 layout(push_constant) uniform Push { StepPush p; };
@@ -230,12 +245,12 @@ void main_quad() {
     const vec4 ovy = vec4(v1[0].y, v1[1].y, v1[2].y, v1[3].y);
     const vec4 ovz = vec4(v1[0].z, v1[1].z, v1[2].z, v1[3].z);
     if (in_grid) {
-      dst4[q] = ox;
-      dst4[q4 + q] = oy;
-      dst4[2u * q4 + q] = oz;
-      dst4[3u * q4 + q] = ovx;
-      dst4[4u * q4 + q] = ovy;
-      dst4[5u * q4 + q] = ovz;
+      store4(q, ox);
+      store4(q4 + q, oy);
+      store4(2u * q4 + q, oz);
+      store4(3u * q4 + q, ovx);
+      store4(4u * q4 + q, ovy);
+      store4(5u * q4 + q, ovz);
     }
     // Not for shared data: llvmpipe runs the workgroup 8 invocations at a time, and a barrier
     // makes it run row i for all of them before row i+1 (coroutines), so the row (the group's

@@ -105,10 +105,14 @@ Context::Context(const ContextOptions& options, const WindowSurface& window)
   // Both are required by Vulkan 1.3: synchronization2 for the barriers, maintenance4 because
   // glslang's SPIR-V 1.6 declares workgroup sizes with LocalSizeId.
   // dynamicRendering: the renderer draws into offscreen and swapchain images without render passes.
-  // fillModeNonSolid (where supported): the LOD wireframe overlay.
+  // fillModeNonSolid (where supported): the LOD wireframe overlay. shaderInt64 (where supported):
+  // the water step's 64-bit stores.
   vk::PhysicalDeviceVulkan13Features features13{.synchronization2 = VK_TRUE, .dynamicRendering = VK_TRUE,
                                                 .maintenance4 = VK_TRUE};
-  const vk::PhysicalDeviceFeatures core_features{.fillModeNonSolid = physical_.getFeatures().fillModeNonSolid};
+  const vk::PhysicalDeviceFeatures supported = physical_.getFeatures();
+  const vk::PhysicalDeviceFeatures core_features{.fillModeNonSolid = supported.fillModeNonSolid,
+                                                 .shaderInt64 = supported.shaderInt64};
+  int64_ = supported.shaderInt64 == VK_TRUE;
   const vk::DeviceCreateInfo device_info{.pNext = &features13, .queueCreateInfoCount = 1,
                                          .pQueueCreateInfos = &queue_info,
                                          .enabledExtensionCount = static_cast<std::uint32_t>(device_extensions.size()),

@@ -47,6 +47,8 @@ class Context {
   // The window's surface (null without a WindowSurface); the queue can present to it.
   const vk::raii::SurfaceKHR& surface() const { return surface_; }
   const std::string& device_name() const { return device_name_; }
+  // shaderInt64 is enabled (where the device has it): the step shader's 64-bit-store variant.
+  bool has_int64() const { return int64_; }
   // Validation messages so far (empty without validation).
   const ValidationLog& validation_log() const { return *log_; }
 
@@ -64,6 +66,7 @@ class Context {
 
   std::unique_ptr<ValidationLog> log_;  // first: the messenger's user data outlives the messenger
   bool debug_utils_ = false;
+  bool int64_ = false;
   vk::raii::Context loader_;
   vk::raii::Instance instance_ = nullptr;
   std::optional<vk::raii::DebugUtilsMessengerEXT> messenger_;

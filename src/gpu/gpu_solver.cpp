@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
 
 #include "core/errors.h"
 #include "gpu/shaders.h"
@@ -37,7 +38,7 @@ void write_set(const Context& ctx, const vk::raii::DescriptorSet& set, std::init
 
 }  // namespace
 
-GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model)
+GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores)
     : ctx_(ctx), model_(std::move(model)), stride_(state_stride(model_.nodes())) {
   const bool fast = model_.math == sim::MathMode::fast;
   // Rows of a multiple of 4 nodes keep every group of 4 columns 16-byte aligned (the stride is a
@@ -61,8 +62,11 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model)
   step_bindings[POND_STEP_BINDING_DST1] = DT::eStorageTexelBuffer;
   step_bindings[POND_STEP_BINDING_DST4] = DT::eStorageBuffer;
   step_bindings[POND_STEP_BINDING_KINDS1] = step_bindings[POND_STEP_BINDING_KINDS4] = DT::eUniformTexelBuffer;
-  step_pipe_ = create_compute_pipeline(ctx_, water_step_spirv(), step_bindings, sizeof(StepPush), step_constants,
-                                       fast ? "water_step (fast)" : "water_step (exact)");
+  const bool int64_stores = stores == Stores::best && ctx_.has_int64();
+  step_pipe_ = create_compute_pipeline(ctx_, int64_stores ? water_step_int64_spirv() : water_step_spirv(),
+                                       step_bindings, sizeof(StepPush), step_constants,
+                                       std::string(fast ? "water_step (fast" : "water_step (exact") +
+                                           (int64_stores ? ", 64-bit stores)" : ")"));
   perturb_pipe_ = create_compute_pipeline(ctx_, water_perturb_spirv(), 2, sizeof(PerturbPush), {}, "water_perturb");
   normals_pipe_ = create_compute_pipeline(ctx_, water_normals_spirv(), 2, sizeof(NormalsPush), {}, "water_normals");
 

@@ -23,8 +23,11 @@ namespace pond::gpu {
 
 class GpuSolver {
  public:
+  // How the step shader stores: 64-bit stores where the device has shaderInt64 (faster on
+  // llvmpipe, the same bits), or vec4 stores; tests force the second to cover both.
+  enum class Stores { best, vec4 };
   // Starts from rest. The context must outlive the solver.
-  GpuSolver(const Context& ctx, sim::WaterModel model);
+  GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores = Stores::best);
 
   const sim::WaterModel& model() const { return model_; }
   std::int64_t steps_done() const { return step_; }

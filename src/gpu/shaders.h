@@ -7,6 +7,7 @@
 namespace pond::gpu {
 
 std::span<const std::uint32_t> water_step_spirv();
+std::span<const std::uint32_t> water_step_int64_spirv();  // 64-bit stores: needs shaderInt64
 std::span<const std::uint32_t> water_perturb_spirv();
 std::span<const std::uint32_t> water_normals_spirv();
 

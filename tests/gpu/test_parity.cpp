@@ -72,6 +72,12 @@ const ParityCase kCases[] = {
                            {"step": 3, "row": 8.5, "col": 15, "radius": 1.0, "amplitude": 2.0,
                             "target": "velocity", "mode": "set"}]})",
      10000},
+    {"wide_24x200_quad_islands",
+     R"({"grid": {"rows": 24, "cols": 200}, "border": "free",
+         "constraints": [{"kind": "fixed", "rows": [8, 12], "cols": [90, 97]},
+                         {"kind": "vertical", "rows": [0, 23], "cols": [180, 199]}],
+         "perturbations": [)" POND_SPLASHES(12, 40, 11.5, 150) R"(]})",
+     10000},
     {"square_301x301_islands",
      R"({"grid": {"rows": 301, "cols": 301}, "border": "fixed",
          "constraints": [{"kind": "fixed", "rows": [100, 120], "cols": [200, 230]},
@@ -99,6 +105,22 @@ TEST_P(ParityTest, GpuExactEqualsCpuScalarBitForBit) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ParityTest, ::testing::ValuesIn(kCases),
                          [](const ::testing::TestParamInfo<ParityCase>& p) { return std::string(p.param.name); });
+
+// The step shader has two store variants for grids whose width is a multiple of 4 (64-bit stores
+// where the device has shaderInt64, which lavapipe has, and vec4 stores): the cases above run
+// the first; this runs the second on the quad-path cases.
+TEST_F(GpuTest, Vec4StoreVariantEqualsCpuScalarBitForBit) {
+  EXPECT_TRUE(ctx().has_int64()) << "lavapipe has shaderInt64: the cases above ran the 64-bit stores";
+  int quad_cases = 0;
+  for (const ParityCase& c : kCases) {
+    const sim::WaterModel model = model_of(c);
+    if (model.cols % 4 != 0) continue;
+    ++quad_cases;
+    const auto diff = run_parity(ctx(), model, c.steps, 1000, c.name, nullptr, gpu::GpuSolver::Stores::vec4);
+    EXPECT_FALSE(diff.has_value()) << c.name << ": " << describe(*diff, model);
+  }
+  EXPECT_GE(quad_cases, 2);
+}
 
 // The bisect mode finds the first differing step: the GPU gets one extra, tiny perturbation just
 // before step 1234, so the states first differ after 1235 steps, between two checkpoints.

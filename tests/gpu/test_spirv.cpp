@@ -87,6 +87,8 @@ void expect_exact(const Findings& f, const char* what) {
 
 TEST(SpirvTest, ExactStepUsesOnlyCorrectlyRoundedUncontractedOps) {
   expect_exact(inspect(disassemble(gpu::water_step_spirv(), "water_step_exact", true, false)), "water_step (exact)");
+  expect_exact(inspect(disassemble(gpu::water_step_int64_spirv(), "water_step_int64_exact", true, false)),
+               "water_step (exact, 64-bit stores)");
 }
 
 TEST(SpirvTest, FastStepReallyUsesHardwareInverseSqrt) {
