@@ -9,11 +9,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 jobs=$(nproc)
+stage() { echo "== scripts/test.sh: $1 ($SECONDS s)"; }
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
 
+stage "release build"
 cmake --preset release -DPOND_REQUIRE_IA32=ON
 cmake --build --preset release -j "$jobs"
 
+stage "ASan + UBSan build and CPU tests"
 cmake --preset sanitize
 cmake --build --preset sanitize -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
@@ -21,11 +24,15 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:ha
 
 # The GPU solver's tests under ASan + UBSan too (lavapipe itself is not instrumented; leak checks
 # off, since the driver is unloaded before LeakSanitizer could name its allocations).
+stage "ASan + UBSan build and GPU solver tests"
 cmake --preset sanitize-gpu
 cmake --build --preset sanitize-gpu -j "$jobs"
 ctest --preset sanitize-gpu -j "$jobs"
 
+stage "fuzzing"
 FUZZ_SECONDS=${FUZZ_SECONDS:-20} FUZZ_JOBS=$jobs scripts/fuzz.sh
 
 # Last, so its summary closes the output.
+stage "release tests"
 ctest --preset release -j "$jobs" -LE soak
+stage "done"
