@@ -169,11 +169,11 @@ struct TreeDrawable::Impl {
       cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.lines);
       draw_range(cmd, mesh.lines);
     } else {
-      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.solid);
+      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.tubes);
       draw_range(cmd, mesh.tubes);
     }
     if (spec.leaves) {
-      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.solid);
+      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.leaves);
       draw_range(cmd, mesh.leaves);
     }
   }

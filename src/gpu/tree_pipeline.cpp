@@ -10,8 +10,15 @@ namespace {
 
 namespace sh = shared::tree_wind;
 
+// What differs between the tree's pipelines.
+struct Variant {
+  vk::PrimitiveTopology topology;
+  vk::CullModeFlags cull;
+  const char* name;
+};
+
 vk::raii::Pipeline create(const Context& ctx, const vk::raii::PipelineLayout& layout, vk::Format color,
-                          vk::Format depth, bool lines, const char* name) {
+                          vk::Format depth, const Variant& variant) {
   using V = sh::TreeMeshVertex;
   const vk::VertexInputBindingDescription binding{.binding = 0, .stride = sizeof(V),
                                                   .inputRate = vk::VertexInputRate::eVertex};
@@ -37,9 +44,9 @@ vk::raii::Pipeline create(const Context& ctx, const vk::raii::PipelineLayout& la
                                                             .vertexAttributeDescriptionCount = 7,
                                                             .pVertexAttributeDescriptions = attributes};
   const vk::PipelineInputAssemblyStateCreateInfo assembly{
-      .topology = lines ? vk::PrimitiveTopology::eLineList : vk::PrimitiveTopology::eTriangleList};
+      .topology = variant.topology};
   const vk::PipelineRasterizationStateCreateInfo raster{.polygonMode = vk::PolygonMode::eFill,
-                                                        .cullMode = vk::CullModeFlagBits::eNone,
+                                                        .cullMode = variant.cull,
                                                         .frontFace = vk::FrontFace::eCounterClockwise,
                                                         .lineWidth = 1.0f};
   const vk::PipelineDepthStencilStateCreateInfo depth_state{
@@ -48,7 +55,7 @@ vk::raii::Pipeline create(const Context& ctx, const vk::raii::PipelineLayout& la
   const vk::PipelineColorBlendAttachmentState blend{.colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
   return create_graphics_pipeline(ctx, layout, color, depth,
                                   {tree_vert_spirv(), tree_frag_spirv(), vertex_input, assembly, raster,
-                                   depth_state, blend, name});
+                                   depth_state, blend, variant.name});
 }
 
 }  // namespace
@@ -74,8 +81,14 @@ TreePipelines create_tree_pipelines(const Context& ctx, vk::Format color_format,
                                                                                  .pSetLayouts = &set_layout,
                                                                                  .pushConstantRangeCount = 1,
                                                                                  .pPushConstantRanges = &push});
-  p.lines = create(ctx, p.layout, color_format, depth_format, true, "tree lines");
-  p.solid = create(ctx, p.layout, color_format, depth_format, false, "tree tubes and leaves");
+  using T = vk::PrimitiveTopology;
+  using C = vk::CullModeFlagBits;
+  p.lines = create(ctx, p.layout, color_format, depth_format, {T::eLineList, C::eNone, "tree lines"});
+  // A tube is only ever seen from outside (its open ends sit inside the joints, a twig's width), so
+  // its back faces are always hidden: culling them halves what llvmpipe sets up and rasterizes, and
+  // its per-triangle cost is what the tree's draw time is made of.
+  p.tubes = create(ctx, p.layout, color_format, depth_format, {T::eTriangleList, C::eBack, "tree tubes"});
+  p.leaves = create(ctx, p.layout, color_format, depth_format, {T::eTriangleList, C::eNone, "tree leaves"});
   return p;
 }
 

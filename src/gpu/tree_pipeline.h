@@ -3,7 +3,9 @@
 // depth), sharing one descriptor-set layout (shared/tree_render.h bindings) and the TreeInstance
 // push constants:
 //  - lines: the skeleton as a line list, unlit (the article's look);
-//  - solid: tubes and leaves as triangles, lit, no culling (leaves are seen from both sides).
+//  - tubes: closed tubes as triangles, lit, back faces culled (their rings wind counter-clockwise
+//           seen from outside: tree_mesh.cpp);
+//  - leaves: triangles, lit, no culling (a leaf is seen from both sides).
 #include <cstdint>
 #include <span>
 
@@ -15,7 +17,8 @@ struct TreePipelines {
   vk::raii::DescriptorSetLayout set_layout = nullptr;
   vk::raii::PipelineLayout layout = nullptr;
   vk::raii::Pipeline lines = nullptr;
-  vk::raii::Pipeline solid = nullptr;
+  vk::raii::Pipeline tubes = nullptr;
+  vk::raii::Pipeline leaves = nullptr;
 };
 
 TreePipelines create_tree_pipelines(const Context& ctx, vk::Format color_format, vk::Format depth_format);
