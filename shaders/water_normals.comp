@@ -4,6 +4,15 @@
 // central differences, one-sided at the border, +y at rest. The same operations in the same order
 // as sim::compute_normals (src/sim/normals.cpp), all `precise`, normalized with the exact Newton
 // rsqrt, so the GPU normals equal the CPU's bit for bit.
+//
+// Speed on lavapipe (see the top of water_step.comp): the state is read through an R32F
+// texel-buffer view (a straight-line gather per fetch; an SSBO load with a per-invocation address
+// is a loop over the 8 lanes), and one invocation walks one column down a strip of
+// POND_NORMALS_ROWS_PER_INVOCATION rows, keeping the column's rows i-1, i, i+1 in a sliding
+// window: 9 fetches per node (the row above and the two side neighbours) instead of 12. The lanes
+// of a group are consecutive columns, so each gather reads one contiguous run. The workgroup
+// width is a specialization constant: the solver spans the row in as few, as evenly filled groups
+// as it can (257 columns: 2 x 136, not 5 x 64 with one column in the last).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_spirv_intrinsics : require
 
@@ -13,31 +22,45 @@
 spirv_execution_mode(capabilities = [4466], 4461, 32);  // SignedZeroInfNanPreserve, 32-bit floats
 
 layout(local_size_x = POND_NORMALS_LOCAL_X, local_size_y = 1, local_size_z = 1) in;
+layout(local_size_x_id = POND_SPEC_NORMALS_LOCAL_X) in;
 
-layout(std430, set = 0, binding = 0) restrict readonly buffer State { float state[]; };
-layout(std430, set = 0, binding = 1) restrict writeonly buffer Normals { vec4 normals[]; };
+layout(set = 0, binding = POND_NORMALS_BINDING_STATE) uniform samplerBuffer state;  // R32F: float n
+layout(std430, set = 0, binding = POND_NORMALS_BINDING_NORMALS) restrict writeonly buffer Normals { vec4 normals[]; };
 layout(push_constant) uniform Push { NormalsPush p; };
 
-vec3 load_u(uint n) { return vec3(state[n], state[p.stride + n], state[2u * p.stride + n]); }
+vec3 load_u(uint n) {
+  return vec3(texelFetch(state, int(n)).x, texelFetch(state, int(p.stride + n)).x,
+              texelFetch(state, int(2u * p.stride + n)).x);
+}
 
 void main() {
-  const uint n = gl_GlobalInvocationID.x;
-  if (n >= p.rows * p.cols) return;
-  const uint i = n / p.cols, j = n % p.cols;
-  const uint i1 = min(i + 1u, p.rows - 1u), i0 = i > 0u ? i - 1u : 0u;
-  const uint j1 = min(j + 1u, p.cols - 1u), j0 = j > 0u ? j - 1u : 0u;
-  // Position differences = displacement differences + the rest offset (i1 - i0 or j1 - j0),
-  // added even when it is 0, as the CPU does.
-  precise vec3 a = load_u(i1 * p.cols + j) - load_u(i0 * p.cols + j);
-  a.z = a.z + float(i1 - i0);
-  precise vec3 b = load_u(i * p.cols + j1) - load_u(i * p.cols + j0);
-  b.x = b.x + float(j1 - j0);
-  precise float cx = a.y * b.z - a.z * b.y;
-  precise float cy = a.z * b.x - a.x * b.z;
-  precise float cz = a.x * b.y - a.y * b.x;
-  precise float l2 = (cx * cx + cy * cy) + cz * cz;
-  const bool ok = l2 > 0.0;
-  precise float r = ok ? rsqrt_exact(l2, kRsqrtStepsExact) : 0.0;
-  precise vec3 nrm = vec3(cx * r, ok ? cy * r : 1.0, cz * r);
-  normals[n] = vec4(nrm, 0.0);
+  const uint j = gl_GlobalInvocationID.x;
+  const uint first = gl_GlobalInvocationID.y * POND_NORMALS_ROWS_PER_INVOCATION;
+  if (j >= p.cols || first >= p.rows) return;
+  const uint last = min(first + POND_NORMALS_ROWS_PER_INVOCATION, p.rows);
+  const uint C = p.cols;
+  const uint j1 = min(j + 1u, C - 1u), j0 = j > 0u ? j - 1u : 0u;
+  // The window: rows i0 = max(i-1, 0) and i of column j (i1 = min(i+1, rows-1) is fetched per row).
+  vec3 down = load_u((first > 0u ? first - 1u : 0u) * C + j);
+  vec3 mid = load_u(first * C + j);
+  for (uint i = first; i < last; ++i) {
+    const uint i1 = min(i + 1u, p.rows - 1u), i0 = i > 0u ? i - 1u : 0u;
+    const vec3 up = i1 == i ? mid : load_u(i1 * C + j);
+    // Position differences = displacement differences + the rest offset (i1 - i0 or j1 - j0),
+    // added even when it is 0, as the CPU does.
+    precise vec3 a = up - down;
+    a.z = a.z + float(i1 - i0);
+    precise vec3 b = load_u(i * C + j1) - load_u(i * C + j0);
+    b.x = b.x + float(j1 - j0);
+    precise float cx = a.y * b.z - a.z * b.y;
+    precise float cy = a.z * b.x - a.x * b.z;
+    precise float cz = a.x * b.y - a.y * b.x;
+    precise float l2 = (cx * cx + cy * cy) + cz * cz;
+    const bool ok = l2 > 0.0;
+    precise float r = ok ? rsqrt_exact(l2, kRsqrtStepsExact) : 0.0;
+    precise vec3 nrm = vec3(cx * r, ok ? cy * r : 1.0, cz * r);
+    normals[i * C + j] = vec4(nrm, 0.0);
+    down = mid;
+    mid = up;
+  }
 }

@@ -23,11 +23,14 @@
                                    // in the quad path (see water_step.comp); a multiple of 8
 #define POND_STEP_ROWS_PER_INVOCATION 16  // each invocation walks a strip of this many rows
 #define POND_PERTURB_LOCAL_X 64    // table entries per workgroup of water_perturb.comp
-#define POND_NORMALS_LOCAL_X 64    // nodes per workgroup of water_normals.comp
+#define POND_NORMALS_LOCAL_X 64    // default local size of water_normals.comp; the solver sets it (below)
+#define POND_NORMALS_LOCAL_X_MAX 256         // most invocations (columns) per workgroup of water_normals.comp
+#define POND_NORMALS_ROWS_PER_INVOCATION 16  // each invocation of water_normals.comp walks this many rows
 #define POND_SPEC_FAST_MATH 0      // specialization constant: bool, true = fast math
 #define POND_SPEC_RSQRT_STEPS 1    // specialization constant: int, Newton steps of exact rsqrt
 #define POND_SPEC_QUAD_COLUMNS 2   // specialization constant: bool, 4 columns per invocation (cols % 4 == 0)
 #define POND_SPEC_STEP_LOCAL_X 3   // specialization constant: water_step.comp's local_size_x
+#define POND_SPEC_NORMALS_LOCAL_X 4  // specialization constant: water_normals.comp's local_size_x
 
 // Bindings of water_step.comp: texel-buffer views of the state and the kinds (see the buffer notes
 // above; the buffers are the same, only the views differ).
@@ -38,6 +41,11 @@
 #define POND_STEP_BINDING_KINDS1 4  // uniform texel buffer, R8_UINT view of the kinds (node n = texel n)
 #define POND_STEP_BINDING_KINDS4 5  // uniform texel buffer, R8G8B8A8_UINT view (nodes 4t..4t+3 = texel t)
 #define POND_STEP_BINDINGS 6
+
+// Bindings of water_normals.comp.
+#define POND_NORMALS_BINDING_STATE 0    // uniform texel buffer, R32_SFLOAT view of the state
+#define POND_NORMALS_BINDING_NORMALS 1  // storage buffer: the normals, vec4[]
+#define POND_NORMALS_BINDINGS 2
 
 #ifdef __cplusplus
 #define POND_GPU_CONST inline constexpr

@@ -150,6 +150,32 @@ void Context::submit_and_wait(const std::function<void(const vk::raii::CommandBu
     throw RuntimeError("waiting for the GPU failed");
 }
 
+Submitter::Submitter(const Context& ctx, const std::string& name) : ctx_(&ctx) {
+  pool_ = vk::raii::CommandPool(ctx.device(), vk::CommandPoolCreateInfo{
+                                                  .flags = vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
+                                                  .queueFamilyIndex = ctx.queue_family()});
+  cmd_ = std::move(vk::raii::CommandBuffers(ctx.device(), vk::CommandBufferAllocateInfo{
+                                                              .commandPool = *pool_,
+                                                              .level = vk::CommandBufferLevel::ePrimary,
+                                                              .commandBufferCount = 1})[0]);
+  fence_ = vk::raii::Fence(ctx.device(), vk::FenceCreateInfo{});
+  ctx.name(pool_, name + " command pool");
+  ctx.name(cmd_, name);
+  ctx.name(fence_, name + " fence");
+}
+
+void Submitter::submit_and_wait(const std::function<void(const vk::raii::CommandBuffer&)>& record) {
+  cmd_.reset();
+  cmd_.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
+  record(cmd_);
+  cmd_.end();
+  ctx_->device().resetFences(*fence_);
+  const vk::CommandBufferSubmitInfo cmd_info{.commandBuffer = *cmd_};
+  ctx_->queue().submit2(vk::SubmitInfo2{.commandBufferInfoCount = 1, .pCommandBufferInfos = &cmd_info}, *fence_);
+  if (ctx_->device().waitForFences(*fence_, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
+    throw RuntimeError("waiting for the GPU failed");
+}
+
 void Context::set_name(vk::ObjectType type, std::uint64_t handle, const std::string& text) const {
   if (!debug_utils_) return;
   device_.setDebugUtilsObjectNameEXT(

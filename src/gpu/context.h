@@ -52,7 +52,8 @@ class Context {
   // Validation messages so far (empty without validation).
   const ValidationLog& validation_log() const { return *log_; }
 
-  // Records commands into a fresh primary command buffer, submits it and waits for it.
+  // Records commands into a fresh primary command buffer, submits it and waits for it (see also
+  // Submitter below, for work submitted every frame).
   void submit_and_wait(const std::function<void(const vk::raii::CommandBuffer&)>& record) const;
 
   // Gives a Vulkan object a name in validation messages and debuggers (no-op without debug utils).
@@ -77,6 +78,24 @@ class Context {
   vk::raii::Device device_ = nullptr;
   vk::raii::Queue queue_ = nullptr;
   vk::raii::CommandPool pool_ = nullptr;
+};
+
+// One primary command buffer and one fence, reused: Context::submit_and_wait() without creating
+// a command buffer and a fence per call (the renderer's per-frame compute). Its own command pool,
+// so it does not share the context's (pools are externally synchronized). Not thread-safe; the
+// context must outlive it.
+class Submitter {
+ public:
+  Submitter(const Context& ctx, const std::string& name);
+
+  // Records commands into the command buffer (reset first), submits it and waits for it.
+  void submit_and_wait(const std::function<void(const vk::raii::CommandBuffer&)>& record);
+
+ private:
+  const Context* ctx_;
+  vk::raii::CommandPool pool_ = nullptr;
+  vk::raii::CommandBuffer cmd_ = nullptr;
+  vk::raii::Fence fence_ = nullptr;
 };
 
 }  // namespace pond::gpu

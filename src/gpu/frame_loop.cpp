@@ -149,8 +149,8 @@ struct FrameLoop::Impl {
     st.land_triangles = land_vertices / 3;
     auto t = std::chrono::steady_clock::now();
 
-    water->advance(view.steps);                                         // 1. substeps
-    const WaterSource::DrawBuffers bufs = water->prepare(slot);        // 2. normals, positions -> CPU
+    // 1. substeps, 2. normals, positions -> CPU (on the GPU: one submission)
+    const WaterSource::DrawBuffers bufs = water->advance_and_prepare(view.steps, slot);
     st.simulate_ms = ms_since(t);
 
     lod::Camera camera = view.camera;                                   // 3. LOD into the slot's indices

@@ -39,7 +39,7 @@ void write_set(const Context& ctx, const vk::raii::DescriptorSet& set, std::init
 }  // namespace
 
 GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores)
-    : ctx_(ctx), model_(std::move(model)), stride_(state_stride(model_.nodes())) {
+    : ctx_(ctx), model_(std::move(model)), stride_(state_stride(model_.nodes())), submitter_(ctx, "water compute") {
   const bool fast = model_.math == sim::MathMode::fast;
   // Rows of a multiple of 4 nodes keep every group of 4 columns 16-byte aligned (the stride is a
   // multiple of 16 floats), so the step shader can move 4 nodes per texel.
@@ -68,7 +68,17 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores)
                                        std::string(fast ? "water_step (fast" : "water_step (exact") +
                                            (int64_stores ? ", 64-bit stores)" : ")"));
   perturb_pipe_ = create_compute_pipeline(ctx_, water_perturb_spirv(), 2, sizeof(PerturbPush), {}, "water_perturb");
-  normals_pipe_ = create_compute_pipeline(ctx_, water_normals_spirv(), 2, sizeof(NormalsPush), {}, "water_normals");
+  // The normals: one invocation per column (walking a strip of rows), the row spanned by as few
+  // and as evenly filled workgroups as possible, as the step shader's column path.
+  const auto cols = static_cast<std::uint32_t>(model_.cols);
+  const std::uint32_t normals_groups_x = std::max(1u, group_count(cols, POND_NORMALS_LOCAL_X_MAX));
+  normals_local_x_ = std::max(8u, (group_count(cols, normals_groups_x) + 7u) / 8u * 8u);
+  const SpecConstant normals_constants[] = {{POND_SPEC_NORMALS_LOCAL_X, normals_local_x_}};
+  std::vector<DT> normals_bindings(POND_NORMALS_BINDINGS);
+  normals_bindings[POND_NORMALS_BINDING_STATE] = DT::eUniformTexelBuffer;
+  normals_bindings[POND_NORMALS_BINDING_NORMALS] = DT::eStorageBuffer;
+  normals_pipe_ = create_compute_pipeline(ctx_, water_normals_spirv(), normals_bindings, sizeof(NormalsPush),
+                                          normals_constants, "water_normals");
 
   const vk::DeviceSize state_bytes = stride_ * kComponents * sizeof(float);
   const auto state_usage = BU::eStorageBuffer | BU::eUniformTexelBuffer | BU::eStorageTexelBuffer |
@@ -106,7 +116,7 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores)
   kinds_rgba8_ = view(kinds_, vk::Format::eR8G8B8A8Uint);
 
   const vk::DescriptorPoolSize sizes[] = {{.type = DT::eStorageBuffer, .descriptorCount = 12},
-                                          {.type = DT::eUniformTexelBuffer, .descriptorCount = 8},
+                                          {.type = DT::eUniformTexelBuffer, .descriptorCount = 10},
                                           {.type = DT::eStorageTexelBuffer, .descriptorCount = 2}};
   pool_ = vk::raii::DescriptorPool(ctx_.device(), vk::DescriptorPoolCreateInfo{
                                                       .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
@@ -141,7 +151,14 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores)
                           .descriptorType = step_bindings[b], .pTexelBufferView = &views[b]});
     ctx_.device().updateDescriptorSets(writes, nullptr);
     write_set(ctx_, perturb_sets_[c], {&state_[c], &table_});
-    write_set(ctx_, normals_sets_[c], {&state_[c], &normals_});
+    const vk::DescriptorBufferInfo normals_info = normals_.whole();
+    const vk::BufferView normals_state_view = *state_r32_[c];
+    const vk::WriteDescriptorSet normals_writes[] = {
+        {.dstSet = *normals_sets_[c], .dstBinding = POND_NORMALS_BINDING_STATE, .descriptorCount = 1,
+         .descriptorType = DT::eUniformTexelBuffer, .pTexelBufferView = &normals_state_view},
+        {.dstSet = *normals_sets_[c], .dstBinding = POND_NORMALS_BINDING_NORMALS, .descriptorCount = 1,
+         .descriptorType = DT::eStorageBuffer, .pBufferInfo = &normals_info}};
+    ctx_.device().updateDescriptorSets(normals_writes, nullptr);
   }
   set_state(sim::rest_state(model_), 0);
 }
@@ -209,7 +226,7 @@ void GpuSolver::advance(std::int64_t steps) {
   const std::int64_t steps_per_submit = std::max<std::int64_t>(1, kMaxDispatchesPerSubmit / per_step);
   while (steps > 0) {
     const std::int64_t n = std::min(steps, steps_per_submit);
-    ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
+    submitter_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
       record_barrier(cmd);
       for (std::int64_t s = 0; s < n; ++s) record_step(cmd);
     });
@@ -243,30 +260,61 @@ sim::WaterState GpuSolver::read_state() const {
   return s;
 }
 
-void GpuSolver::compute_normals() {
+// The normals of the current state; before it, a barrier after every earlier compute or transfer
+// write; after it, the normals (and the state) made ready for the vertex shader and transfers.
+void GpuSolver::record_normals(const vk::raii::CommandBuffer& cmd) const {
   const NormalsPush push{.rows = static_cast<std::uint32_t>(model_.rows),
                          .cols = static_cast<std::uint32_t>(model_.cols),
                          .stride = static_cast<std::uint32_t>(stride_)};
-  ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
+  record_barrier(cmd);
+  cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *normals_pipe_.pipeline);
+  cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *normals_pipe_.layout, 0, *normals_sets_[cur_], nullptr);
+  cmd.pushConstants<NormalsPush>(*normals_pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+  cmd.dispatch(group_count(push.cols, normals_local_x_), group_count(push.rows, POND_NORMALS_ROWS_PER_INVOCATION), 1);
+  // The vertex shader of the renderer reads them next.
+  const vk::MemoryBarrier2 to_vertex{
+      .srcStageMask = vk::PipelineStageFlagBits2::eComputeShader,
+      .srcAccessMask = vk::AccessFlagBits2::eShaderWrite,
+      .dstStageMask = vk::PipelineStageFlagBits2::eVertexShader | vk::PipelineStageFlagBits2::eVertexAttributeInput |
+                      vk::PipelineStageFlagBits2::eTransfer,
+      .dstAccessMask = vk::AccessFlagBits2::eShaderRead | vk::AccessFlagBits2::eVertexAttributeRead |
+                       vk::AccessFlagBits2::eTransferRead};
+  cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_vertex});
+}
+
+void GpuSolver::compute_normals() {
+  submitter_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) { record_normals(cmd); });
+}
+
+void GpuSolver::advance_for_frame(std::int64_t steps, const Buffer& displacements) {
+  const vk::DeviceSize bytes = 3 * stride_ * sizeof(float);
+  if (displacements.size < bytes) throw RuntimeError("GpuSolver::advance_for_frame: the readback buffer is too small");
+  const std::int64_t steps_per_submit =
+      std::max<std::int64_t>(1, kMaxDispatchesPerSubmit / std::max(1, model_.substeps));
+  if (steps > steps_per_submit) advance(steps - steps_per_submit);
+  const std::int64_t last = std::min(steps, steps_per_submit);
+  submitter_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
     record_barrier(cmd);
-    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *normals_pipe_.pipeline);
-    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *normals_pipe_.layout, 0, *normals_sets_[cur_], nullptr);
-    cmd.pushConstants<NormalsPush>(*normals_pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
-    cmd.dispatch(group_count(static_cast<std::uint32_t>(model_.nodes()), POND_NORMALS_LOCAL_X), 1, 1);
-    // The vertex shader of the renderer reads them next.
-    const vk::MemoryBarrier2 to_vertex{
-        .srcStageMask = vk::PipelineStageFlagBits2::eComputeShader,
-        .srcAccessMask = vk::AccessFlagBits2::eShaderWrite,
-        .dstStageMask = vk::PipelineStageFlagBits2::eVertexShader | vk::PipelineStageFlagBits2::eVertexAttributeInput |
-                        vk::PipelineStageFlagBits2::eTransfer,
-        .dstAccessMask = vk::AccessFlagBits2::eShaderRead | vk::AccessFlagBits2::eVertexAttributeRead |
-                         vk::AccessFlagBits2::eTransferRead};
-    cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_vertex});
+    for (std::int64_t s = 0; s < last; ++s) record_step(cmd);
+    // record_normals() ends with a compute -> transfer barrier; the last step's barrier covers
+    // the state for the copy.
+    record_normals(cmd);
+    cmd.copyBuffer(*state_[cur_].buffer, *displacements.buffer,
+                   vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = bytes});
+    const vk::MemoryBarrier2 to_host{.srcStageMask = vk::PipelineStageFlagBits2::eCopy,
+                                     .srcAccessMask = vk::AccessFlagBits2::eTransferWrite,
+                                     .dstStageMask = vk::PipelineStageFlagBits2::eHost,
+                                     .dstAccessMask = vk::AccessFlagBits2::eHostRead};
+    cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_host});
   });
 }
 
 sim::Normals GpuSolver::read_normals() {
   compute_normals();
+  return normals();
+}
+
+sim::Normals GpuSolver::normals() const {
   const Buffer staging = copy_to_host(normals_, "normals readback");
   sim::Normals n;
   const auto* v = static_cast<const float*>(staging.mapped);

@@ -42,8 +42,17 @@ class GpuSolver {
 
   // Computes the normals of the current state into normals_buffer().
   void compute_normals();
+  // A frame's compute in one submission (the renderer's WaterSource): advances `steps` steps,
+  // computes the normals of the new state into normals_buffer() (ready for the vertex shader and
+  // transfers), copies the displacements (ux | uy | uz: the first 3 * stride floats of
+  // state_buffer()) into `displacements` (host-visible, made visible to the host) and waits.
+  // Beyond kMaxDispatchesPerSubmit dispatches the earlier steps go first, as advance() does.
+  void advance_for_frame(std::int64_t steps, const Buffer& displacements);
   // compute_normals() and read them back, as sim::Normals.
   sim::Normals read_normals();
+  // normals_buffer() read back as it is (what the last compute_normals() or advance_for_frame()
+  // left; waits for the GPU).
+  sim::Normals normals() const;
   const Buffer& normals_buffer() const { return normals_; }
   const Buffer& state_buffer() const { return state_[cur_]; }
 
@@ -51,6 +60,7 @@ class GpuSolver {
 
  private:
   void record_step(const vk::raii::CommandBuffer& cmd);
+  void record_normals(const vk::raii::CommandBuffer& cmd) const;
   void record_barrier(const vk::raii::CommandBuffer& cmd) const;
   Buffer copy_to_host(const Buffer& src, const char* name) const;
 
@@ -66,8 +76,10 @@ class GpuSolver {
   bool quad_columns_ = false;  // the step shader's 4-columns-per-invocation path (cols % 4 == 0)
   std::uint32_t step_threads_x_ = 0;  // invocations per row strip of the step shader
   std::uint32_t step_local_x_ = 0;    // its workgroup width (specialization constant)
+  std::uint32_t normals_local_x_ = 0; // the normals shader's (one invocation per column)
   std::vector<std::uint32_t> table_first_;  // first entry of each perturbation in table_
   vk::raii::DescriptorPool pool_ = nullptr;
+  Submitter submitter_;  // advance(), compute_normals(), advance_for_frame(): no allocation per call
   // step_sets_[c]: reads state c, writes 1 - c; perturb_sets_[c], normals_sets_[c] use state c.
   std::vector<vk::raii::DescriptorSet> step_sets_, perturb_sets_, normals_sets_;
   int cur_ = 0;

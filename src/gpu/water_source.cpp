@@ -33,25 +33,16 @@ void WaterSource::advance(std::int64_t steps) {
   else cpu_->advance(steps);
 }
 
-WaterSource::DrawBuffers WaterSource::prepare(std::uint32_t slot) {
+WaterSource::DrawBuffers WaterSource::advance_and_prepare(std::int64_t steps, std::uint32_t slot) {
   const std::size_t nodes = model_.nodes(), stride = state_stride(nodes);
   if (gpu_) {
-    gpu_->compute_normals();
-    const Buffer& state = gpu_->state_buffer();
-    ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
-      // compute_normals() ended with a compute -> vertex/transfer barrier covering the state too.
-      cmd.copyBuffer(*state.buffer, *readback_.buffer, vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = readback_.size});
-      const vk::MemoryBarrier2 to_host{.srcStageMask = vk::PipelineStageFlagBits2::eCopy,
-                                       .srcAccessMask = vk::AccessFlagBits2::eTransferWrite,
-                                       .dstStageMask = vk::PipelineStageFlagBits2::eHost,
-                                       .dstAccessMask = vk::AccessFlagBits2::eHostRead};
-      cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_host});
-    });
+    gpu_->advance_for_frame(steps, readback_);
     readback_.invalidate(ctx_);
     const auto* u = static_cast<const float*>(readback_.mapped);
     to_world(u, u + stride, u + 2 * stride);
-    return {&state, &gpu_->normals_buffer(), static_cast<std::uint32_t>(stride)};
+    return {&gpu_->state_buffer(), &gpu_->normals_buffer(), static_cast<std::uint32_t>(stride)};
   }
+  cpu_->advance(steps);
   const sim::WaterState& s = cpu_->state();
   auto* u = static_cast<float*>(slot_state_[slot].mapped);
   std::memcpy(u, s.ux.data(), nodes * sizeof(float));
@@ -69,13 +60,20 @@ WaterSource::DrawBuffers WaterSource::prepare(std::uint32_t slot) {
   return {&slot_state_[slot], &slot_normals_[slot], static_cast<std::uint32_t>(stride)};
 }
 
+// Row by row: node (i, j) rests at (j, 0, i) grid units (no division per node).
 void WaterSource::to_world(const float* ux, const float* uy, const float* uz) {
   const float h = model_.spacing;
   const std::size_t cols = static_cast<std::size_t>(model_.cols);
-  for (std::size_t n = 0; n < model_.nodes(); ++n) {
-    x_[n] = (static_cast<float>(n % cols) + ux[n]) * h;
-    y_[n] = uy[n] * h;
-    z_[n] = (static_cast<float>(n / cols) + uz[n]) * h;
+  for (std::size_t i = 0, row = 0; i < static_cast<std::size_t>(model_.rows); ++i, row += cols) {
+    const float z0 = static_cast<float>(i);
+    float* x = x_.data() + row;
+    float* y = y_.data() + row;
+    float* z = z_.data() + row;
+    for (std::size_t j = 0; j < cols; ++j) {
+      x[j] = (static_cast<float>(j) + ux[row + j]) * h;
+      y[j] = uy[row + j] * h;
+      z[j] = (z0 + uz[row + j]) * h;
+    }
   }
 }
 

@@ -4,7 +4,8 @@
 //    normals: one vec4 per node);
 //  - the node positions in world units on the CPU, for the LOD builder.
 // GPU: the solver's own buffers (no copy for drawing); the normals pass runs on the GPU and the three
-//      displacement arrays are copied into a host-readable buffer (about 0.8 MB at 257^2).
+//      displacement arrays are copied into a host-readable buffer (about 0.8 MB at 257^2). A frame's
+//      substeps, normals and copy are one submission (advance_and_prepare).
 // CPU: the state and the CPU normals are written into the frame slot's host-visible buffers
 //      (per slot, so a frame in flight keeps reading its own).
 #include <cstdint>
@@ -33,7 +34,9 @@ class WaterSource {
   };
   // Normals of the current state, positions made visible to the CPU, and the buffers frame slot
   // `slot` draws from.
-  DrawBuffers prepare(std::uint32_t slot);
+  DrawBuffers prepare(std::uint32_t slot) { return advance_and_prepare(0, slot); }
+  // advance(steps) then prepare(slot); on the GPU all of it is one submission and one wait.
+  DrawBuffers advance_and_prepare(std::int64_t steps, std::uint32_t slot);
   // World positions of the state prepare() last saw.
   lod::NodePositions positions() const;
 

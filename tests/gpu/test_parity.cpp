@@ -9,9 +9,11 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 #include "gpu/gpu_solver.h"
+#include "gpu/water_layout.h"
 #include "gpu_fixture.h"
 #include "parity.h"
 #include "sim/cpu_solver.h"
@@ -160,20 +162,63 @@ TEST_F(GoldenTest, DefaultSceneAfter1000StepsHasTheCpuHash) {
   EXPECT_EQ(sim::state_hash(cpu.state(), model), kGoldenHash) << "the CPU reference moved: update kGoldenHash";
 }
 
+// GPU normals == CPU normals, bit for bit, on every shape of the matrix: one and several
+// workgroups across a row (301 columns: two), strips of rows cut short by the grid (3 rows, 301
+// rows), the one-sided differences at every border.
 TEST_F(GoldenTest, NormalsEqualTheCpuNormals) {
-  const sim::WaterModel model = model_of(kCases[1]);
-  gpu::GpuSolver solver(ctx(), model);
-  solver.advance(300);
-  const sim::WaterState state = solver.read_state();
-  const sim::Normals cpu = sim::compute_normals(state, model);
-  const sim::Normals gpu = solver.read_normals();
-  int differing = 0;
-  for (std::size_t n = 0; n < model.nodes(); ++n)
-    differing += std::bit_cast<std::uint32_t>(cpu.x[n]) != std::bit_cast<std::uint32_t>(gpu.x[n]) ||
-                 std::bit_cast<std::uint32_t>(cpu.y[n]) != std::bit_cast<std::uint32_t>(gpu.y[n]) ||
-                 std::bit_cast<std::uint32_t>(cpu.z[n]) != std::bit_cast<std::uint32_t>(gpu.z[n]);
-  EXPECT_EQ(differing, 0);
-  EXPECT_GT(std::fabs(gpu.x[model.nodes() / 2]) + std::fabs(gpu.z[model.nodes() / 2]), 0.0f) << "a flat surface proves little";
+  for (const ParityCase& c : kCases) {
+    const sim::WaterModel model = model_of(c);
+    gpu::GpuSolver solver(ctx(), model);
+    solver.advance(300);
+    const sim::WaterState state = solver.read_state();
+    const sim::Normals cpu = sim::compute_normals(state, model);
+    const sim::Normals gpu = solver.read_normals();
+    int differing = 0;
+    for (std::size_t n = 0; n < model.nodes(); ++n)
+      differing += std::bit_cast<std::uint32_t>(cpu.x[n]) != std::bit_cast<std::uint32_t>(gpu.x[n]) ||
+                   std::bit_cast<std::uint32_t>(cpu.y[n]) != std::bit_cast<std::uint32_t>(gpu.y[n]) ||
+                   std::bit_cast<std::uint32_t>(cpu.z[n]) != std::bit_cast<std::uint32_t>(gpu.z[n]);
+    EXPECT_EQ(differing, 0) << c.name;
+    if (&c == &kCases[1])
+      EXPECT_GT(std::fabs(gpu.x[model.nodes() / 2]) + std::fabs(gpu.z[model.nodes() / 2]), 0.0f)
+          << "a flat surface proves little";
+  }
+}
+
+// The renderer's one submission per frame (advance_for_frame: steps, normals, the displacements
+// copied for the CPU) leaves the same state, step count and normals as advance() then
+// compute_normals(), and its copy holds the state's ux | uy | uz. The second model has so many
+// substeps that 5 steps exceed kMaxDispatchesPerSubmit: the earlier steps go in submissions of
+// their own.
+TEST_F(GpuTest, AdvanceForFrameEqualsAdvanceThenNormals) {
+  sim::WaterModel chunked = model_of(kCases[5]);  // big_splash_17x33_fixed
+  chunked.substeps = 2000;
+  ASSERT_LT(gpu::GpuSolver::kMaxDispatchesPerSubmit / chunked.substeps, 5);
+  for (const sim::WaterModel& model : {model_of(kCases[5]), chunked}) {
+    gpu::GpuSolver framed(ctx(), model), plain(ctx(), model);
+    const std::size_t stride = gpu::state_stride(model.nodes());
+    const gpu::Buffer readback = gpu::create_buffer(ctx(), 3 * stride * sizeof(float),
+                                                    vk::BufferUsageFlagBits::eTransferDst, gpu::MemoryUse::readback,
+                                                    "test readback");
+    for (const std::int64_t steps : {1, 5, 0, 3}) {
+      framed.advance_for_frame(steps, readback);
+      plain.advance(steps);
+      ASSERT_EQ(framed.steps_done(), plain.steps_done());
+      const sim::WaterState a = framed.read_state(), b = plain.read_state();
+      EXPECT_EQ(sim::state_hash(a, model), sim::state_hash(b, model)) << "after " << plain.steps_done() << " steps";
+      readback.invalidate(ctx());
+      const auto* u = static_cast<const float*>(readback.mapped);
+      EXPECT_EQ(std::memcmp(u, a.ux.data(), model.nodes() * sizeof(float)), 0);
+      EXPECT_EQ(std::memcmp(u + stride, a.uy.data(), model.nodes() * sizeof(float)), 0);
+      EXPECT_EQ(std::memcmp(u + 2 * stride, a.uz.data(), model.nodes() * sizeof(float)), 0);
+    }
+    // The normals the last advance_for_frame() left (read back as they are) equal the plain
+    // solver's, computed now.
+    const sim::Normals na = framed.normals(), nb = plain.read_normals();
+    EXPECT_EQ(std::memcmp(na.x.data(), nb.x.data(), model.nodes() * sizeof(float)), 0);
+    EXPECT_EQ(std::memcmp(na.y.data(), nb.y.data(), model.nodes() * sizeof(float)), 0);
+    EXPECT_EQ(std::memcmp(na.z.data(), nb.z.data(), model.nodes() * sizeof(float)), 0);
+  }
 }
 
 // Fast math (hardware inversesqrt, contraction allowed) against the exact CPU reference. The
