@@ -12,12 +12,52 @@ layout(std140, set = 0, binding = POND_TREE_BINDING_FRAME) uniform Frame { TreeR
 
 layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;
-layout(location = 2) flat in uvec2 in_material;
+layout(location = 2) flat in uvec2 in_material;  // material, shade variation
+layout(location = 3) in float in_width_px;
+layout(location = 4) noperspective in vec2 in_axis;
 layout(location = 0) out vec4 out_color;
 
+const float kPi = 3.14159265;
+const vec3 kSunColor = vec3(1.0, 0.96, 0.9);
+
+// A twig line stands for a tube narrower than a pixel or so (gpu/tree_lod.h), and lights the
+// pixels that tube would: those whose centres lie within half its width of its axis (so a tube
+// well under a pixel wide shows as the same broken dashes). The line's fragments interpolate a
+// point of the axis (in window pixels), whose derivatives run along it: the distance across is the
+// fragment centre's offset from that point along the axis's normal. Its colour is the tube's light
+// averaged across its visible half as the eye sees it (weighted by projected width). Across the
+// axis, with the sun and the eye phi apart, that mean of max(n.sun, 0) is
+//     |sun across| ((pi - phi) cos(phi) + sin(phi)) / 4      (pi / 4 facing the sun, 0 against it),
+// and the mean normal, for the sky's ambient, is pi / 4 times the unit eye direction across.
+bool twig_covers_pixel(vec2 along_x, vec2 along_y) {
+  const vec2 along = dot(along_x, along_x) >= dot(along_y, along_y) ? along_x : along_y;
+  if (dot(along, along) < 1e-12) return true;  // a line seen end-on: a point
+  const vec2 across = normalize(vec2(-along.y, along.x));
+  return abs(dot(gl_FragCoord.xy - in_axis, across)) < 0.5 * in_width_px;
+}
+
+vec3 twig_color(vec3 axis) {
+  const vec3 d = normalize(axis);
+  const vec3 sun_across = f.sun.xyz - d * dot(f.sun.xyz, d);
+  const vec3 eye = f.eye.xyz - in_world;
+  const vec3 eye_across = eye - d * dot(eye, d);
+  const float s = length(sun_across), e = length(eye_across);
+  const float c = s > 1e-6 && e > 1e-6 ? clamp(dot(sun_across, eye_across) / (s * e), -1.0, 1.0) : 0.0;
+  const float phi = acos(c);
+  const float diffuse = s * ((kPi - phi) * c + sin(phi)) / 4.0;
+  const float up = e > 1e-6 ? kPi / 4.0 * eye_across.y / e : 0.0;
+  return f.bark.rgb * (f.sky.rgb * (0.3 + 0.15 * up) + 0.85 * diffuse * kSunColor);
+}
+
 void main() {
+  const vec2 axis_dx = dFdx(in_axis), axis_dy = dFdy(in_axis);  // in uniform control flow
   if (in_material.x == kTreeMaterialLine) {
     out_color = finish_color(f.line.rgb);
+    return;
+  }
+  if (in_material.x == kTreeMaterialTwig) {
+    if (!twig_covers_pixel(axis_dx, axis_dy)) discard;
+    out_color = finish_color(twig_color(in_normal));
     return;
   }
   vec3 n = normalize(in_normal);
@@ -29,5 +69,5 @@ void main() {
   const vec3 ambient = f.sky.rgb * (0.3 + 0.15 * n.y);
   // Light through a leaf: its far side still glows a little when the sun is behind it.
   const float through = leaf ? 0.25 * max(-dot(n, f.sun.xyz), 0.0) : 0.0;
-  out_color = finish_color(albedo * (ambient + (0.85 * diffuse + through) * vec3(1.0, 0.96, 0.9)));
+  out_color = finish_color(albedo * (ambient + (0.85 * diffuse + through) * kSunColor));
 }

@@ -4,7 +4,8 @@
 // through shared/tree_wind.h's tree_wind_bend (the very function the CPU reference calls), or the
 // length-preserving variant walked along the vertex's ancestors (shared/tree_pose.h); then the
 // instance's placement and the view-projection. Tube rings and leaf corners carry their skeleton
-// vertex's data, so they move with it by its offset.
+// vertex's data, so they move with it by its offset. Twig lines (the level of detail's stand-in for
+// sub-pixel tubes, gpu/tree_lod.h) also pass on how much of a pixel their tube would cover.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_spirv_intrinsics : require
 
@@ -29,6 +30,8 @@ layout(location = kTreeAttribInfo) in uvec4 in_info;
 layout(location = 0) out vec3 out_world;
 layout(location = 1) out vec3 out_normal;
 layout(location = 2) flat out uvec2 out_material;  // material, shade variation
+layout(location = 3) out float out_width_px;       // twig lines: the tube's width (pixels)
+layout(location = 4) noperspective out vec2 out_axis;  // twig lines: window position (pixels)
 
 void main() {
   vec3 p;
@@ -41,4 +44,7 @@ void main() {
   out_normal = in_normal.xyz;
   out_material = in_info.yz;
   gl_Position = f.view_proj * vec4(out_world, 1.0);
+  // How wide a twig line's tube would be on screen (clip w is the view depth).
+  out_width_px = in_info.y == kTreeMaterialTwig ? in_offset.w * inst.base.w * f.lod.x / gl_Position.w : 1.0;
+  out_axis = (gl_Position.xy / gl_Position.w * 0.5 + 0.5) * f.lod.yz;
 }

@@ -48,6 +48,8 @@ POND_CONST int kTreeAttribInfo = 6;
 POND_CONST uint kTreeMaterialLine = 0u;  // the article's look: unlit lines
 POND_CONST uint kTreeMaterialBark = 1u;  // tube surface
 POND_CONST uint kTreeMaterialLeaf = 2u;  // leaf, lit from both sides
+POND_CONST uint kTreeMaterialTwig = 3u;  // a twig thinner than a pixel or so drawn as a line: bark,
+                                         // lit as its tube on average, lighting the pixels it would
 
 // The longest root-to-vertex chain the length-preserving walk follows: the root plus one vertex
 // per level, and a tree has at most 10 levels (tree::kMaxTreeDepth).
@@ -62,6 +64,8 @@ struct TreeRenderFrame {
   vec4 bark;       // rgb: bark colour (linear)
   vec4 leaf;       // rgb: leaf colour (linear)
   vec4 line;       // rgb: the line look's colour (linear); a: unused
+  vec4 lod;        // twig lines: x: pixels per world unit at unit view depth (clip w); yz: viewport
+                   // size (pixels)
 };
 
 // Push constants (std430): one instance. Its bent tree, in tree units (trunk length 1), is placed
@@ -75,18 +79,21 @@ struct TreeInstance {
 // One mesh vertex (96 bytes).
 struct TreeMeshVertex {
   TreeVertex branch;  // the branch vertex's article data: position, wX, wZ, jitter (tree units)
-  vec4 offset;        // xyz: rest offset from the branch vertex (tree units); w: 0
-  vec4 normal;        // xyz: rest normal (unit; zero for lines); w: 0
+  vec4 offset;        // xyz: rest offset from the branch vertex (tree units); w: 0, or for twig
+                      // lines the tube's mean width at this vertex (tree units)
+  vec4 normal;        // xyz: rest normal (unit; zero for lines, the segment's direction for twig
+                      // lines); w: 0
   uvec4 info;         // x: branch vertex index; y: material; z: shade variation 0..255; w: 0
 };
 static_assert(sizeof(uvec4) == 16 && sizeof(mat4) == 64);
 static_assert(sizeof(TreeMeshVertex) == 96);
 static_assert(offsetof(TreeMeshVertex, branch) == 0 && offsetof(TreeMeshVertex, offset) == 48 &&
               offsetof(TreeMeshVertex, normal) == 64 && offsetof(TreeMeshVertex, info) == 80);
-static_assert(sizeof(TreeRenderFrame) == 160);
+static_assert(sizeof(TreeRenderFrame) == 176);
 static_assert(offsetof(TreeRenderFrame, eye) == 64 && offsetof(TreeRenderFrame, sun) == 80 &&
               offsetof(TreeRenderFrame, sky) == 96 && offsetof(TreeRenderFrame, bark) == 112 &&
-              offsetof(TreeRenderFrame, leaf) == 128 && offsetof(TreeRenderFrame, line) == 144);
+              offsetof(TreeRenderFrame, leaf) == 128 && offsetof(TreeRenderFrame, line) == 144 &&
+              offsetof(TreeRenderFrame, lod) == 160);
 static_assert(sizeof(TreeInstance) == 64 && offsetof(TreeInstance, wind) == 16);
 }  // namespace pond::shared::tree_wind
 #endif

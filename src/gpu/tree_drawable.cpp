@@ -8,6 +8,7 @@
 #include <string>
 
 #include "gpu/buffer.h"
+#include "gpu/tree_lod.h"
 #include "gpu/tree_mesh.h"
 #include "gpu/tree_pipeline.h"
 #include "gpu/tree_ripples.h"
@@ -32,6 +33,9 @@ sh::vec4 v4(const std::array<double, 3>& a) {
 struct Instance {
   sh::vec4 base;  // foot (world) and scale
   tree::WindState wind;
+  // This frame's (prepare()): the wind pushed to the shader, and the thinnest level drawn as tubes.
+  tree::TreeWindFrame frame{};
+  int thinnest_tube = 1;
 };
 
 struct SlotResources {
@@ -50,10 +54,12 @@ struct TreeDrawable::Impl {
   TreePipelines pipes;
   tree::Tree grown;
   TreeMesh mesh;
+  TreeBounds bounds;
   Buffer vertices, indices, skeleton, parents;
   vk::raii::DescriptorPool pool = nullptr;
   std::vector<SlotResources> slots;
   std::vector<Instance> instances;
+  bool level_of_detail = true;
   bool manual_clock = false;
   double pending_seconds = 0.0;  // manual clock: advanced since the last frame
   double last_seconds = 0.0;     // simulated clock: FrameInfo::seconds of the last frame
@@ -97,6 +103,7 @@ struct TreeDrawable::Impl {
   void grow() {
     grown = tree::grow_tree(tree::TreeParams{.depth = spec.depth, .seed = spec.seed, .trunk_length = 1.0f});
     mesh = build_tree_mesh(grown);
+    bounds = tree_bounds(grown, mesh);
     vertices = create_buffer(ctx, mesh.vertices.size() * sizeof(TreeMeshVertex), BU::eVertexBuffer | BU::eTransferDst,
                              MemoryUse::device, "tree mesh vertices");
     upload(ctx, vertices, std::as_bytes(std::span(mesh.vertices)));
@@ -136,7 +143,14 @@ struct TreeDrawable::Impl {
     if (!manual_clock) dt = info.seconds - last_seconds;
     last_seconds = info.seconds;
     pending_seconds = 0.0;
-    for (Instance& inst : instances) tree::advance_wind(inst.wind, noise, user, dt);
+    const TreeLodCamera lod_camera = tree_lod_camera(info.view_proj, static_cast<int>(info.extent.height));
+    for (Instance& inst : instances) {
+      tree::advance_wind(inst.wind, noise, user, dt);
+      inst.frame = tree::wind_frame(inst.wind, noise, user, bend_mode());
+      const Sphere s = bent_bounds(bounds, inst.frame);
+      const Sphere world{tree::Vec3{inst.base.x, inst.base.y, inst.base.z} + s.centre * inst.base.w, s.radius * inst.base.w};
+      inst.thinnest_tube = level_of_detail ? thinnest_tube_level(lod_camera, world, inst.base.w, grown.depth) : 1;
+    }
 
     const auto& sun = info.lighting.sun;
     const double sl = std::sqrt(sun[0] * sun[0] + sun[1] * sun[1] + sun[2] * sun[2]);
@@ -148,15 +162,21 @@ struct TreeDrawable::Impl {
     f.bark = kBark;
     f.leaf = kLeaf;
     f.line = kLine;
+    f.lod = {lod_camera.pixels_per_unit, static_cast<float>(info.extent.width), static_cast<float>(info.extent.height), 0.0f};
     std::memcpy(slots[info.slot].uniforms.mapped, &f, sizeof f);
   }
 
-  void draw_range(const vk::raii::CommandBuffer& cmd, IndexRange r) const {
-    if (r.count == 0) return;
+  // Draws each instance's part of the mesh, `range(instance)`, with `vertex_offset`.
+  template <class RangeOf>
+  void draw_instances(const vk::raii::CommandBuffer& cmd, const vk::raii::Pipeline& pipe, RangeOf range,
+                      std::int32_t vertex_offset = 0) const {
+    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipe);
     for (const Instance& inst : instances) {
-      const sh::TreeInstance push{.base = inst.base, .wind = tree::wind_frame(inst.wind, noise, user, bend_mode())};
+      const IndexRange r = range(inst);
+      if (r.count == 0) continue;
+      const sh::TreeInstance push{.base = inst.base, .wind = inst.frame};
       cmd.pushConstants<sh::TreeInstance>(*pipes.layout, vk::ShaderStageFlagBits::eVertex, 0, push);
-      cmd.drawIndexed(r.count, 1, r.first, 0, 0);
+      cmd.drawIndexed(r.count, 1, r.first, vertex_offset, 0);
     }
   }
 
@@ -165,17 +185,14 @@ struct TreeDrawable::Impl {
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *slots[info.slot].set, nullptr);
     cmd.bindVertexBuffers(0, *vertices.buffer, vk::DeviceSize{0});
     cmd.bindIndexBuffer(*indices.buffer, 0, vk::IndexType::eUint32);
-    if (spec.draw == sim::TreeDraw::lines) {
-      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.lines);
-      draw_range(cmd, mesh.lines);
+    if (spec.draw == sim::TreeDraw::tubes) {
+      draw_instances(cmd, pipes.tubes, [&](const Instance& i) { return mesh.tubes.at_least(i.thinnest_tube); });
+      draw_instances(cmd, pipes.lines, [&](const Instance& i) { return mesh.lines.below(i.thinnest_tube); },
+                     mesh.twig_vertices);
     } else {
-      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.tubes);
-      draw_range(cmd, mesh.tubes);
+      draw_instances(cmd, pipes.lines, [&](const Instance&) { return mesh.lines.all; });
     }
-    if (spec.leaves) {
-      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.leaves);
-      draw_range(cmd, mesh.leaves);
-    }
+    if (spec.leaves) draw_instances(cmd, pipes.leaves, [&](const Instance&) { return mesh.leaves; });
   }
 };
 
@@ -212,6 +229,7 @@ void TreeDrawable::regrow(std::uint64_t seed) {
 void TreeDrawable::set_bend_mode(sim::TreeBend mode) { impl_->spec.bend = mode; }
 void TreeDrawable::set_draw_mode(sim::TreeDraw mode) { impl_->spec.draw = mode; }
 void TreeDrawable::set_leaves(bool leaves) { impl_->spec.leaves = leaves; }
+void TreeDrawable::set_level_of_detail(bool on) { impl_->level_of_detail = on; }
 
 void TreeDrawable::set_manual_clock() { impl_->manual_clock = true; }
 void TreeDrawable::advance_clock(double seconds) {
@@ -223,6 +241,12 @@ const sim::WindSpec& TreeDrawable::wind() const { return impl_->wind_spec; }
 const tree::Tree& TreeDrawable::tree() const { return impl_->grown; }
 double TreeDrawable::wind_time() const {
   return impl_->instances.empty() ? 0.0 : impl_->instances.front().wind.time;
+}
+
+std::vector<int> TreeDrawable::thinnest_tube_levels() const {
+  std::vector<int> out;
+  for (const Instance& inst : impl_->instances) out.push_back(inst.thinnest_tube);
+  return out;
 }
 
 std::vector<tree::TreeWindFrame> TreeDrawable::wind_frames() const {
@@ -237,8 +261,8 @@ TreeDrawStats TreeDrawable::stats() const {
   return {.instances = m.instances.size(),
           .skeleton_vertices = m.grown.size(),
           .mesh_vertices = m.mesh.vertices.size(),
-          .line_segments = m.mesh.lines.count / 2,
-          .tube_triangles = m.mesh.tubes.count / 3,
+          .line_segments = m.mesh.lines.all.count / 2,
+          .tube_triangles = m.mesh.tubes.all.count / 3,
           .leaf_triangles = m.mesh.leaves.count / 3};
 }
 

@@ -4,8 +4,9 @@
 // bending in the scene's "wind".
 //
 // Per frame, prepare() advances every instance's WindState (gusts, inertia: src/tree/wind_state.h)
-// and writes the slot's camera/light uniforms; draw() pushes each instance's TreeWindFrame and
-// draws lines or tubes (+ leaves). The wind clock is the simulated time of FrameInfo::seconds by
+// and writes the slot's camera/light uniforms, and picks each instance's level of detail (tubes for
+// the levels wide enough on screen, twig lines for the thinner ones: gpu/tree_lod.h); draw() pushes
+// each instance's TreeWindFrame and draws lines, or tubes and twig lines (+ leaves). The wind clock is the simulated time of FrameInfo::seconds by
 // default, so `pond render` is deterministic; the windowed demo switches to set_manual_clock() and
 // calls advance_clock() with its wall-clock frame time, since the simulation runs faster than
 // real time.
@@ -47,6 +48,8 @@ class TreeDrawable final : public PassDrawable {
   void set_bend_mode(sim::TreeBend mode);
   void set_draw_mode(sim::TreeDraw mode);
   void set_leaves(bool leaves);
+  // On by default. Off: every level as tubes whatever the distance (the tests compare the two).
+  void set_level_of_detail(bool on);
 
   // ---- Wind clock ----
   void set_manual_clock();                  // from now on only advance_clock() moves the wind
@@ -59,6 +62,9 @@ class TreeDrawable final : public PassDrawable {
   double wind_time() const;                 // seconds of wind time so far
   // Each instance's frame as the next draw() pushes it (tree units).
   std::vector<tree::TreeWindFrame> wind_frames() const;
+  // Each instance's level of detail in the last prepared frame: the thinnest level drawn as tubes
+  // (the levels below it as twig lines; 1: all tubes). Meaningful for the tubes draw mode.
+  std::vector<int> thinnest_tube_levels() const;
   TreeDrawStats stats() const;
 
  private:

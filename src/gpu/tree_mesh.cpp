@@ -18,6 +18,8 @@ constexpr int kSidesThick = 6, kSidesThin = 4;
 // A leaf is a diamond this many times its twig's length long and wide.
 constexpr float kLeafLength = 1.1f, kLeafWidth = 0.6f;
 
+int tube_sides(int level) { return level <= 2 ? kSidesThin : kSidesThick; }
+
 sh::vec4 v4(Vec3 a) { return {a.x, a.y, a.z, 0.0f}; }
 
 // A unit vector perpendicular to unit `d`: crossed with the axis it is least aligned with.
@@ -53,27 +55,72 @@ float tree_tube_radius(int depth, int level) {
   return kTrunkRadius * std::pow(kRadiusRatio, static_cast<float>(depth - level));
 }
 
+IndexRange LevelRange::at_least(int level) const {
+  const auto end = level_end[static_cast<std::size_t>(std::clamp(level, 0, static_cast<int>(level_end.size()) - 1))];
+  return {all.first, end};
+}
+
+IndexRange LevelRange::below(int level) const {
+  const IndexRange thick = at_least(level);
+  return {all.first + thick.count, all.count - thick.count};
+}
+
 TreeMesh build_tree_mesh(const tree::Tree& t) {
   TreeMesh m;
   const std::size_t n = t.size();
   for (std::size_t i = 0; i < n; ++i) m.rest_height = std::max(m.rest_height, t.vertices[i].position.y);
 
+  // The segments (by their tip vertex), the trunk's level first; in skeleton order within a level.
+  std::vector<std::size_t> segments;
+  for (std::size_t i = 1; i < n; ++i) segments.push_back(i);
+  std::stable_sort(segments.begin(), segments.end(), [&](std::size_t a, std::size_t b) { return t.levels[a] > t.levels[b]; });
+  // Marks the end of each level in `r` as the segments are added: level_end[L] = indices so far
+  // once every segment of level >= L is in.
+  auto close_levels = [&](LevelRange& r, int from_level, int to_level) {
+    for (int l = from_level; l > to_level; --l) r.level_end[static_cast<std::size_t>(l)] = static_cast<std::uint32_t>(m.indices.size()) - r.all.first;
+  };
+
   // Lines: vertex i is skeleton vertex i.
   for (std::size_t i = 0; i < n; ++i) m.vertices.push_back(mesh_vertex(t, i, {}, {}, sh::kTreeMaterialLine));
-  m.lines.first = 0;
-  for (std::size_t i = 1; i < n; ++i)
+  m.lines.all.first = 0;
+  m.lines.level_end.assign(static_cast<std::size_t>(t.depth) + 2, 0);
+  int level = t.depth;
+  for (std::size_t i : segments) {
+    close_levels(m.lines, level, t.levels[i]);
+    level = t.levels[i];
     m.indices.insert(m.indices.end(), {static_cast<std::uint32_t>(t.parents[i]), static_cast<std::uint32_t>(i)});
-  m.lines.count = static_cast<std::uint32_t>(m.indices.size());
+  }
+  m.lines.all.count = static_cast<std::uint32_t>(m.indices.size());
+  close_levels(m.lines, level, -1);
+
+  // Twig lines: the same lines over a second copy of the skeleton's vertices (drawn with
+  // vertexOffset = twig_vertices), which carries what the level of detail's thin lines shade with.
+  m.twig_vertices = static_cast<std::int32_t>(m.vertices.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    // The segment ending here (the trunk's for the root) gives the direction, and the width is its
+    // tube's here (a segment tapers to its children's base radius at its tip), as seen on average
+    // from any side: a convex section's mean width is its perimeter / pi.
+    const std::size_t seg = i == 0 ? 1 : i;
+    const Vec3 d = tree::normalize(t.vertices[seg].position - t.vertices[static_cast<std::size_t>(t.parents[seg])].position);
+    TreeMeshVertex v = mesh_vertex(t, i, {}, d, sh::kTreeMaterialTwig);
+    const float sides = static_cast<float>(tube_sides(t.levels[seg]));
+    const float radius = tree_tube_radius(t.depth, i == 0 ? t.depth : t.levels[i] - 1);
+    v.offset.w = sides * 2.0f * radius * std::sin(std::numbers::pi_v<float> / sides) / std::numbers::pi_v<float>;
+    m.vertices.push_back(v);
+  }
 
   // Tubes.
-  m.tubes.first = static_cast<std::uint32_t>(m.indices.size());
-  for (std::size_t i = 1; i < n; ++i) {
+  m.tubes.all.first = static_cast<std::uint32_t>(m.indices.size());
+  m.tubes.level_end.assign(static_cast<std::size_t>(t.depth) + 2, 0);
+  level = t.depth;
+  for (std::size_t i : segments) {
+    close_levels(m.tubes, level, t.levels[i]);
+    level = t.levels[i];
     const auto p = static_cast<std::size_t>(t.parents[i]);
-    const int level = t.levels[i];
     const Vec3 dir = t.vertices[i].position - t.vertices[p].position;
     const Vec3 d = tree::normalize(dir);
     const Vec3 u = perpendicular(d), w = tree::cross(d, u);
-    const int sides = level <= 2 ? kSidesThin : kSidesThick;
+    const int sides = tube_sides(level);
     const float r_base = tree_tube_radius(t.depth, level), r_tip = tree_tube_radius(t.depth, level - 1);
     const auto base = static_cast<std::uint32_t>(m.vertices.size());
     for (int ring = 0; ring < 2; ++ring) {
@@ -84,13 +131,15 @@ TreeMesh build_tree_mesh(const tree::Tree& t) {
         m.vertices.push_back(mesh_vertex(t, ring == 0 ? p : i, normal * r, normal, sh::kTreeMaterialBark));
       }
     }
+    // (u, w, d) is right-handed, so k -> k + 1 turns counter-clockwise seen from outside.
     const auto s = static_cast<std::uint32_t>(sides);
     for (std::uint32_t k = 0; k < s; ++k) {
       const std::uint32_t a = base + k, b = base + (k + 1) % s, c = a + s, e = b + s;
       m.indices.insert(m.indices.end(), {a, b, e, a, e, c});
     }
   }
-  m.tubes.count = static_cast<std::uint32_t>(m.indices.size()) - m.tubes.first;
+  m.tubes.all.count = static_cast<std::uint32_t>(m.indices.size()) - m.tubes.all.first;
+  close_levels(m.tubes, level, -1);
 
   // Leaves at the tips of the thinnest twigs: a diamond in the plane of the twig and a side vector,
   // from the tip out along the twig.
@@ -111,6 +160,7 @@ TreeMesh build_tree_mesh(const tree::Tree& t) {
     m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
   }
   m.leaves.count = static_cast<std::uint32_t>(m.indices.size()) - m.leaves.first;
+
   return m;
 }
 

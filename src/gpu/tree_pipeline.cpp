@@ -83,7 +83,7 @@ TreePipelines create_tree_pipelines(const Context& ctx, vk::Format color_format,
                                                                                  .pPushConstantRanges = &push});
   using T = vk::PrimitiveTopology;
   using C = vk::CullModeFlagBits;
-  p.lines = create(ctx, p.layout, color_format, depth_format, {T::eLineList, C::eNone, "tree lines"});
+  p.lines = create(ctx, p.layout, color_format, depth_format, {T::eLineList, C::eNone, "tree lines and twig lines"});
   // A tube is only ever seen from outside (its open ends sit inside the joints, a twig's width), so
   // its back faces are always hidden: culling them halves what llvmpipe sets up and rasterizes, and
   // its per-triangle cost is what the tree's draw time is made of.

@@ -2,8 +2,9 @@
 // The wind tree's graphics pipelines (dynamic rendering into the frame loop's color format and
 // depth), sharing one descriptor-set layout (shared/tree_render.h bindings) and the TreeInstance
 // push constants:
-//  - lines: the skeleton as a line list, unlit (the article's look);
-//  - tubes: closed tubes as triangles, lit, back faces culled (their rings wind counter-clockwise
+//  - lines: the skeleton as a line list, unlit (the article's look), or the level of detail's twig
+//           lines (gpu/tree_lod.h), lit, lighting the pixels their tubes would (shaders/tree.frag);
+//  - tubes: the branches' tubes as triangles, lit, back faces culled (their rings wind counter-clockwise
 //           seen from outside: tree_mesh.cpp);
 //  - leaves: triangles, lit, no culling (a leaf is seen from both sides).
 #include <cstdint>

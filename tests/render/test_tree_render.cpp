@@ -319,20 +319,21 @@ TEST(TreeRipples, DeterministicOnWaterAndOnlyInWind) {
   EXPECT_TRUE(without.perturbations.empty());
 }
 
-// The mesh: one line per segment, closed tubes, one leaf per thinnest twig.
+// The mesh: one line per segment, closed tubes, one leaf per thinnest twig (order and winding:
+// test_tree_lod.cpp).
 TEST(TreeMesh, CountsAndRanges) {
   const tree::Tree t = tree::grow_tree({.depth = 6, .seed = 1});
   const gpu::TreeMesh m = gpu::build_tree_mesh(t);
-  EXPECT_EQ(m.lines.count, 2 * (t.size() - 1));
+  EXPECT_EQ(m.lines.all.count, 2 * (t.size() - 1));
   std::size_t twigs = 0, thin = 0;
   for (std::size_t i = 1; i < t.size(); ++i) {
     twigs += t.levels[i] == 1;
     thin += t.levels[i] <= 2;
   }
   EXPECT_EQ(m.leaves.count, 6 * twigs);
-  EXPECT_EQ(m.tubes.count, 6 * (4 * thin + 6 * (t.size() - 1 - thin)));
-  EXPECT_EQ(m.tubes.first, m.lines.count);
-  EXPECT_EQ(m.leaves.first, m.tubes.first + m.tubes.count);
+  EXPECT_EQ(m.tubes.all.count, 6 * (4 * thin + 6 * (t.size() - 1 - thin)));
+  EXPECT_EQ(m.tubes.all.first, m.lines.all.count);
+  EXPECT_EQ(m.leaves.first, m.tubes.all.first + m.tubes.all.count);
   for (std::uint32_t idx : m.indices) EXPECT_LT(idx, m.vertices.size());
   EXPECT_GT(m.rest_height, 1.0f);
   EXPECT_GT(gpu::tree_tube_radius(6, 6), gpu::tree_tube_radius(6, 1));

@@ -1,0 +1,62 @@
+#pragma once
+// The wind tree's level of detail, per frame and per instance: which levels are drawn as tubes and
+// which as twig lines (tree_mesh.h). llvmpipe pays per triangle (vertex shading and triangle setup
+// run on one thread), and at a pond's viewing distance most of a depth-8 tree's 3280 segments are
+// far thinner than a pixel: as tubes they cost ~28k triangles and rasterize as scattered dots; as
+// lines as opaque as the tube is wide (shaders/tree.frag) they cost a line each and cover what the
+// tube would, on average. Levels are ordered in the mesh, so the choice is one level per instance.
+//
+// The choice is conservative: a level is a tube when its base diameter, seen from the nearest point
+// of the instance's bounding sphere (bent by this frame's wind), spans kMinTubePixels or more.
+// No Vulkan here: the tests check it from a scene's camera.
+#include <array>
+
+#include "gpu/tree_mesh.h"
+#include "tree/tree.h"
+#include "tree/wind_state.h"
+
+namespace pond::gpu {
+
+// Tubes thinner than this on screen (pixels) are drawn as twig lines. A 1-px line stands in for a
+// tube up to about that width; 1.5 rather than 1 keeps a tube wherever the line would visibly thin it.
+inline constexpr float kMinTubePixels = 1.5f;
+
+// The camera as the level of detail needs it.
+struct TreeLodCamera {
+  std::array<float, 4> depth_row{};  // view depth (clip w) of world p: dot(xyz, p) + w
+  float pixels_per_unit = 0.0f;      // pixels per world unit at view depth 1
+};
+
+// From a column-major Vulkan view-projection (a perspective one: clip w is the view depth) and the
+// viewport's height in pixels.
+TreeLodCamera tree_lod_camera(const float* view_proj, int height);
+
+struct Sphere {
+  tree::Vec3 centre;
+  float radius = 0.0f;
+};
+
+// What bounds a grown tree's drawn vertices however the wind bends it (tree units), computed once
+// per tree: its rest bounding sphere, how far the article's bend can move a vertex per unit of wind
+// and of twig noise, and how far the length-preserving bend can reach from the root.
+struct TreeBounds {
+  Sphere rest;             // every rest mesh vertex (rings and leaves included)
+  tree::Vec3 root;         // rest position of the root
+  float reach = 0.0f;      // longest root-to-vertex path plus the largest ring or leaf offset
+  float wind_gain = 0.0f;  // max over vertices of |wX| + |wZ|
+  float jitter_gain = 0.0f;  // max over vertices of |coefficients|_1
+};
+
+TreeBounds tree_bounds(const tree::Tree& tree, const TreeMesh& mesh);
+
+// A sphere (tree units) holding every drawn vertex of the tree bent by `frame`: the article's bend
+// moves a vertex by at most wind_gain * (max(|wind.x|, |wind.z|) + jitter_gain * max|q|), the
+// length-preserving one keeps every vertex within `reach` of its (so moved) root.
+Sphere bent_bounds(const TreeBounds& bounds, const tree::TreeWindFrame& frame);
+
+// The thinnest level drawn as tubes: levels >= it are tubes, the ones below it twig lines (1: all
+// tubes, depth + 1: none). `bounds`: the instance's bent sphere in world units; `world_per_unit`:
+// the instance's scale (world units per tree unit).
+int thinnest_tube_level(const TreeLodCamera& camera, const Sphere& bounds, float world_per_unit, int depth);
+
+}  // namespace pond::gpu

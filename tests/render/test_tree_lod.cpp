@@ -1,0 +1,266 @@
+// The wind tree's level of detail (gpu/tree_lod.h) and the mesh order it relies on:
+//  - the mesh lists segments by level (trunk first) and its tubes wind counter-clockwise seen from
+//    outside (the tube pipeline culls back faces);
+//  - the bent bounding sphere holds every drawn vertex in any wind, in both bend modes;
+//  - at demo_257's own camera the thin levels are twig lines and the trunk a tube; near the tree,
+//    and with the camera inside its sphere, every level is a tube;
+//  - on the GPU (validation on): the close-up still draws the tree, as before; at the demo's
+//    distance the twig lines cover about as much, in about the same colour, as the tubes they
+//    stand for.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "gpu/frame_loop.h"
+#include "gpu/render_target.h"
+#include "gpu/tree_drawable.h"
+#include "gpu/tree_lod.h"
+#include "gpu/tree_mesh.h"
+#include "gpu/view_projection.h"
+#include "gpu_fixture.h"
+#include "image_compare.h"
+#include "sim/model.h"
+#include "sim/scene.h"
+#include "tree/bend.h"
+#include "tree/noise.h"
+
+namespace pond::test {
+namespace {
+
+using tree::Vec3;
+
+const std::string kDemoScene = std::string(POND_SCENES_DIR) + "/demo_257.json";
+
+// ---- The mesh's order and winding (no GPU) --------------------------------------------------------
+
+TEST(TreeMeshOrder, SegmentsByLevelTrunkFirst) {
+  const tree::Tree t = tree::grow_tree({.depth = 6, .seed = 2});
+  const gpu::TreeMesh m = gpu::build_tree_mesh(t);
+  // Lines: the tip of each line's segment, in order, never rises in level.
+  int previous = t.depth;
+  for (std::uint32_t k = m.lines.all.first; k < m.lines.all.first + m.lines.all.count; k += 2) {
+    const int level = t.levels[m.indices[k + 1]];
+    EXPECT_LE(level, previous);
+    previous = level;
+  }
+  for (int level = 0; level <= t.depth + 1; ++level) {
+    std::size_t at_least = 0, quads = 0;
+    for (std::size_t i = 1; i < t.size(); ++i)
+      if (t.levels[i] >= level) {
+        ++at_least;
+        quads += t.levels[i] <= 2 ? 4 : 6;
+      }
+    EXPECT_EQ(m.lines.at_least(level).count, 2 * at_least) << "level " << level;
+    EXPECT_EQ(m.tubes.at_least(level).count, 6 * quads) << "level " << level;
+    // The rest of each range is the levels below.
+    EXPECT_EQ(m.lines.below(level).first, m.lines.all.first + m.lines.at_least(level).count);
+    EXPECT_EQ(m.lines.at_least(level).count + m.lines.below(level).count, m.lines.all.count);
+    EXPECT_EQ(m.tubes.at_least(level).count + m.tubes.below(level).count, m.tubes.all.count);
+  }
+  EXPECT_EQ(m.tubes.at_least(1).count, m.tubes.all.count);
+  EXPECT_EQ(m.lines.below(1).count, 0u);
+  // The twig lines' vertices mirror the skeleton's, with their tube's diameter.
+  ASSERT_EQ(m.twig_vertices, static_cast<std::int32_t>(t.size()));
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const gpu::TreeMeshVertex& v = m.vertices[t.size() + i];
+    EXPECT_EQ(v.info.x, i);
+    EXPECT_EQ(v.info.y, shared::tree_wind::kTreeMaterialTwig);
+    EXPECT_GT(v.offset.w, 0.0f);
+    EXPECT_EQ(v.offset.x, 0.0f);
+  }
+}
+
+// Back-face culling keeps a tube's outside only if every triangle faces out.
+TEST(TreeMeshOrder, TubeTrianglesFaceOutward) {
+  const tree::Tree t = tree::grow_tree({.depth = 5, .seed = 4});
+  const gpu::TreeMesh m = gpu::build_tree_mesh(t);
+  auto rest = [&](std::uint32_t k) {
+    const gpu::TreeMeshVertex& v = m.vertices[m.indices[k]];
+    return v.branch.position + Vec3{v.offset.x, v.offset.y, v.offset.z};
+  };
+  for (std::uint32_t k = m.tubes.all.first; k < m.tubes.all.first + m.tubes.all.count; k += 3) {
+    const Vec3 face = tree::cross(rest(k + 1) - rest(k), rest(k + 2) - rest(k));
+    Vec3 outward{};
+    for (std::uint32_t c = 0; c < 3; ++c) {
+      const auto& n = m.vertices[m.indices[k + c]].normal;
+      outward = outward + Vec3{n.x, n.y, n.z};
+    }
+    ASSERT_GT(tree::dot(face, outward), 0.0f) << "tube triangle " << (k - m.tubes.all.first) / 3;
+  }
+}
+
+// ---- The bounds and the choice (no GPU) -----------------------------------------------------------
+
+TEST(TreeLod, BentBoundsHoldEveryDrawnVertex) {
+  const tree::Tree t = tree::grow_tree({.depth = 7, .seed = 5});
+  const gpu::TreeMesh m = gpu::build_tree_mesh(t);
+  const gpu::TreeBounds b = gpu::tree_bounds(t, m);
+  const tree::NoiseTable noise = tree::make_noise_table(3);
+  for (tree::BendMode mode : {tree::BendMode::article, tree::BendMode::keep_length})
+    for (float strength : {0.0f, 4.0f, 9.0f}) {
+      tree::WindState state;
+      const tree::UserWind user{.strength = strength, .direction = 2.0f};
+      for (int step = 0; step < 120; ++step) {
+        tree::advance_wind(state, noise, user, 1.0 / 10.0);
+        const tree::TreeWindFrame f = tree::wind_frame(state, noise, user, mode);
+        const std::vector<Vec3> bent = tree::bend_tree(t, f);
+        const gpu::Sphere s = gpu::bent_bounds(b, f);
+        float worst = 0.0f;
+        for (const gpu::TreeMeshVertex& v : m.vertices) {
+          const Vec3 p = bent[v.info.x] + Vec3{v.offset.x, v.offset.y, v.offset.z};
+          worst = std::max(worst, tree::length(p - s.centre) - s.radius);
+        }
+        ASSERT_LE(worst, 0.0f) << "strength " << strength << " step " << step;
+      }
+    }
+}
+
+struct DemoView {
+  sim::Scene scene;
+  sim::WaterModel model;
+  tree::Tree tree;
+  gpu::TreeBounds bounds;
+  float scale = 0;
+  Vec3 foot;
+
+  DemoView() : scene(sim::load_scene(kDemoScene)), model(sim::build_model(scene)) {
+    const sim::TreeSpec& spec = *scene.tree;
+    tree = tree::grow_tree({.depth = spec.depth, .seed = spec.seed});
+    const gpu::TreeMesh mesh = gpu::build_tree_mesh(tree);
+    bounds = gpu::tree_bounds(tree, mesh);
+    scale = static_cast<float>(spec.height) / mesh.rest_height;
+    const auto& rc = spec.positions.at(0);  // row, col (the loader's default: the island's centre)
+    foot = {static_cast<float>(rc[1] * model.spacing), static_cast<float>(scene.view.land_height),
+            static_cast<float>(rc[0] * model.spacing)};
+  }
+
+  int thinnest_tube(const lod::Camera& camera) const {
+    const std::array<float, 16> vp = gpu::view_projection(camera, model);
+    const gpu::TreeLodCamera c = gpu::tree_lod_camera(vp.data(), camera.height);
+    const gpu::Sphere s = bounds.rest;
+    return gpu::thinnest_tube_level(c, {foot + s.centre * scale, s.radius * scale}, scale, tree.depth);
+  }
+};
+
+TEST(TreeLod, DemoCameraDrawsThinLevelsAsLines) {
+  const DemoView d;
+  ASSERT_EQ(d.scene.tree->positions.size(), 1u);
+  const int level = d.thinnest_tube(gpu::scene_camera(d.scene, d.model, 1280, 720));
+  // At least the two thinnest levels (8 of 9 segments) are lines, and the trunk stays a tube.
+  EXPECT_GE(level, 3);
+  EXPECT_LE(level, d.tree.depth);
+  // Smaller viewports see the same tree in fewer pixels: never more tubes.
+  EXPECT_GE(d.thinnest_tube(gpu::scene_camera(d.scene, d.model, 640, 360)), level);
+}
+
+TEST(TreeLod, NearCameraDrawsEveryLevelAsTubes) {
+  const DemoView d;
+  lod::Camera near;
+  near.width = 1280;
+  near.height = 720;
+  near.eye = {163, 4, 139};  // 11 units from the trunk, looking up into the crown
+  near.target = {160, 6, 128};
+  near.fovy_degrees = 40;
+  EXPECT_EQ(d.thinnest_tube(near), 1);
+  near.eye = {160, 8, 129};  // inside the crown's sphere
+  EXPECT_EQ(d.thinnest_tube(near), 1);
+}
+
+// ---- On the GPU ---------------------------------------------------------------------------------
+
+class TreeLodRenderTest : public GpuTest {
+ protected:
+  static constexpr int kWidth = 1280, kHeight = 720;  // the demo's: its tree is ~60 px tall
+
+  // demo_257 after `steps` steps from `camera` (nullptr: the scene's), with or without its tree and
+  // with or without the level of detail; `levels` gets the LOD's choice.
+  Rgba render(bool with_tree, bool lod, const lod::Camera* camera, int* level = nullptr) {
+    sim::Scene scene = sim::load_scene(kDemoScene);
+    scene.perturbations.clear();  // a still pond: the pictures differ by the tree alone
+    const sim::TreeSpec tree = *scene.tree;
+    gpu::FrameLoop loop(ctx(), scene, {}, gpu::RenderTarget::kFormat);
+    gpu::TreeDrawable drawable(ctx(), loop, tree, scene.wind);
+    drawable.set_level_of_detail(lod);
+    if (with_tree) loop.add_drawable(drawable);
+    const gpu::RenderTarget target(ctx(), kWidth, kHeight);
+    loop.advance(25);
+    gpu::FrameView view;
+    view.camera = camera ? *camera : loop.default_camera(kWidth, kHeight);
+    view.steps = 0;
+    view.wait = true;
+    loop.frame(target.frame_target(), view);
+    if (level) *level = drawable.thinnest_tube_levels().at(0);
+    return Rgba{kWidth, kHeight, target.read_rgba()};
+  }
+
+  // The pixels where `img` differs from `bare` (the tree's footprint) and their mean colour.
+  struct Footprint {
+    std::size_t pixels = 0;
+    double rgb[3] = {0, 0, 0};
+  };
+  static Footprint footprint(const Rgba& bare, const Rgba& img, const std::vector<bool>& within) {
+    Footprint f;
+    for (std::size_t p = 0; p < within.size(); ++p) {
+      if (!within[p]) continue;
+      bool differs = false;
+      for (int c = 0; c < 3; ++c) differs |= std::abs(bare.pixels[4 * p + c] - img.pixels[4 * p + c]) > kLevels;
+      f.pixels += differs;
+      for (int c = 0; c < 3; ++c) f.rgb[c] += img.pixels[4 * p + c];
+    }
+    std::size_t n = std::count(within.begin(), within.end(), true);
+    for (double& c : f.rgb) c /= static_cast<double>(std::max<std::size_t>(n, 1));
+    return f;
+  }
+  static std::vector<bool> differing(const Rgba& a, const Rgba& b) {
+    std::vector<bool> out(static_cast<std::size_t>(a.width) * a.height);
+    for (std::size_t p = 0; p < out.size(); ++p)
+      for (int c = 0; c < 3; ++c) out[p] = out[p] || std::abs(a.pixels[4 * p + c] - b.pixels[4 * p + c]) > kLevels;
+    return out;
+  }
+  static constexpr int kLevels = 4;
+};
+
+TEST_F(TreeLodRenderTest, CloseUpStillDrawsTheTreeAsTubes) {
+  lod::Camera near;
+  near.eye = {163, 4, 139};
+  near.target = {160, 6, 128};
+  near.fovy_degrees = 40;
+  int level = 0;
+  const Rgba bare = render(false, true, &near), lod = render(true, true, &near, &level);
+  EXPECT_EQ(level, 1);
+  const std::vector<bool> tree = differing(bare, lod);
+  const auto share = static_cast<double>(std::count(tree.begin(), tree.end(), true)) / static_cast<double>(tree.size());
+  EXPECT_GT(share, 0.05) << "the close-up shows little of the tree";
+  // All tubes: the level of detail changes nothing here.
+  EXPECT_EQ(compare(render(true, false, &near), lod, 0).share, 0.0);
+}
+
+// At the demo's own distance most of the tree is twig lines: its footprint and colour stay close to
+// those of the tubes they replace (measured: 1183 px vs 1101, 3-4 levels darker on average, as the
+// twigs' averaged light is a little darker than the prisms' facets). Opaque lines, ignoring the
+// tube's width, would draw 2032 px, 25-37 levels darker.
+TEST_F(TreeLodRenderTest, TwigLinesLookLikeTheTubesTheyReplace) {
+  int level = 0;
+  const Rgba bare = render(false, true, nullptr), lod = render(true, true, nullptr, &level),
+             tubes = render(true, false, nullptr);
+  EXPECT_GE(level, 3);
+  // The tree's area: every pixel either picture changed, grown by a pixel each way.
+  std::vector<bool> area = differing(bare, lod), changed = differing(bare, tubes);
+  for (std::size_t p = 0; p < area.size(); ++p) area[p] = area[p] || changed[p];
+  std::vector<bool> grown = area;
+  for (int y = 1; y + 1 < kHeight; ++y)
+    for (int x = 1; x + 1 < kWidth; ++x)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+          if (area[static_cast<std::size_t>((y + dy) * kWidth + x + dx)]) grown[static_cast<std::size_t>(y * kWidth + x)] = true;
+  const Footprint a = footprint(bare, lod, grown), b = footprint(bare, tubes, grown);
+  ASSERT_GT(b.pixels, 300u) << "the tree is not in the picture";
+  EXPECT_NEAR(static_cast<double>(a.pixels), static_cast<double>(b.pixels), 0.12 * static_cast<double>(b.pixels));
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(a.rgb[c], b.rgb[c], 6.0) << "channel " << c;
+  std::printf("tree footprint at %dx%d, thinnest tube level %d: %zu px (lod) vs %zu px (tubes); mean rgb "
+              "%.1f %.1f %.1f vs %.1f %.1f %.1f\n",
+              kWidth, kHeight, level, a.pixels, b.pixels, a.rgb[0], a.rgb[1], a.rgb[2], b.rgb[0], b.rgb[1], b.rgb[2]);
+}
+
+}  // namespace
+}  // namespace pond::test
