@@ -1,7 +1,12 @@
 #version 460
 // Wind tree shading: the line look unlit (the article's), bark and leaves with the water's sun and
 // sky (diffuse + sky ambient, the land's model), leaves lit from whichever side faces the camera
-// and varied in shade per leaf so the crown is not one flat green.
+// and varied in shade per leaf so the crown is not one flat green, and the level of detail's twig
+// lines (below).
+//
+// One source, one fragment shader per pipeline (cmake variants: POND_TREE_FRAG_LINE, _TWIG, _LEAF;
+// none = bark): llvmpipe runs both sides of a branch under a mask, so a shader holding every
+// material would make each tree pixel pay for all of them (the twig's acos and sin included).
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/tree_render.h"
@@ -49,25 +54,31 @@ vec3 twig_color(vec3 axis) {
   return f.bark.rgb * (f.sky.rgb * (0.3 + 0.15 * up) + 0.85 * diffuse * kSunColor);
 }
 
+#if defined(POND_TREE_FRAG_LINE)
+void main() { out_color = finish_color(f.line.rgb); }
+
+#elif defined(POND_TREE_FRAG_TWIG)
 void main() {
-  const vec2 axis_dx = dFdx(in_axis), axis_dy = dFdy(in_axis);  // in uniform control flow
-  if (in_material.x == kTreeMaterialLine) {
-    out_color = finish_color(f.line.rgb);
-    return;
-  }
-  if (in_material.x == kTreeMaterialTwig) {
-    if (!twig_covers_pixel(axis_dx, axis_dy)) discard;
-    out_color = finish_color(twig_color(in_normal));
-    return;
-  }
+  if (!twig_covers_pixel(dFdx(in_axis), dFdy(in_axis))) discard;
+  out_color = finish_color(twig_color(in_normal));
+}
+
+#elif defined(POND_TREE_FRAG_LEAF)
+void main() {
   vec3 n = normalize(in_normal);
-  const bool leaf = in_material.x == kTreeMaterialLeaf;
-  if (leaf && dot(n, f.eye.xyz - in_world) < 0.0) n = -n;  // a leaf shows its lit side either way
-  const float diffuse = max(dot(n, f.sun.xyz), 0.0);
+  if (dot(n, f.eye.xyz - in_world) < 0.0) n = -n;  // a leaf shows its lit side either way
+  const float sun = dot(n, f.sun.xyz);
   const float shade = 0.75 + 0.5 * float(in_material.y) / 255.0;
-  const vec3 albedo = leaf ? f.leaf.rgb * shade : f.bark.rgb;
   const vec3 ambient = f.sky.rgb * (0.3 + 0.15 * n.y);
   // Light through a leaf: its far side still glows a little when the sun is behind it.
-  const float through = leaf ? 0.25 * max(-dot(n, f.sun.xyz), 0.0) : 0.0;
-  out_color = finish_color(albedo * (ambient + (0.85 * diffuse + through) * kSunColor));
+  const float light = 0.85 * max(sun, 0.0) + 0.25 * max(-sun, 0.0);
+  out_color = finish_color(f.leaf.rgb * shade * (ambient + light * kSunColor));
 }
+
+#else  // bark
+void main() {
+  const vec3 n = normalize(in_normal);
+  const vec3 ambient = f.sky.rgb * (0.3 + 0.15 * n.y);
+  out_color = finish_color(f.bark.rgb * (ambient + 0.85 * max(dot(n, f.sun.xyz), 0.0) * kSunColor));
+}
+#endif

@@ -187,7 +187,7 @@ struct TreeDrawable::Impl {
     cmd.bindIndexBuffer(*indices.buffer, 0, vk::IndexType::eUint32);
     if (spec.draw == sim::TreeDraw::tubes) {
       draw_instances(cmd, pipes.tubes, [&](const Instance& i) { return mesh.tubes.at_least(i.thinnest_tube); });
-      draw_instances(cmd, pipes.lines, [&](const Instance& i) { return mesh.lines.below(i.thinnest_tube); },
+      draw_instances(cmd, pipes.twigs, [&](const Instance& i) { return mesh.lines.below(i.thinnest_tube); },
                      mesh.twig_vertices);
     } else {
       draw_instances(cmd, pipes.lines, [&](const Instance&) { return mesh.lines.all; });

@@ -6,6 +6,9 @@
 namespace pond::gpu {
 namespace {
 #include "tree_frag.spv.h"
+#include "tree_leaf_frag.spv.h"
+#include "tree_line_frag.spv.h"
+#include "tree_twig_frag.spv.h"
 #include "tree_vert.spv.h"
 
 namespace sh = shared::tree_wind;
@@ -14,6 +17,7 @@ namespace sh = shared::tree_wind;
 struct Variant {
   vk::PrimitiveTopology topology;
   vk::CullModeFlags cull;
+  std::span<const std::uint32_t> frag;  // a variant of tree.frag
   const char* name;
 };
 
@@ -54,7 +58,7 @@ vk::raii::Pipeline create(const Context& ctx, const vk::raii::PipelineLayout& la
   using CC = vk::ColorComponentFlagBits;
   const vk::PipelineColorBlendAttachmentState blend{.colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
   return create_graphics_pipeline(ctx, layout, color, depth,
-                                  {tree_vert_spirv(), tree_frag_spirv(), vertex_input, assembly, raster,
+                                  {tree_vert_spirv(), variant.frag, vertex_input, assembly, raster,
                                    depth_state, blend, variant.name});
 }
 
@@ -83,12 +87,13 @@ TreePipelines create_tree_pipelines(const Context& ctx, vk::Format color_format,
                                                                                  .pPushConstantRanges = &push});
   using T = vk::PrimitiveTopology;
   using C = vk::CullModeFlagBits;
-  p.lines = create(ctx, p.layout, color_format, depth_format, {T::eLineList, C::eNone, "tree lines and twig lines"});
+  p.lines = create(ctx, p.layout, color_format, depth_format, {T::eLineList, C::eNone, pond_spirv_tree_line_frag, "tree lines"});
+  p.twigs = create(ctx, p.layout, color_format, depth_format, {T::eLineList, C::eNone, pond_spirv_tree_twig_frag, "tree twig lines"});
   // A tube is only ever seen from outside (its open ends sit inside the joints, a twig's width), so
   // its back faces are always hidden: culling them halves what llvmpipe sets up and rasterizes, and
   // its per-triangle cost is what the tree's draw time is made of.
-  p.tubes = create(ctx, p.layout, color_format, depth_format, {T::eTriangleList, C::eBack, "tree tubes"});
-  p.leaves = create(ctx, p.layout, color_format, depth_format, {T::eTriangleList, C::eNone, "tree leaves"});
+  p.tubes = create(ctx, p.layout, color_format, depth_format, {T::eTriangleList, C::eBack, pond_spirv_tree_frag, "tree tubes"});
+  p.leaves = create(ctx, p.layout, color_format, depth_format, {T::eTriangleList, C::eNone, pond_spirv_tree_leaf_frag, "tree leaves"});
   return p;
 }
 
