@@ -85,6 +85,22 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores)
                            BU::eTransferSrc | BU::eTransferDst;
   state_[0] = create_buffer(ctx_, state_bytes, state_usage, MemoryUse::device, "water state A");
   state_[1] = create_buffer(ctx_, state_bytes, state_usage, MemoryUse::device, "water state B");
+  // Where every device-local memory type the state could be in is also host-visible, cached and
+  // coherent (lavapipe: the "GPU" memory is the CPU's), the state stays mapped and the renderer
+  // reads the displacements in place instead of copying them each frame (host_state()).
+  {
+    using MP = vk::MemoryPropertyFlagBits;
+    const vk::MemoryPropertyFlags host = MP::eHostVisible | MP::eHostCached | MP::eHostCoherent;
+    const vk::PhysicalDeviceMemoryProperties props = ctx_.physical().getMemoryProperties();
+    const std::uint32_t bits = state_[0].buffer.getMemoryRequirements().memoryTypeBits;
+    bool readable = true;
+    for (std::uint32_t t = 0; t < props.memoryTypeCount; ++t) {
+      const vk::MemoryPropertyFlags flags = props.memoryTypes[t].propertyFlags;
+      if ((bits >> t & 1u) && (flags & MP::eDeviceLocal) && (flags & host) != host) readable = false;
+    }
+    if (readable)
+      for (Buffer& b : state_) b.mapped = b.memory.mapMemory(0, VK_WHOLE_SIZE);
+  }
 
   const std::vector<std::uint32_t> kinds = pack_kinds(model_.kinds);
   kinds_ = create_buffer(ctx_, kinds.size() * 4, BU::eUniformTexelBuffer | BU::eTransferDst, MemoryUse::device,
@@ -286,9 +302,11 @@ void GpuSolver::compute_normals() {
   submitter_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) { record_normals(cmd); });
 }
 
-void GpuSolver::advance_for_frame(std::int64_t steps, const Buffer& displacements) {
+void GpuSolver::advance_for_frame(std::int64_t steps, const Buffer* displacements) {
   const vk::DeviceSize bytes = 3 * stride_ * sizeof(float);
-  if (displacements.size < bytes) throw RuntimeError("GpuSolver::advance_for_frame: the readback buffer is too small");
+  if (displacements ? displacements->size < bytes : host_state() == nullptr)
+    throw RuntimeError("GpuSolver::advance_for_frame: no readback buffer of " + std::to_string(bytes) +
+                       " bytes, and the state is not host-readable");
   const std::int64_t steps_per_submit =
       std::max<std::int64_t>(1, kMaxDispatchesPerSubmit / std::max(1, model_.substeps));
   if (steps > steps_per_submit) advance(steps - steps_per_submit);
@@ -296,16 +314,24 @@ void GpuSolver::advance_for_frame(std::int64_t steps, const Buffer& displacement
   submitter_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
     record_barrier(cmd);
     for (std::int64_t s = 0; s < last; ++s) record_step(cmd);
-    // record_normals() ends with a compute -> transfer barrier; the last step's barrier covers
-    // the state for the copy.
     record_normals(cmd);
-    cmd.copyBuffer(*state_[cur_].buffer, *displacements.buffer,
-                   vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = bytes});
-    const vk::MemoryBarrier2 to_host{.srcStageMask = vk::PipelineStageFlagBits2::eCopy,
-                                     .srcAccessMask = vk::AccessFlagBits2::eTransferWrite,
-                                     .dstStageMask = vk::PipelineStageFlagBits2::eHost,
-                                     .dstAccessMask = vk::AccessFlagBits2::eHostRead};
-    cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_host});
+    using S = vk::PipelineStageFlagBits2;
+    using A = vk::AccessFlagBits2;
+    if (displacements) {
+      // record_normals() ended with a compute -> transfer barrier; the last step's barrier
+      // covers the state for the copy.
+      cmd.copyBuffer(*state_[cur_].buffer, *displacements->buffer,
+                     vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = bytes});
+      const vk::MemoryBarrier2 to_host{.srcStageMask = S::eCopy, .srcAccessMask = A::eTransferWrite,
+                                       .dstStageMask = S::eHost, .dstAccessMask = A::eHostRead};
+      cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_host});
+    } else {
+      // The state the substeps (or set_state's upload) wrote, read by the host in place.
+      const vk::MemoryBarrier2 to_host{.srcStageMask = S::eComputeShader | S::eTransfer,
+                                       .srcAccessMask = A::eShaderWrite | A::eTransferWrite,
+                                       .dstStageMask = S::eHost, .dstAccessMask = A::eHostRead};
+      cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_host});
+    }
   });
 }
 

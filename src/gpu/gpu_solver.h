@@ -44,10 +44,17 @@ class GpuSolver {
   void compute_normals();
   // A frame's compute in one submission (the renderer's WaterSource): advances `steps` steps,
   // computes the normals of the new state into normals_buffer() (ready for the vertex shader and
-  // transfers), copies the displacements (ux | uy | uz: the first 3 * stride floats of
-  // state_buffer()) into `displacements` (host-visible, made visible to the host) and waits.
+  // transfers), makes the displacements (ux | uy | uz: the first 3 * stride floats of
+  // state_buffer()) visible to the host and waits: copied into `displacements` (host-visible),
+  // or, when it is null, in place (host_state(), which must then be non-null).
   // Beyond kMaxDispatchesPerSubmit dispatches the earlier steps go first, as advance() does.
-  void advance_for_frame(std::int64_t steps, const Buffer& displacements);
+  void advance_for_frame(std::int64_t steps, const Buffer* displacements);
+  // The current state in host memory (ux at [0], uy at [stride], uz at [2 * stride], ...) where
+  // the state buffers' memory is host-visible, cached and coherent (CPU devices such as
+  // lavapipe): valid to read after advance_for_frame(steps, nullptr) until the next command.
+  // Null elsewhere (discrete GPUs: copy instead).
+  const float* host_state() const { return static_cast<const float*>(state_[cur_].mapped); }
+  std::size_t stride() const { return stride_; }
   // compute_normals() and read them back, as sim::Normals.
   sim::Normals read_normals();
   // normals_buffer() read back as it is (what the last compute_normals() or advance_for_frame()

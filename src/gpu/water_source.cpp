@@ -15,8 +15,9 @@ WaterSource::WaterSource(const Context& ctx, const sim::WaterModel& model, const
   const std::size_t stride = state_stride(model.nodes());
   if (choice.gpu) {
     gpu_.emplace(ctx, model);
-    readback_ = create_buffer(ctx, 3 * stride * sizeof(float), BU::eTransferDst, MemoryUse::readback,
-                              "water positions readback");
+    if (!gpu_->host_state())  // else read in place (lavapipe)
+      readback_ = create_buffer(ctx, 3 * stride * sizeof(float), BU::eTransferDst, MemoryUse::readback,
+                                "water positions readback");
   } else {
     cpu_.emplace(model, choice.backend, choice.threads);
     for (std::uint32_t s = 0; s < slots; ++s) {
@@ -36,9 +37,15 @@ void WaterSource::advance(std::int64_t steps) {
 WaterSource::DrawBuffers WaterSource::advance_and_prepare(std::int64_t steps, std::uint32_t slot) {
   const std::size_t nodes = model_.nodes(), stride = state_stride(nodes);
   if (gpu_) {
-    gpu_->advance_for_frame(steps, readback_);
-    readback_.invalidate(ctx_);
-    const auto* u = static_cast<const float*>(readback_.mapped);
+    const float* u = gpu_->host_state();
+    if (u) {
+      gpu_->advance_for_frame(steps, nullptr);
+      u = gpu_->host_state();  // the current buffer of the ping-pong pair
+    } else {
+      gpu_->advance_for_frame(steps, &readback_);
+      readback_.invalidate(ctx_);
+      u = static_cast<const float*>(readback_.mapped);
+    }
     to_world(u, u + stride, u + 2 * stride);
     return {&gpu_->state_buffer(), &gpu_->normals_buffer(), static_cast<std::uint32_t>(stride)};
   }

@@ -4,8 +4,9 @@
 //    normals: one vec4 per node);
 //  - the node positions in world units on the CPU, for the LOD builder.
 // GPU: the solver's own buffers (no copy for drawing); the normals pass runs on the GPU and the three
-//      displacement arrays are copied into a host-readable buffer (about 0.8 MB at 257^2). A frame's
-//      substeps, normals and copy are one submission (advance_and_prepare).
+//      displacement arrays are read in place where the state's memory is host-readable (lavapipe),
+//      else copied into a host-readable buffer (about 0.8 MB at 257^2). A frame's substeps,
+//      normals and copy are one submission (advance_and_prepare).
 // CPU: the state and the CPU normals are written into the frame slot's host-visible buffers
 //      (per slot, so a frame in flight keeps reading its own).
 #include <cstdint>
@@ -51,7 +52,7 @@ class WaterSource {
   const sim::WaterModel& model_;
   std::optional<GpuSolver> gpu_;
   std::optional<sim::CpuSolver> cpu_;
-  Buffer readback_;                          // GPU: the displacements, host-readable
+  Buffer readback_;  // GPU, when the state is not host-readable: the displacements, copied
   std::vector<Buffer> slot_state_, slot_normals_;  // CPU: per slot
   std::vector<float> x_, y_, z_;             // world positions for the LOD
 };
