@@ -11,7 +11,7 @@ using BU = vk::BufferUsageFlagBits;
 
 WaterSource::WaterSource(const Context& ctx, const sim::WaterModel& model, const SolverChoice& choice,
                          std::uint32_t slots)
-    : ctx_(ctx), model_(model), x_(model.nodes()), y_(model.nodes()), z_(model.nodes()) {
+    : ctx_(ctx), model_(model) {
   const std::size_t stride = state_stride(model.nodes());
   if (choice.gpu) {
     gpu_.emplace(ctx, model);
@@ -46,7 +46,7 @@ WaterSource::DrawBuffers WaterSource::advance_and_prepare(std::int64_t steps, st
       readback_.invalidate(ctx_);
       u = static_cast<const float*>(readback_.mapped);
     }
-    to_world(u, u + stride, u + 2 * stride);
+    displacements_ = {u, u + stride, u + 2 * stride};
     return {&gpu_->state_buffer(), &gpu_->normals_buffer(), static_cast<std::uint32_t>(stride)};
   }
   cpu_->advance(steps);
@@ -63,29 +63,14 @@ WaterSource::DrawBuffers WaterSource::advance_and_prepare(std::int64_t steps, st
     v[4 * k + 2] = n.z[k];
     v[4 * k + 3] = 0.0f;
   }
-  to_world(s.ux.data(), s.uy.data(), s.uz.data());
+  displacements_ = {s.ux.data(), s.uy.data(), s.uz.data()};
   return {&slot_state_[slot], &slot_normals_[slot], static_cast<std::uint32_t>(stride)};
 }
 
-// Row by row: node (i, j) rests at (j, 0, i) grid units (no division per node).
-void WaterSource::to_world(const float* ux, const float* uy, const float* uz) {
-  const float h = model_.spacing;
-  const std::size_t cols = static_cast<std::size_t>(model_.cols);
-  for (std::size_t i = 0, row = 0; i < static_cast<std::size_t>(model_.rows); ++i, row += cols) {
-    const float z0 = static_cast<float>(i);
-    float* x = x_.data() + row;
-    float* y = y_.data() + row;
-    float* z = z_.data() + row;
-    for (std::size_t j = 0; j < cols; ++j) {
-      x[j] = (static_cast<float>(j) + ux[row + j]) * h;
-      y[j] = uy[row + j] * h;
-      z[j] = (z0 + uz[row + j]) * h;
-    }
-  }
-}
-
 lod::NodePositions WaterSource::positions() const {
-  return lod::soa_positions(x_.data(), y_.data(), z_.data(), model_.rows, model_.cols);
+  // The LOD builder converts the displacements to world positions as it copies them.
+  return lod::grid_displacements(displacements_[0], displacements_[1], displacements_[2], model_.rows, model_.cols,
+                                 model_.spacing);
 }
 
 sim::WaterState WaterSource::state() const { return gpu_ ? gpu_->read_state() : cpu_->state(); }

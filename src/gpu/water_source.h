@@ -2,13 +2,15 @@
 // The solver behind the frame loop, CPU or GPU, and what a frame needs from it after advancing:
 //  - the buffers the water vertex shader reads (state: ux | uy | uz arrays of `stride` floats;
 //    normals: one vec4 per node);
-//  - the node positions in world units on the CPU, for the LOD builder.
+//  - the node positions on the CPU, for the LOD builder: the displacements in grid units where they
+//    already are (lod::grid_displacements; the builder converts them to world units as it copies).
 // GPU: the solver's own buffers (no copy for drawing); the normals pass runs on the GPU and the three
 //      displacement arrays are read in place where the state's memory is host-readable (lavapipe),
 //      else copied into a host-readable buffer (about 0.8 MB at 257^2). A frame's substeps,
 //      normals and copy are one submission (advance_and_prepare).
 // CPU: the state and the CPU normals are written into the frame slot's host-visible buffers
 //      (per slot, so a frame in flight keeps reading its own).
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -38,7 +40,8 @@ class WaterSource {
   DrawBuffers prepare(std::uint32_t slot) { return advance_and_prepare(0, slot); }
   // advance(steps) then prepare(slot); on the GPU all of it is one submission and one wait.
   DrawBuffers advance_and_prepare(std::int64_t steps, std::uint32_t slot);
-  // World positions of the state prepare() last saw.
+  // Positions of the state prepare() last saw, as a view of its displacements: valid until the
+  // next advance, set_state or prepare.
   lod::NodePositions positions() const;
 
   sim::WaterState state() const;
@@ -46,15 +49,13 @@ class WaterSource {
   void set_state(const sim::WaterState& state, std::int64_t steps_done);
 
  private:
-  void to_world(const float* ux, const float* uy, const float* uz);
-
   const Context& ctx_;
   const sim::WaterModel& model_;
   std::optional<GpuSolver> gpu_;
   std::optional<sim::CpuSolver> cpu_;
   Buffer readback_;  // GPU, when the state is not host-readable: the displacements, copied
   std::vector<Buffer> slot_state_, slot_normals_;  // CPU: per slot
-  std::vector<float> x_, y_, z_;             // world positions for the LOD
+  std::array<const float*, 3> displacements_{};  // ux, uy, uz of the state prepare() last saw
 };
 
 }  // namespace pond::gpu

@@ -3,6 +3,11 @@
 // (row, col) has index n = row * cols + col and its x, y, z at x[n * stride], y[n * stride],
 // z[n * stride], so the same view reads the STATE.npy interleaved layout (stride 6) and
 // structure-of-arrays buffers (stride 1) without a copy.
+// With grid_spacing > 0 the view holds displacements from the rest grid in grid units, as the
+// solvers store the state (sim/state.h) and the renderer finds it: node (row, col) is at
+// ((col + x[n]) * h, y[n] * h, (row + z[n]) * h), h = grid_spacing, in float, in that order.
+// LodBuilder::build converts while it copies the positions (position_copy.h), so the renderer
+// writes no world positions of its own.
 #include <cstddef>
 
 namespace pond::lod {
@@ -13,6 +18,7 @@ struct NodePositions {
   const float* z = nullptr;
   std::size_t stride = 1;  // floats between two consecutive nodes' x
   int rows = 0, cols = 0;
+  float grid_spacing = 0;  // > 0: displacements in grid units from the rest grid of this spacing
 
   std::size_t nodes() const { return static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols); }
 };
@@ -27,6 +33,12 @@ inline NodePositions interleaved_positions(const float* data, int rows, int cols
 inline NodePositions soa_positions(const float* x, const float* y, const float* z, int rows,
                                    int cols) {
   return {x, y, z, 1, rows, cols};
+}
+
+// Three arrays of rows * cols displacements from the rest grid, in grid units (see the top).
+inline NodePositions grid_displacements(const float* ux, const float* uy, const float* uz, int rows,
+                                        int cols, float spacing) {
+  return {ux, uy, uz, 1, rows, cols, spacing};
 }
 
 }  // namespace pond::lod

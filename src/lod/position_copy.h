@@ -5,8 +5,9 @@
 
 namespace pond::lod {
 
-// Copies node n's position to x[n], y[n], z[n] and returns the largest |coordinate|: +inf or NaN
-// when some coordinate is not finite.
+// Copies node n's position to x[n], y[n], z[n] (world units: a grid_displacements view is
+// converted on the way) and returns the largest |coordinate|: +inf or NaN when some coordinate is
+// not finite.
 float copy_positions(const NodePositions& positions, float* x, float* y, float* z);
 
 }  // namespace pond::lod

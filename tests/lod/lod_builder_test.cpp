@@ -171,6 +171,50 @@ TEST(LodBuilder, ReadsStructureOfArraysLikeInterleaved) {
   EXPECT_EQ(out, build(s, rows, cols, c, 1.0).tris);
 }
 
+// The renderer's view: the solver's displacements in grid units (grid_displacements), converted
+// by the builder while it copies. The same triangles as the world positions computed the
+// documented way, (col + ux) * h, uy * h, (row + uz) * h; 33 x 21 also runs the 4-wide path's
+// scalar tail (21 = 5 x 4 + 1). A non-finite displacement is refused like a position.
+TEST(LodBuilder, ReadsGridDisplacementsLikeWorldPositions) {
+  const sim::Scene scene = sim::parse_scene(
+      R"({"grid": {"rows": 33, "cols": 21, "spacing": 0.5},
+          "perturbations": [{"step": 0, "row": 16, "col": 10, "radius": 2.0, "amplitude": 2.0},
+                            {"step": 5, "row": 8, "col": 4.5, "radius": 1.5, "amplitude": 1.0,
+                             "target": "position"}]})",
+      "displacements");
+  const sim::WaterModel model = sim::build_model(scene);
+  sim::CpuSolver solver(model, sim::Backend::scalar, 1);
+  solver.advance(40);
+  sim::WaterState u = solver.state();
+  const int rows = model.rows, cols = model.cols;
+  const float h = model.spacing;
+  std::vector<float> x, y, z;
+  for (int i = 0; i < rows; ++i)
+    for (int j = 0; j < cols; ++j) {
+      const std::size_t n = static_cast<std::size_t>(i) * cols + j;
+      x.push_back((static_cast<float>(j) + u.ux[n]) * h);
+      y.push_back(u.uy[n] * h);
+      z.push_back((static_cast<float>(i) + u.uz[n]) * h);
+    }
+  lod::LodBuilder builder(rows, cols);
+  std::vector<std::uint32_t> world(builder.max_indices()), displaced(builder.max_indices());
+  for (const auto& [name, c] : cameras(rows, cols)) {
+    const lod::Camera cam{{c.eye[0] * h, c.eye[1] * h, c.eye[2] * h}, {c.target[0] * h, c.target[1] * h, c.target[2] * h},
+                          c.fovy_degrees, c.width, c.height};
+    world.resize(builder.build(lod::soa_positions(x.data(), y.data(), z.data(), rows, cols), cam, 0.5, world));
+    displaced.resize(builder.build(
+        lod::grid_displacements(u.ux.data(), u.uy.data(), u.uz.data(), rows, cols, h), cam, 0.5, displaced));
+    EXPECT_EQ(displaced, world) << name;
+    EXPECT_LT(world.size(), 6u * (rows - 1) * (cols - 1)) << name << ": a full mesh proves little";
+    world.resize(builder.max_indices()), displaced.resize(builder.max_indices());
+  }
+  u.uz[7 * cols + 20] = std::numeric_limits<float>::infinity();
+  const CheckCamera c = cameras(rows, cols)[0].second;
+  EXPECT_THROW(builder.build(lod::grid_displacements(u.ux.data(), u.uy.data(), u.uz.data(), rows, cols, h),
+                             lod::Camera{c.eye, c.target, c.fovy_degrees, c.width, c.height}, 1.0, world),
+               InputError);
+}
+
 TEST(LodBuilder, RejectsBadInput) {
   const std::vector<float> s = flat_pond(9, 9);
   lod::LodBuilder builder(9, 9);
