@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numbers>
 #include <span>
 #include <string>
@@ -33,9 +34,11 @@ sh::vec4 v4(const std::array<double, 3>& a) {
 struct Instance {
   sh::vec4 base;  // foot (world) and scale
   tree::WindState wind;
-  // This frame's (prepare()): the wind pushed to the shader, and the thinnest level drawn as tubes.
+  // This frame's (prepare()): the wind pushed to the shader, the thinnest level drawn as tubes and
+  // the leaves' shape.
   tree::TreeWindFrame frame{};
   int thinnest_tube = 1;
+  bool diamond_leaves = true;
 };
 
 struct SlotResources {
@@ -149,7 +152,10 @@ struct TreeDrawable::Impl {
       inst.frame = tree::wind_frame(inst.wind, noise, user, bend_mode());
       const Sphere s = bent_bounds(bounds, inst.frame);
       const Sphere world{tree::Vec3{inst.base.x, inst.base.y, inst.base.z} + s.centre * inst.base.w, s.radius * inst.base.w};
-      inst.thinnest_tube = level_of_detail ? thinnest_tube_level(lod_camera, world, inst.base.w, grown.depth) : 1;
+      const float pixels = level_of_detail ? nearest_pixels_per_unit(lod_camera, world, inst.base.w)
+                                           : std::numeric_limits<float>::infinity();
+      inst.thinnest_tube = thinnest_tube_level(pixels, grown.depth);
+      inst.diamond_leaves = gpu::diamond_leaves(pixels, mesh.longest_leaf);
     }
 
     const auto& sun = info.lighting.sun;
@@ -192,7 +198,8 @@ struct TreeDrawable::Impl {
     } else {
       draw_instances(cmd, pipes.lines, [&](const Instance&) { return mesh.lines.all; });
     }
-    if (spec.leaves) draw_instances(cmd, pipes.leaves, [&](const Instance&) { return mesh.leaves; });
+    if (spec.leaves)
+      draw_instances(cmd, pipes.leaves, [&](const Instance& i) { return i.diamond_leaves ? mesh.leaves : mesh.leaf_triangles; });
   }
 };
 
@@ -241,6 +248,12 @@ const sim::WindSpec& TreeDrawable::wind() const { return impl_->wind_spec; }
 const tree::Tree& TreeDrawable::tree() const { return impl_->grown; }
 double TreeDrawable::wind_time() const {
   return impl_->instances.empty() ? 0.0 : impl_->instances.front().wind.time;
+}
+
+std::vector<bool> TreeDrawable::diamond_leaves() const {
+  std::vector<bool> out;
+  for (const Instance& inst : impl_->instances) out.push_back(inst.diamond_leaves);
+  return out;
 }
 
 std::vector<int> TreeDrawable::thinnest_tube_levels() const {

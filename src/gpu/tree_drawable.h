@@ -5,7 +5,8 @@
 //
 // Per frame, prepare() advances every instance's WindState (gusts, inertia: src/tree/wind_state.h)
 // and writes the slot's camera/light uniforms, and picks each instance's level of detail (tubes for
-// the levels wide enough on screen, twig lines for the thinner ones: gpu/tree_lod.h); draw() pushes
+// the levels wide enough on screen, twig lines for the thinner ones, one triangle a leaf when the
+// leaves are a few pixels long: gpu/tree_lod.h); draw() pushes
 // each instance's TreeWindFrame and draws lines, or tubes and twig lines (+ leaves). The wind clock is the simulated time of FrameInfo::seconds by
 // default, so `pond render` is deterministic; the windowed demo switches to set_manual_clock() and
 // calls advance_clock() with its wall-clock frame time, since the simulation runs faster than
@@ -65,6 +66,7 @@ class TreeDrawable final : public PassDrawable {
   // Each instance's level of detail in the last prepared frame: the thinnest level drawn as tubes
   // (the levels below it as twig lines; 1: all tubes). Meaningful for the tubes draw mode.
   std::vector<int> thinnest_tube_levels() const;
+  std::vector<bool> diamond_leaves() const;  // false: one triangle a leaf (far)
   TreeDrawStats stats() const;
 
  private:

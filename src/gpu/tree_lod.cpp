@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace pond::gpu {
 namespace {
@@ -60,15 +61,22 @@ Sphere bent_bounds(const TreeBounds& b, const tree::TreeWindFrame& f) {
   return {b.rest.centre, b.rest.radius + moved};
 }
 
-int thinnest_tube_level(const TreeLodCamera& c, const Sphere& s, float world_per_unit, int depth) {
+float nearest_pixels_per_unit(const TreeLodCamera& c, const Sphere& s, float world_per_unit) {
   const float depth_of_centre =
       c.depth_row[0] * s.centre.x + c.depth_row[1] * s.centre.y + c.depth_row[2] * s.centre.z + c.depth_row[3];
   const float nearest = depth_of_centre - s.radius;
-  if (nearest <= 0.0f) return 1;  // the camera is inside the sphere or beside it: every level may be close
-  const float pixels_per_tree_unit = c.pixels_per_unit * world_per_unit / nearest;
+  if (nearest <= 0.0f) return std::numeric_limits<float>::infinity();
+  return c.pixels_per_unit * world_per_unit / nearest;
+}
+
+int thinnest_tube_level(float pixels_per_unit, int depth) {
   for (int level = 1; level <= depth; ++level)
-    if (2.0f * tree_tube_radius(depth, level) * pixels_per_tree_unit >= kMinTubePixels) return level;
+    if (2.0f * tree_tube_radius(depth, level) * pixels_per_unit >= kMinTubePixels) return level;
   return depth + 1;
+}
+
+bool diamond_leaves(float pixels_per_unit, float longest_leaf) {
+  return longest_leaf * pixels_per_unit >= kMinDiamondLeafPixels;
 }
 
 }  // namespace pond::gpu

@@ -7,7 +7,8 @@
 // tube would, on average. Levels are ordered in the mesh, so the choice is one level per instance.
 //
 // The choice is conservative: a level is a tube when its base diameter, seen from the nearest point
-// of the instance's bounding sphere (bent by this frame's wind), spans kMinTubePixels or more.
+// of the instance's bounding sphere (bent by this frame's wind), spans kMinTubePixels or more; so
+// is the leaves' shape (kMinDiamondLeafPixels).
 // No Vulkan here: the tests check it from a scene's camera.
 #include <array>
 
@@ -16,6 +17,10 @@
 #include "tree/wind_state.h"
 
 namespace pond::gpu {
+
+// Leaves shorter than this on screen (pixels) are drawn as one triangle rather than a diamond: at a
+// few pixels both cover the same pixels in the same green, at half the triangles (llvmpipe's cost).
+inline constexpr float kMinDiamondLeafPixels = 4.0f;
 
 // Tubes thinner than this on screen (pixels) are drawn as twig lines. A 1-px line stands in for a
 // tube up to about that width; 1.5 rather than 1 keeps a tube wherever the line would visibly thin it.
@@ -54,9 +59,15 @@ TreeBounds tree_bounds(const tree::Tree& tree, const TreeMesh& mesh);
 // length-preserving one keeps every vertex within `reach` of its (so moved) root.
 Sphere bent_bounds(const TreeBounds& bounds, const tree::TreeWindFrame& frame);
 
+// Pixels per tree unit at the nearest point of `bounds` (the instance's bent sphere in world units;
+// `world_per_unit`: the instance's scale), or infinity when the camera is inside or beside it.
+float nearest_pixels_per_unit(const TreeLodCamera& camera, const Sphere& bounds, float world_per_unit);
+
 // The thinnest level drawn as tubes: levels >= it are tubes, the ones below it twig lines (1: all
-// tubes, depth + 1: none). `bounds`: the instance's bent sphere in world units; `world_per_unit`:
-// the instance's scale (world units per tree unit).
-int thinnest_tube_level(const TreeLodCamera& camera, const Sphere& bounds, float world_per_unit, int depth);
+// tubes, depth + 1: none).
+int thinnest_tube_level(float pixels_per_unit, int depth);
+
+// Whether leaves `longest_leaf` long (tree units) are drawn as diamonds rather than triangles.
+bool diamond_leaves(float pixels_per_unit, float longest_leaf);
 
 }  // namespace pond::gpu

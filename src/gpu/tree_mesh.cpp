@@ -142,8 +142,10 @@ TreeMesh build_tree_mesh(const tree::Tree& t) {
   close_levels(m.tubes, level, -1);
 
   // Leaves at the tips of the thinnest twigs: a diamond in the plane of the twig and a side vector,
-  // from the tip out along the twig.
+  // from the tip out along the twig; and for far views the same leaf as one triangle (tree_lod.h),
+  // the diamond's half on one side twice as wide: the same reach, area and centre along the twig.
   m.leaves.first = static_cast<std::uint32_t>(m.indices.size());
+  std::vector<std::uint32_t> triangles;
   for (std::size_t i = 1; i < n; ++i) {
     if (t.levels[i] != 1) continue;
     const auto p = static_cast<std::size_t>(t.parents[i]);
@@ -154,12 +156,16 @@ TreeMesh build_tree_mesh(const tree::Tree& t) {
     const Vec3 normal = tree::cross(d, side);
     const std::uint32_t shade = hash(static_cast<std::uint32_t>(i)) & 255u;
     const Vec3 along = d * (kLeafLength * len), across = side * (0.5f * kLeafWidth * len);
+    m.longest_leaf = std::max(m.longest_leaf, kLeafLength * len);
     const auto base = static_cast<std::uint32_t>(m.vertices.size());
-    for (const Vec3 corner : {Vec3{}, along * 0.45f + across, along, along * 0.45f - across * 1.0f})
+    for (const Vec3 corner : {Vec3{}, along * 0.45f + across, along, along * 0.45f - across * 1.0f, along * 0.45f + across * 2.0f})
       m.vertices.push_back(mesh_vertex(t, i, corner, normal, sh::kTreeMaterialLeaf, shade));
     m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    triangles.insert(triangles.end(), {base, base + 4, base + 2});
   }
   m.leaves.count = static_cast<std::uint32_t>(m.indices.size()) - m.leaves.first;
+  m.leaf_triangles = {static_cast<std::uint32_t>(m.indices.size()), static_cast<std::uint32_t>(triangles.size())};
+  m.indices.insert(m.indices.end(), triangles.begin(), triangles.end());
 
   return m;
 }

@@ -6,7 +6,8 @@
 //  - tubes:  per segment a ring at its base (carrying the parent's wind data) and a ring at its tip
 //            (carrying its own), tapered by level, closed into quads wound counter-clockwise seen
 //            from outside (the tube pipeline culls back faces);
-//  - leaves: one diamond per thinnest twig, hanging off the twig's tip (carrying the tip's data).
+//  - leaves: one diamond per thinnest twig, hanging off the twig's tip (carrying the tip's data);
+//            and the same leaves as one triangle each, for far views (tree_lod.h).
 // Every vertex is a TreeMeshVertex (shared/tree_render.h): the shader bends its skeleton vertex
 // and adds the rest offset, so rings and leaves move with the vertex they belong to.
 //
@@ -42,7 +43,9 @@ struct TreeMesh {
   std::vector<TreeMeshVertex> vertices;
   std::vector<std::uint32_t> indices;
   LevelRange lines, tubes;
-  IndexRange leaves;
+  IndexRange leaves;          // diamonds, two triangles a leaf
+  IndexRange leaf_triangles;  // one triangle a leaf: the same length, area and centre along the twig
+  float longest_leaf = 0.0f;  // tree units
   // The lines' indices drawn with this vertexOffset reach a second copy of the skeleton's vertices,
   // the twig lines (kTreeMaterialTwig): each carries its segment's direction as its normal and the
   // tube's diameter there in offset.w, which the level of detail's thin lines shade with.

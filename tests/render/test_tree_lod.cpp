@@ -2,8 +2,9 @@
 //  - the mesh lists segments by level (trunk first) and its tubes wind counter-clockwise seen from
 //    outside (the tube pipeline culls back faces);
 //  - the bent bounding sphere holds every drawn vertex in any wind, in both bend modes;
-//  - at demo_257's own camera the thin levels are twig lines and the trunk a tube; near the tree,
-//    and with the camera inside its sphere, every level is a tube;
+//  - at demo_257's own camera the thin levels are twig lines, the trunk a tube and the leaves
+//    triangles; near the tree, and with the camera inside its sphere, every level is a tube and
+//    the leaves diamonds;
 //  - on the GPU (validation on): the close-up still draws the tree, as before; at the demo's
 //    distance the twig lines cover about as much, in about the same colour, as the tubes they
 //    stand for.
@@ -128,18 +129,22 @@ struct DemoView {
     tree = tree::grow_tree({.depth = spec.depth, .seed = spec.seed});
     const gpu::TreeMesh mesh = gpu::build_tree_mesh(tree);
     bounds = gpu::tree_bounds(tree, mesh);
+    longest_leaf = mesh.longest_leaf;
     scale = static_cast<float>(spec.height) / mesh.rest_height;
     const auto& rc = spec.positions.at(0);  // row, col (the loader's default: the island's centre)
     foot = {static_cast<float>(rc[1] * model.spacing), static_cast<float>(scene.view.land_height),
             static_cast<float>(rc[0] * model.spacing)};
   }
 
-  int thinnest_tube(const lod::Camera& camera) const {
+  float pixels_per_unit(const lod::Camera& camera) const {
     const std::array<float, 16> vp = gpu::view_projection(camera, model);
     const gpu::TreeLodCamera c = gpu::tree_lod_camera(vp.data(), camera.height);
     const gpu::Sphere s = bounds.rest;
-    return gpu::thinnest_tube_level(c, {foot + s.centre * scale, s.radius * scale}, scale, tree.depth);
+    return gpu::nearest_pixels_per_unit(c, {foot + s.centre * scale, s.radius * scale}, scale);
   }
+  int thinnest_tube(const lod::Camera& camera) const { return gpu::thinnest_tube_level(pixels_per_unit(camera), tree.depth); }
+  bool diamonds(const lod::Camera& camera) const { return gpu::diamond_leaves(pixels_per_unit(camera), longest_leaf); }
+  float longest_leaf = 0;
 };
 
 TEST(TreeLod, DemoCameraDrawsThinLevelsAsLines) {
@@ -151,6 +156,8 @@ TEST(TreeLod, DemoCameraDrawsThinLevelsAsLines) {
   EXPECT_LE(level, d.tree.depth);
   // Smaller viewports see the same tree in fewer pixels: never more tubes.
   EXPECT_GE(d.thinnest_tube(gpu::scene_camera(d.scene, d.model, 640, 360)), level);
+  // Its leaves are a few pixels long: one triangle each.
+  EXPECT_FALSE(d.diamonds(gpu::scene_camera(d.scene, d.model, 1280, 720)));
 }
 
 TEST(TreeLod, NearCameraDrawsEveryLevelAsTubes) {
@@ -162,8 +169,10 @@ TEST(TreeLod, NearCameraDrawsEveryLevelAsTubes) {
   near.target = {160, 6, 128};
   near.fovy_degrees = 40;
   EXPECT_EQ(d.thinnest_tube(near), 1);
+  EXPECT_TRUE(d.diamonds(near));
   near.eye = {160, 8, 129};  // inside the crown's sphere
   EXPECT_EQ(d.thinnest_tube(near), 1);
+  EXPECT_TRUE(d.diamonds(near));
 }
 
 // ---- On the GPU ---------------------------------------------------------------------------------
@@ -173,8 +182,8 @@ class TreeLodRenderTest : public GpuTest {
   static constexpr int kWidth = 1280, kHeight = 720;  // the demo's: its tree is ~60 px tall
 
   // demo_257 after `steps` steps from `camera` (nullptr: the scene's), with or without its tree and
-  // with or without the level of detail; `levels` gets the LOD's choice.
-  Rgba render(bool with_tree, bool lod, const lod::Camera* camera, int* level = nullptr) {
+  // with or without the level of detail; `level` and `diamonds` get the LOD's choices.
+  Rgba render(bool with_tree, bool lod, const lod::Camera* camera, int* level = nullptr, bool* diamonds = nullptr) {
     sim::Scene scene = sim::load_scene(kDemoScene);
     scene.perturbations.clear();  // a still pond: the pictures differ by the tree alone
     const sim::TreeSpec tree = *scene.tree;
@@ -190,6 +199,7 @@ class TreeLodRenderTest : public GpuTest {
     view.wait = true;
     loop.frame(target.frame_target(), view);
     if (level) *level = drawable.thinnest_tube_levels().at(0);
+    if (diamonds) *diamonds = drawable.diamond_leaves().at(0);
     return Rgba{kWidth, kHeight, target.read_rgba()};
   }
 
@@ -226,8 +236,10 @@ TEST_F(TreeLodRenderTest, CloseUpStillDrawsTheTreeAsTubes) {
   near.target = {160, 6, 128};
   near.fovy_degrees = 40;
   int level = 0;
-  const Rgba bare = render(false, true, &near), lod = render(true, true, &near, &level);
+  bool diamonds = false;
+  const Rgba bare = render(false, true, &near), lod = render(true, true, &near, &level, &diamonds);
   EXPECT_EQ(level, 1);
+  EXPECT_TRUE(diamonds);
   const std::vector<bool> tree = differing(bare, lod);
   const auto share = static_cast<double>(std::count(tree.begin(), tree.end(), true)) / static_cast<double>(tree.size());
   EXPECT_GT(share, 0.05) << "the close-up shows little of the tree";
@@ -235,15 +247,18 @@ TEST_F(TreeLodRenderTest, CloseUpStillDrawsTheTreeAsTubes) {
   EXPECT_EQ(compare(render(true, false, &near), lod, 0).share, 0.0);
 }
 
-// At the demo's own distance most of the tree is twig lines: its footprint and colour stay close to
-// those of the tubes they replace (measured: 1183 px vs 1101, 3-4 levels darker on average, as the
-// twigs' averaged light is a little darker than the prisms' facets). Opaque lines, ignoring the
-// tube's width, would draw 2032 px, 25-37 levels darker.
+// At the demo's own distance most of the tree is twig lines and the leaves are triangles: its
+// footprint and colour stay close to those of the full tubes and diamonds (measured after 25, 100
+// and 210 steps: 8% more pixels, 3-5 levels darker on average, as the twigs' averaged light is a
+// little darker than the prisms' facets). Opaque lines, ignoring the tube's width, would draw
+// 2032 px instead of 1101, 25-37 levels darker.
 TEST_F(TreeLodRenderTest, TwigLinesLookLikeTheTubesTheyReplace) {
   int level = 0;
-  const Rgba bare = render(false, true, nullptr), lod = render(true, true, nullptr, &level),
+  bool diamonds = true;
+  const Rgba bare = render(false, true, nullptr), lod = render(true, true, nullptr, &level, &diamonds),
              tubes = render(true, false, nullptr);
   EXPECT_GE(level, 3);
+  EXPECT_FALSE(diamonds);
   // The tree's area: every pixel either picture changed, grown by a pixel each way.
   std::vector<bool> area = differing(bare, lod), changed = differing(bare, tubes);
   for (std::size_t p = 0; p < area.size(); ++p) area[p] = area[p] || changed[p];

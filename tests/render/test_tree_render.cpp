@@ -331,6 +331,8 @@ TEST(TreeMesh, CountsAndRanges) {
     thin += t.levels[i] <= 2;
   }
   EXPECT_EQ(m.leaves.count, 6 * twigs);
+  EXPECT_EQ(m.leaf_triangles.count, 3 * twigs);
+  EXPECT_EQ(m.leaf_triangles.first, m.leaves.first + m.leaves.count);
   EXPECT_EQ(m.tubes.all.count, 6 * (4 * thin + 6 * (t.size() - 1 - thin)));
   EXPECT_EQ(m.tubes.all.first, m.lines.all.count);
   EXPECT_EQ(m.leaves.first, m.tubes.all.first + m.tubes.all.count);
