@@ -49,6 +49,7 @@ class ImGuiSession {
     io.IniFilename = nullptr;  // nothing written to the working directory
     io.LogFilename = nullptr;
     ImGui::StyleColorsDark();
+    ImGui::GetStyle().AntiAliasedLinesUseTex = false;  // the atlas is sampled nearest (imgui_renderer.cpp)
     ImGui_ImplGlfw_InitForVulkan(window, true);
   }
   ~ImGuiSession() {

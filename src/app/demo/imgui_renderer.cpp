@@ -60,14 +60,18 @@ ImGuiRenderer::ImGuiRenderer(const gpu::Context& ctx, vk::Format color_format)
     cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &to_read});
   });
 
+  // Nearest, one level: ImGui places glyphs on whole pixels, so the atlas is read texel for texel
+  // and filtering would only cost (llvmpipe samples in software, on every pixel of the panel).
+  // Lines are anti-aliased by geometry instead of the atlas's baked line strips, which need a
+  // linear filter (ImGuiStyle::AntiAliasedLinesUseTex, cleared where the context is set up).
   sampler_ = vk::raii::Sampler(ctx.device(), vk::SamplerCreateInfo{
-                                                 .magFilter = vk::Filter::eLinear,
-                                                 .minFilter = vk::Filter::eLinear,
-                                                 .mipmapMode = vk::SamplerMipmapMode::eLinear,
+                                                 .magFilter = vk::Filter::eNearest,
+                                                 .minFilter = vk::Filter::eNearest,
+                                                 .mipmapMode = vk::SamplerMipmapMode::eNearest,
                                                  .addressModeU = vk::SamplerAddressMode::eClampToEdge,
                                                  .addressModeV = vk::SamplerAddressMode::eClampToEdge,
                                                  .addressModeW = vk::SamplerAddressMode::eClampToEdge,
-                                                 .maxLod = 1.0f});
+                                                 .maxLod = 0.0f});
   const vk::DescriptorSetLayoutBinding binding{.binding = 0,
                                                .descriptorType = vk::DescriptorType::eCombinedImageSampler,
                                                .descriptorCount = 1,
