@@ -179,9 +179,10 @@ TEST_F(GoldenTest, NormalsEqualTheCpuNormals) {
                    std::bit_cast<std::uint32_t>(cpu.y[n]) != std::bit_cast<std::uint32_t>(gpu.y[n]) ||
                    std::bit_cast<std::uint32_t>(cpu.z[n]) != std::bit_cast<std::uint32_t>(gpu.z[n]);
     EXPECT_EQ(differing, 0) << c.name;
-    if (&c == &kCases[1])
+    if (&c == &kCases[1]) {
       EXPECT_GT(std::fabs(gpu.x[model.nodes() / 2]) + std::fabs(gpu.z[model.nodes() / 2]), 0.0f)
           << "a flat surface proves little";
+    }
   }
 }
 
