@@ -1,5 +1,10 @@
 #version 460
-// The land around and inside the pond: shore, islands and the pool's rim walls (LandVertex).
+// The land around and inside the pond: shore, islands and the pool's rim walls (LandVertex), lit
+// here, per vertex: the ground colour, grassy on the flat tops, diffuse sun plus sky ambient, darker
+// where the walls go down towards the (wet) floor. Per vertex gives the per-pixel result: every
+// face is flat and the wetness is linear between the heights the mesh is cut at (see
+// kLandWetAtRest), so the light is linear across each triangle, and interpolation reproduces it.
+// llvmpipe shades the land's ~40% of the screen with a one-line fragment shader instead.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/water_render.h"
@@ -8,11 +13,17 @@ layout(std140, set = 0, binding = POND_RENDER_BINDING_FRAME) uniform Frame { Wat
 
 layout(location = 0) in vec4 in_position;
 layout(location = 1) in vec4 in_normal;
-layout(location = 0) out vec3 out_world;
-layout(location = 1) out vec3 out_normal;
+layout(location = 0) out vec3 out_color;  // linear, before finish_color
 
 void main() {
-  out_world = in_position.xyz;
-  out_normal = in_normal.xyz;
+  const vec3 n = normalize(in_normal.xyz);
+  const float diffuse = max(dot(n, f.sun.xyz), 0.0);
+  const float top = smoothstep(0.7, 0.95, n.y);
+  const vec3 grass = vec3(0.12, 0.2, 0.07);
+  vec3 albedo = mix(f.ground.rgb, grass, top);
+  const float wet = clamp(kLandWetAtRest - in_position.y / max(f.pool.y, 1e-3), 0.0, 1.0);
+  albedo *= 1.0 - 0.45 * wet * (1.0 - top);
+  const vec3 ambient = f.sky.rgb * (0.25 + 0.15 * n.y);
+  out_color = albedo * (ambient + 0.85 * diffuse * vec3(1.0, 0.96, 0.9));
   gl_Position = f.view_proj * vec4(in_position.xyz, 1.0);
 }

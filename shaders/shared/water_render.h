@@ -60,6 +60,12 @@ struct LandVertex {
   vec4 normal;
 };
 
+// How wet (darker) a wall looks at height y: clamp(kLandWetAtRest - y / land_height, 0, 1), 0 from
+// kLandWetAtRest * land_height up, 1 from (kLandWetAtRest - 1) * land_height down. land.vert lights
+// the land per vertex, which is exact where the light is linear across a triangle: the land's faces
+// are flat, and build_land_mesh cuts every wall at these two heights, the kinks of the clamp.
+POND_RENDER_CONST float kLandWetAtRest = 0.3f;
+
 #ifdef __cplusplus
 }  // namespace pond::shared::water_render
 #endif
