@@ -31,51 +31,51 @@ std::uint32_t largest_of(__m128i largest4) {
 // row (no division per node), four columns at a time. SSE2 adds and multiplies round like the
 // scalar ones, so every node gets the same bits as the scalar tail.
 float copy_displacements(const NodePositions& p, float* x, float* y, float* z) {
-  const std::size_t cols = static_cast<std::size_t>(p.cols), stride = p.stride;
+  const std::size_t cols = static_cast<std::size_t>(p.cols), stride = p.stride, pitch = p.row_pitch;
   const float h = p.grid_spacing;
   const __m128 h4 = _mm_set1_ps(h), step4 = _mm_set1_ps(4.0f);
   __m128i largest4 = _mm_setzero_si128();
   std::uint32_t largest = 0;
-  for (std::size_t i = 0, row = 0; i < static_cast<std::size_t>(p.rows); ++i, row += cols) {
+  // Row i's source nodes start at i * pitch, its copies at i * cols.
+  for (std::size_t i = 0, row = 0, src_row = 0; i < static_cast<std::size_t>(p.rows);
+       ++i, row += cols, src_row += pitch) {
     const float fi = static_cast<float>(i);
     std::size_t j = 0;
     if (stride == 1) {
       const __m128 fi4 = _mm_set1_ps(fi);
       __m128 fj4 = _mm_setr_ps(0.0f, 1.0f, 2.0f, 3.0f);
       for (; j + 4 <= cols; j += 4, fj4 = _mm_add_ps(fj4, step4)) {
-        const std::size_t k = row + j;
-        const __m128 vx = _mm_mul_ps(_mm_add_ps(fj4, _mm_loadu_ps(p.x + k)), h4);
-        const __m128 vy = _mm_mul_ps(_mm_loadu_ps(p.y + k), h4);
-        const __m128 vz = _mm_mul_ps(_mm_add_ps(fi4, _mm_loadu_ps(p.z + k)), h4);
+        const std::size_t k = row + j, s = src_row + j;
+        const __m128 vx = _mm_mul_ps(_mm_add_ps(fj4, _mm_loadu_ps(p.x + s)), h4);
+        const __m128 vy = _mm_mul_ps(_mm_loadu_ps(p.y + s), h4);
+        const __m128 vz = _mm_mul_ps(_mm_add_ps(fi4, _mm_loadu_ps(p.z + s)), h4);
         _mm_storeu_ps(x + k, vx), _mm_storeu_ps(y + k, vy), _mm_storeu_ps(z + k, vz);
         largest4 = max_magnitude_bits(max_magnitude_bits(max_magnitude_bits(largest4, vx), vy), vz);
       }
     }
     for (; j < cols; ++j) {
-      const std::size_t k = row + j;
-      x[k] = (static_cast<float>(j) + p.x[k * stride]) * h;
-      y[k] = p.y[k * stride] * h;
-      z[k] = (fi + p.z[k * stride]) * h;
+      const std::size_t k = row + j, s = (src_row + j) * stride;
+      x[k] = (static_cast<float>(j) + p.x[s]) * h;
+      y[k] = p.y[s] * h;
+      z[k] = (fi + p.z[s]) * h;
       largest = std::max({largest, magnitude_bits(x[k]), magnitude_bits(y[k]), magnitude_bits(z[k])});
     }
   }
   return std::bit_cast<float>(std::max(largest, largest_of(largest4)));
 }
 
-}  // namespace
-
-float copy_positions(const NodePositions& p, float* x, float* y, float* z) {
-  if (p.grid_spacing > 0) return copy_displacements(p, x, y, z);
-  const std::size_t n = p.nodes(), stride = p.stride;
-  const float* src = p.x;
+// Copies n records of `stride` floats (x at px[k * stride], ...) to x[k], y[k], z[k]; returns the
+// largest magnitude's bits.
+std::uint32_t copy_records(const float* px, const float* py, const float* pz, std::size_t stride, std::size_t n,
+                           float* x, float* y, float* z) {
   std::size_t k = 0;
   std::uint32_t largest = 0;
-  if (p.y == src + 1 && p.z == src + 2 && stride >= 4) {
+  if (py == px + 1 && pz == px + 2 && stride >= 4) {
     // Interleaved records (STATE.npy: x, y, z, vx, vy, vz): each record's first four floats are
     // one load, four records are transposed into x, y, z (and an unused fourth) vectors.
     __m128i largest4 = _mm_setzero_si128();
     for (; k + 4 <= n; k += 4) {
-      const float* r = src + k * stride;
+      const float* r = px + k * stride;
       __m128 vx = _mm_loadu_ps(r), vy = _mm_loadu_ps(r + stride);
       __m128 vz = _mm_loadu_ps(r + 2 * stride), unused = _mm_loadu_ps(r + 3 * stride);
       _MM_TRANSPOSE4_PS(vx, vy, vz, unused);
@@ -85,8 +85,23 @@ float copy_positions(const NodePositions& p, float* x, float* y, float* z) {
     largest = largest_of(largest4);
   }
   for (; k < n; ++k) {
-    x[k] = p.x[k * stride], y[k] = p.y[k * stride], z[k] = p.z[k * stride];
+    x[k] = px[k * stride], y[k] = py[k * stride], z[k] = pz[k * stride];
     largest = std::max({largest, magnitude_bits(x[k]), magnitude_bits(y[k]), magnitude_bits(z[k])});
+  }
+  return largest;
+}
+
+}  // namespace
+
+float copy_positions(const NodePositions& p, float* x, float* y, float* z) {
+  if (p.grid_spacing > 0) return copy_displacements(p, x, y, z);
+  const std::size_t cols = static_cast<std::size_t>(p.cols), stride = p.stride;
+  // A compact view is one run of rows * cols records; a view with padded rows, one run per row.
+  if (p.row_pitch == cols) return std::bit_cast<float>(copy_records(p.x, p.y, p.z, stride, p.nodes(), x, y, z));
+  std::uint32_t largest = 0;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(p.rows); ++i) {
+    const std::size_t from = i * p.row_pitch * stride, to = i * cols;
+    largest = std::max(largest, copy_records(p.x + from, p.y + from, p.z + from, stride, cols, x + to, y + to, z + to));
   }
   return std::bit_cast<float>(largest);
 }

@@ -5,8 +5,8 @@
 
 namespace pond::lod {
 
-// Copies node n's position to x[n], y[n], z[n] (world units: a grid_displacements view is
-// converted on the way) and returns the largest |coordinate|: +inf or NaN when some coordinate is
+// Copies node (row, col)'s position to x[n], y[n], z[n], n = row * cols + col (compact, whatever
+// the view's row pitch; world units: a grid_displacements view is converted on the way) and returns the largest |coordinate|: +inf or NaN when some coordinate is
 // not finite.
 float copy_positions(const NodePositions& positions, float* x, float* y, float* z);
 

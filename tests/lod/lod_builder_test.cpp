@@ -215,6 +215,63 @@ TEST(LodBuilder, ReadsGridDisplacementsLikeWorldPositions) {
                InputError);
 }
 
+// Views of rows padded to a pitch (the GPU solver's state read in place: rows of cols nodes,
+// pitch nodes apart) give the same triangles as the compact arrays; the padding (NaN here) is
+// never read. Covers the displacement copy (4-wide and tail) and the plain SoA and interleaved
+// copies (one run per row).
+TEST(LodBuilder, ReadsPaddedRowsLikeCompactOnes) {
+  const sim::Scene scene = sim::parse_scene(
+      R"({"grid": {"rows": 19, "cols": 21, "spacing": 0.5},
+          "perturbations": [{"step": 0, "row": 9, "col": 10, "radius": 2.0, "amplitude": 2.0}]})",
+      "padded");
+  const sim::WaterModel model = sim::build_model(scene);
+  sim::CpuSolver solver(model, sim::Backend::scalar, 1);
+  solver.advance(30);
+  const sim::WaterState u = solver.state();
+  const int rows = model.rows, cols = model.cols;
+  const std::size_t pitch = 24;
+  const float h = model.spacing, nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<float> x, y, z;  // world positions, compact
+  for (int i = 0; i < rows; ++i)
+    for (int j = 0; j < cols; ++j) {
+      const std::size_t n = static_cast<std::size_t>(i) * cols + j;
+      x.push_back((static_cast<float>(j) + u.ux[n]) * h);
+      y.push_back(u.uy[n] * h);
+      z.push_back((static_cast<float>(i) + u.uz[n]) * h);
+    }
+  // pad(a): a's rows copied pitch floats apart, NaN between; records: x, y, z, NaN x 3, padded too.
+  auto pad = [&](const auto& a) {
+    std::vector<float> p(rows * pitch, nan);
+    for (int i = 0; i < rows; ++i) std::copy_n(a.data() + i * cols, cols, p.begin() + i * pitch);
+    return p;
+  };
+  const std::vector<float> pux = pad(u.ux), puy = pad(u.uy), puz = pad(u.uz), px = pad(x), py = pad(y), pz = pad(z);
+  std::vector<float> records(rows * pitch * 6, nan);
+  for (std::size_t k = 0; k < rows * pitch; ++k) records[6 * k] = px[k], records[6 * k + 1] = py[k], records[6 * k + 2] = pz[k];
+  lod::NodePositions soa = lod::soa_positions(px.data(), py.data(), pz.data(), rows, cols);
+  soa.row_pitch = pitch;
+  lod::NodePositions interleaved = lod::interleaved_positions(records.data(), rows, cols);
+  interleaved.row_pitch = pitch;
+  const std::pair<const char*, lod::NodePositions> views[] = {
+      {"displacements", lod::grid_displacements(pux.data(), puy.data(), puz.data(), rows, cols, h, pitch)},
+      {"SoA", soa},
+      {"interleaved", interleaved}};
+  lod::LodBuilder builder(rows, cols);
+  std::vector<std::uint32_t> compact(builder.max_indices()), padded(builder.max_indices());
+  for (const auto& [name, c] : cameras(rows, cols)) {
+    const lod::Camera cam{{c.eye[0] * h, c.eye[1] * h, c.eye[2] * h}, {c.target[0] * h, c.target[1] * h, c.target[2] * h},
+                          c.fovy_degrees, c.width, c.height};
+    compact.resize(builder.build(lod::soa_positions(x.data(), y.data(), z.data(), rows, cols), cam, 0.5, compact));
+    EXPECT_LT(compact.size(), 6u * (rows - 1) * (cols - 1)) << name << ": a full mesh proves little";
+    for (const auto& [view_name, view] : views) {
+      padded.resize(builder.max_indices());
+      padded.resize(builder.build(view, cam, 0.5, padded));
+      EXPECT_EQ(padded, compact) << name << ", " << view_name;
+    }
+    compact.resize(builder.max_indices());
+  }
+}
+
 TEST(LodBuilder, RejectsBadInput) {
   const std::vector<float> s = flat_pond(9, 9);
   lod::LodBuilder builder(9, 9);
