@@ -14,10 +14,12 @@ layout(location = 0) out vec3 out_world;
 layout(location = 1) out vec3 out_normal;
 
 void main() {
-  const uint n = uint(gl_VertexIndex);
-  const uint cols = f.grid.y, stride = f.grid.z;
-  const vec3 rest = vec3(float(n % cols), 0.0, float(n / cols));
-  const vec3 u = vec3(state[n], state[stride + n], state[2u * stride + n]);
+  const uint n = uint(gl_VertexIndex);  // compact: row * cols + col
+  const uint cols = f.grid.y, stride = f.grid.z, pitch = f.grid.w;
+  const uint col = n % cols, row = n / cols;
+  const vec3 rest = vec3(float(col), 0.0, float(row));
+  const uint m = row * pitch + col;  // the state's rows are `pitch` nodes apart
+  const vec3 u = vec3(state[m], state[stride + m], state[2u * stride + m]);
   const vec3 world = (rest + u) * f.eye.w;  // grid units -> world
   out_world = world;
   out_normal = normals[n].xyz;

@@ -38,19 +38,19 @@ void main() {
   const uint first = gl_GlobalInvocationID.y * POND_NORMALS_ROWS_PER_INVOCATION;
   if (j >= p.cols || first >= p.rows) return;
   const uint last = min(first + POND_NORMALS_ROWS_PER_INVOCATION, p.rows);
-  const uint C = p.cols;
+  const uint C = p.cols, P = p.pitch;  // the state's rows are P nodes apart, the normals' C
   const uint j1 = min(j + 1u, C - 1u), j0 = j > 0u ? j - 1u : 0u;
   // The window: rows i0 = max(i-1, 0) and i of column j (i1 = min(i+1, rows-1) is fetched per row).
-  vec3 down = load_u((first > 0u ? first - 1u : 0u) * C + j);
-  vec3 mid = load_u(first * C + j);
+  vec3 down = load_u((first > 0u ? first - 1u : 0u) * P + j);
+  vec3 mid = load_u(first * P + j);
   for (uint i = first; i < last; ++i) {
     const uint i1 = min(i + 1u, p.rows - 1u), i0 = i > 0u ? i - 1u : 0u;
-    const vec3 up = i1 == i ? mid : load_u(i1 * C + j);
+    const vec3 up = i1 == i ? mid : load_u(i1 * P + j);
     // Position differences = displacement differences + the rest offset (i1 - i0 or j1 - j0),
     // added even when it is 0, as the CPU does.
     precise vec3 a = up - down;
     a.z = a.z + float(i1 - i0);
-    precise vec3 b = load_u(i * C + j1) - load_u(i * C + j0);
+    precise vec3 b = load_u(i * P + j1) - load_u(i * P + j0);
     b.x = b.x + float(j1 - j0);
     precise float cx = a.y * b.z - a.z * b.y;
     precise float cy = a.z * b.x - a.x * b.z;

@@ -2,7 +2,8 @@
 // One tabulated perturbation (sim::PerturbationTable): for entries [first, first + count) of the
 // table buffer, w is added to (add) or written into (set) the y velocity or y position of the node.
 // The weights were computed on the CPU (exp is not exact on GPUs); the one addition is `precise`.
-// A table lists each node at most once, so invocations never race.
+// A table lists each node at most once, so invocations never race. Node indices are the state's
+// (row * pitch + col, shared/water_gpu.h): the solver converts the model's tables when it uploads them.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_spirv_intrinsics : require
 

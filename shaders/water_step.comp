@@ -8,9 +8,10 @@
 //    storage-texel store an unrolled masked scatter. So the state is read and written through
 //    texel-buffer views of the same SoA buffers (shared/water_gpu.h; the layout is unchanged),
 //    except the quad path's vec4 stores (below).
-//  - Quad path (kQuadColumns, used when cols % 4 == 0): one invocation owns 4 consecutive
-//    columns of a strip of POND_STEP_ROWS_PER_INVOCATION rows. A node row of the 4 columns is one
-//    RGBA32F texel per component (16-byte aligned because cols and the stride are multiples of 4),
+//  - Quad path (kQuadColumns, every grid): one invocation owns 4 consecutive columns of a strip
+//    of POND_STEP_ROWS_PER_INVOCATION rows. A node row of the 4 columns is one RGBA32F texel per
+//    component (16-byte aligned because the row pitch and the stride are multiples of 4: rows are
+//    p.pitch = cols rounded up to 4 nodes apart, see "Padding" below),
 //    plus the two side neighbours as R32F texels; velocities, outputs and the 4 kinds (RGBA8UI)
 //    are one texel each; the 6 outputs are vec4 SSBO stores (one lane loop per 4 floats, where a
 //    RGBA32F imageStore loops over lanes x channels). 19 memory operations per 4 nodes instead of
@@ -18,8 +19,11 @@
 //    the invocation each spring is evaluated once: per row 5 horizontal springs and the band to
 //    the row above (4 vertical, 5 + 5 diagonal), the band kept as the next row's lower band
 //    (4.75 spring evaluations per node instead of 8). In SoA code the column shuffles are free.
-//  - Column path (any grid): one invocation per column walking the strip with a sliding 3x3
-//    window (9 position fetches per node), the vertical spring reused as the next row's lower one.
+//  - Column path (any grid; the solver uses it only where a test asks for it): one invocation
+//    per column walking the strip with a sliding 3x3 window (9 position fetches per node), the
+//    vertical spring reused as the next row's lower one. Before the row pitch it ran every width
+//    that is not a multiple of 4, at about twice the quad path's cost per node (257^2: 5.2 s
+//    against 2.7 s for 256^2, 2000 steps of 2 substeps).
 //  - Workgroup shape: local_size_x is a specialization constant; the solver makes a workgroup
 //    span the whole row strip (up to POND_STEP_LOCAL_X_MAX = 256 invocations, a 1024-wide grid in
 //    the quad path). With the barrier per row (main_quad) a group then reads and writes each row
@@ -48,6 +52,16 @@
 // u' = u + v'*dt (u: displacement from rest). Each spring is evaluated from the end the CPU uses
 // (the lower row, or the left column), d = (u_b - u_a) + rest offset (spring_vector below), and
 // used negated at its other end, which is literally what the CPU does (it subtracts it).
+//
+// Padding: the last group of 4 columns of a row may hold pitch - cols (1 to 3) padding columns
+// past the grid. For a real node they are missing right neighbours: every term of a spring to a
+// padding column, (i, j+1), (i+1, j+1) and (i-1, j+1), is computed and skipped (accumulate with
+// exists = false), exactly as at the right border of a grid whose width is a multiple of 4; its
+// left, upper and lower neighbours are never padding. So no padding value reaches a real node's
+// bits. The padding nodes themselves are fixed (their kind, set by the solver) and start at +0, so
+// integrate() stores v' = +0 and u' = +0 + +0 * dt = +0 into them every substep, whatever their
+// spring sum (even NaN): the state's padding stays +0 for good, and the perturbation tables never
+// name it.
 //
 // Float controls: SignedZeroInfNanPreserve is declared so the compiler may not fold x + 0.0 or
 // 0.0 * x (signed zeros are part of the bits the parity suite compares). Denormals: see
@@ -149,12 +163,12 @@ void integrate(vec3 u0, vec3 v0, vec3 g, uint kind, out vec3 out_u, out vec3 out
   out_v = v1;
 }
 
-// ---- Quad path: 4 columns per invocation (cols % 4 == 0). ----
+// ---- Quad path: 4 columns per invocation. ----
 
 // Row i of the group at columns j0-1 .. j0+4 (index 0 .. 5); a missing side neighbour loads the
 // nearest column of the group (never used, always in bounds).
 void load_row(uint i, uint q, uint j0, bool has_l, bool has_r, out vec3 u[6]) {
-  const uint n0 = i * p.cols + j0;
+  const uint n0 = i * p.pitch + j0;
   const uint nl = has_l ? n0 - 1u : n0, nr = has_r ? n0 + 4u : n0 + 3u;
   const uint q4 = p.stride >> 2u, s = p.stride;
   const vec4 x = load4(q), y = load4(q4 + q), z = load4(2u * q4 + q);
@@ -183,7 +197,7 @@ void band(vec3 lo[6], vec3 up[6], out vec3 s[4], out vec3 d1[5], out vec3 d2[5])
 }
 
 void main_quad() {
-  const uint Q = p.cols >> 2u;  // groups of 4 columns per row
+  const uint Q = p.pitch >> 2u;  // groups of 4 columns per row (the last may end in padding)
   const uint i0 = gl_WorkGroupID.y * POND_STEP_ROWS_PER_INVOCATION;
   if (i0 >= p.rows) return;  // uniform in the workgroup
   // Invocations past the last group compute group Q-1 again and store nothing: every invocation
@@ -193,6 +207,10 @@ void main_quad() {
   const uint i1 = min(i0 + POND_STEP_ROWS_PER_INVOCATION, p.rows);
   const uint j0 = 4u * q0;
   const bool has_l = q0 > 0u, has_r = q0 + 1u < Q;
+  // Whether column j0+k has its right neighbour j0+k+1 in the grid (not padding, not past the
+  // row); for k = 3 that is has_r (j0+4 < pitch <=> j0+4 < cols, the pitch being cols rounded
+  // up to 4). Only the last group can have a false one.
+  const bool r0 = j0 + 1u < p.cols, r1 = j0 + 2u < p.cols, r2 = j0 + 3u < p.cols;
   const uint q4 = p.stride >> 2u;
 
   vec3 mid[6], up[6];
@@ -234,9 +252,9 @@ void main_quad() {
     g = accumulate(g, d2[k], has_above && (l));          /* (i+1, j-1) */                     \
     integrate(mid[k + 1], vec3(vx[k], vy[k], vz[k]), g, kind[k], u1[k], v1[k]);               \
   }
-    POND_NODE(0, has_l, true)
-    POND_NODE(1, true, true)
-    POND_NODE(2, true, true)
+    POND_NODE(0, has_l, r0)
+    POND_NODE(1, true, r1)
+    POND_NODE(2, true, r2)
     POND_NODE(3, true, has_r)
     const vec4 ox = vec4(u1[0].x, u1[1].x, u1[2].x, u1[3].x);
     const vec4 oy = vec4(u1[0].y, u1[1].y, u1[2].y, u1[3].y);
@@ -270,21 +288,21 @@ void main_column() {
   const uint i0 = gl_GlobalInvocationID.y * POND_STEP_ROWS_PER_INVOCATION;
   if (j >= p.cols || i0 >= p.rows) return;
   const uint i1 = min(i0 + POND_STEP_ROWS_PER_INVOCATION, p.rows);
-  const uint C = p.cols;
+  const uint C = p.cols, P = p.pitch;  // columns; nodes between rows
   const bool has_left = j > 0u, has_right = j + 1u < C;
   const uint jl = has_left ? j - 1u : j, jr = has_right ? j + 1u : j;
 
   // The window: displacements at columns (j-1, j, j+1) of rows i-1 (below), i (mid), i+1
   // (above); missing neighbours load the node itself (never used, but always in bounds).
-  uint row = (i0 > 0u ? i0 - 1u : i0) * C;
+  uint row = (i0 > 0u ? i0 - 1u : i0) * P;
   vec3 below_l = load_u(row + jl), below_m = load_u(row + j), below_r = load_u(row + jr);
-  row = i0 * C;
+  row = i0 * P;
   vec3 mid_l = load_u(row + jl), mid_m = load_u(row + j), mid_r = load_u(row + jr);
   vec3 carry = vec3(0.0);  // term of (i, j) on (i-1, j), from the previous row of the strip
 
   for (uint i = i0; i < i1; ++i) {
     const bool has_below = i > 0u, has_above = i + 1u < p.rows;
-    row = (has_above ? i + 1u : i) * C;
+    row = (has_above ? i + 1u : i) * P;
     const vec3 above_l = load_u(row + jl), above_m = load_u(row + j), above_r = load_u(row + jr);
 
     // The spring to row i-1 is evaluated from its lower end, as the CPU does, and negated.
@@ -301,7 +319,7 @@ void main_column() {
     g = accumulate(g, term(mid_m, above_l, -1, 1, p.rest_diag), has_above && has_left);   // (i+1, j-1)
     carry = t_above;
 
-    const uint n = i * C + j;
+    const uint n = i * P + j;
     const uint s = p.stride;
     vec3 u1, v1;
     integrate(mid_m, vec3(load1(3u * s + n), load1(4u * s + n), load1(5u * s + n)), g,

@@ -4,13 +4,18 @@
 // Buffers (all std430, 32-bit words):
 //  - state: structure of arrays, six arrays of `stride` floats one after the other:
 //      ux at [0], uy at [stride], uz at [2*stride], vx at [3*stride], vy at [4*stride], vz at [5*stride]
-//    node n = row * cols + col, grid units (world / spacing), u the displacement from the rest
+//    node (row, col) at n = row * pitch + col, pitch = cols rounded up to 4 (gpu/water_layout.h
+//    row_pitch: rows start 16-byte aligned); the pitch - cols padding nodes of a row are fixed
+//    nodes at rest that no real node has as a neighbour. Grid units (world / spacing), u the displacement from the rest
 //    position (j, 0, i), as sim::WaterState. Two of them
 //    (ping-pong): a substep reads one and writes the other.
-//  - kinds: the node kinds (kNodeFree / kNodeVertical / kNodeFixed) packed four per uint, node n in
-//    byte n % 4 of word n / 4 (little end first), so the mask costs a quarter of a load per node.
-//  - perturbations: PerturbEntry[] of every tabulated perturbation of the model, one after the other.
-//  - normals: one vec4 per node (nx, ny, nz, 0): the layout the water vertex shader reads.
+//  - kinds: the node kinds (kNodeFree / kNodeVertical / kNodeFixed) packed four per uint, node n
+//    (with the pitch, as the state; padding kNodeFixed) in byte n % 4 of word n / 4 (little end
+//    first), so the mask costs a quarter of a load per node.
+//  - perturbations: PerturbEntry[] of every tabulated perturbation of the model, one after the
+//    other; node = row * pitch + col, as the state.
+//  - normals: one vec4 per node (nx, ny, nz, 0), compact: node row * cols + col, the LOD's index
+//    buffer's numbering, which the water vertex shader reads them by.
 #ifndef POND_WATER_GPU_H
 #define POND_WATER_GPU_H
 
@@ -28,7 +33,7 @@
 #define POND_NORMALS_ROWS_PER_INVOCATION 16  // each invocation of water_normals.comp walks this many rows
 #define POND_SPEC_FAST_MATH 0      // specialization constant: bool, true = fast math
 #define POND_SPEC_RSQRT_STEPS 1    // specialization constant: int, Newton steps of exact rsqrt
-#define POND_SPEC_QUAD_COLUMNS 2   // specialization constant: bool, 4 columns per invocation (cols % 4 == 0)
+#define POND_SPEC_QUAD_COLUMNS 2   // specialization constant: bool, 4 columns per invocation
 #define POND_SPEC_STEP_LOCAL_X 3   // specialization constant: water_step.comp's local_size_x
 #define POND_SPEC_NORMALS_LOCAL_X 4  // specialization constant: water_normals.comp's local_size_x
 
@@ -59,7 +64,7 @@ struct StepPush {
   uint rows;
   uint cols;
   uint stride;     // floats between the component arrays of a state buffer
-  uint pad0;
+  uint pitch;      // nodes between two rows of a state buffer (cols rounded up to 4)
   float kc;        // StepConstants (sim/model.h), bit for bit
   float kd;
   float dt;
@@ -92,6 +97,7 @@ struct NormalsPush {
   uint rows;
   uint cols;
   uint stride;
+  uint pitch;  // nodes between two rows of the state (the normals are compact: row * cols + col)
 };
 
 #ifdef __cplusplus

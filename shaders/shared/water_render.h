@@ -5,10 +5,12 @@
 // Bindings of the one descriptor set every pass of the water renderer uses (set 0):
 //   0: uniform WaterFrame (std140), per frame slot
 //   1: storage buffer, the water state (structure of arrays, water_gpu.h): ux | uy | uz | ...,
-//      each `stride` floats, grid units, displacement from the rest position (j, 0, i)
-//   2: storage buffer, the normals: one vec4 per node
+//      each `stride` floats, node (i, j) at i * pitch + j, grid units, displacement from the rest
+//      position (j, 0, i)
+//   2: storage buffer, the normals: one vec4 per node, compact (node i * cols + j)
 // The water is drawn with vertex pulling: the index buffer holds node indices n = row * cols + col
-// (the LOD builder's output as is), the vertex shader reads the state at gl_VertexIndex.
+// (the LOD builder's output as is), the vertex shader reads the normals at gl_VertexIndex and the
+// state at its row * pitch + col.
 // The land (shore, islands, pool rim) is an ordinary vertex buffer of LandVertex.
 #ifndef POND_WATER_RENDER_H
 #define POND_WATER_RENDER_H
@@ -51,7 +53,8 @@ struct WaterFrame {
   vec4 ground;     // rgb: pool floor, shore and island colour (linear); w: unused
   vec4 pool;       // x: floor depth below the rest surface; y: land height above it (world); zw: 0
   vec4 wire;       // rgb: LOD wireframe colour; a: its opacity
-  uvec4 grid;      // x: rows; y: cols; z: stride of the state arrays (floats); w: 0
+  uvec4 grid;      // x: rows; y: cols; z: stride of the state arrays (floats); w: row pitch of
+                   // the state (nodes; cols where the state is compact)
 };
 
 // One vertex of the land mesh: position (world, w = 1) and normal (w = 0).

@@ -165,7 +165,7 @@ struct FrameLoop::Impl {
     st.lod_ms = ms_since(t);
 
     const std::array<float, 16> view_proj = view_projection(camera, model);  // 4. draw
-    write_frame_uniforms(s, camera, view_proj, bufs.stride);
+    write_frame_uniforms(s, camera, view_proj, bufs.stride, bufs.pitch);
     bind_buffers(s, bufs);
     ensure_depth(s, target.extent);
     const FrameInfo info{s.cmd, slot, view_proj.data(),
@@ -181,7 +181,7 @@ struct FrameLoop::Impl {
   }
 
   void write_frame_uniforms(const Slot& s, const lod::Camera& camera, const std::array<float, 16>& view_proj,
-                            std::uint32_t stride) const {
+                            std::uint32_t stride, std::uint32_t pitch) const {
     const sim::LightingSpec& l = scene.lighting;
     const double sl = std::sqrt(l.sun[0] * l.sun[0] + l.sun[1] * l.sun[1] + l.sun[2] * l.sun[2]);
     WaterFrame f;
@@ -193,7 +193,7 @@ struct FrameLoop::Impl {
     f.ground = v4(l.ground);
     f.pool = {static_cast<float>(scene.view.floor_depth), static_cast<float>(scene.view.land_height), 0, 0};
     f.wire = {0.02f, 0.05f, 0.08f, 0.55f};
-    f.grid = {static_cast<std::uint32_t>(model.rows), static_cast<std::uint32_t>(model.cols), stride, 0};
+    f.grid = {static_cast<std::uint32_t>(model.rows), static_cast<std::uint32_t>(model.cols), stride, pitch};
     std::memcpy(s.uniforms.mapped, &f, sizeof f);
   }
 

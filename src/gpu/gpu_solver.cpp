@@ -13,16 +13,28 @@ namespace {
 
 using BU = vk::BufferUsageFlagBits;
 
-std::vector<std::uint32_t> pack_kinds(const std::vector<std::uint8_t>& kinds) {
-  std::vector<std::uint32_t> words((kinds.size() + 3) / 4 + 1, 0u);  // +1: never empty
-  for (std::size_t n = 0; n < kinds.size(); ++n) words[n / 4] |= std::uint32_t{kinds[n]} << (8 * (n % 4));
+// The model's kinds (node row * cols + col) with the GPU state's row pitch, packed four per word
+// (water_gpu.h); the padding columns are fixed nodes, which keeps their state at +0 (water_step.comp).
+std::vector<std::uint32_t> pack_kinds(const sim::WaterModel& model, std::size_t pitch) {
+  const auto rows = static_cast<std::size_t>(model.rows), cols = static_cast<std::size_t>(model.cols);
+  std::vector<std::uint32_t> words((rows * pitch + 3) / 4 + 1, 0u);  // +1: never empty
+  for (std::size_t i = 0; i < rows; ++i)
+    for (std::size_t j = 0; j < pitch; ++j) {
+      const std::size_t n = i * pitch + j;
+      const std::uint32_t kind = j < cols ? std::uint32_t{model.kinds[i * cols + j]} : shared::kNodeFixed;
+      words[n / 4] |= kind << (8 * (n % 4));
+    }
   return words;
 }
 
-std::vector<float> to_soa_words(const sim::WaterState& s, std::size_t stride) {
+// The six component arrays of a state, each `stride` floats, rows `pitch` nodes apart (padding +0).
+std::vector<float> to_soa_words(const sim::WaterState& s, std::size_t rows, std::size_t cols, std::size_t pitch,
+                                std::size_t stride) {
   std::vector<float> words(stride * kComponents, 0.0f);
   const float* const src[kComponents] = {s.ux.data(), s.uy.data(), s.uz.data(), s.vx.data(), s.vy.data(), s.vz.data()};
-  for (unsigned c = 0; c < kComponents; ++c) std::memcpy(&words[c * stride], src[c], s.nodes() * sizeof(float));
+  for (unsigned c = 0; c < kComponents; ++c)
+    for (std::size_t i = 0; i < rows; ++i)
+      std::memcpy(&words[c * stride + i * pitch], src[c] + i * cols, cols * sizeof(float));
   return words;
 }
 
@@ -38,17 +50,21 @@ void write_set(const Context& ctx, const vk::raii::DescriptorSet& set, std::init
 
 }  // namespace
 
-GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores)
-    : ctx_(ctx), model_(std::move(model)), stride_(state_stride(model_.nodes())), submitter_(ctx, "water compute") {
+GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores, StepPath path)
+    : ctx_(ctx),
+      model_(std::move(model)),
+      pitch_(row_pitch(static_cast<std::size_t>(model_.cols))),
+      stride_(state_stride(static_cast<std::size_t>(model_.rows) * pitch_)),
+      submitter_(ctx, "water compute") {
   const bool fast = model_.math == sim::MathMode::fast;
-  // Rows of a multiple of 4 nodes keep every group of 4 columns 16-byte aligned (the stride is a
-  // multiple of 16 floats), so the step shader can move 4 nodes per texel.
-  quad_columns_ = model_.cols % 4 == 0;
+  // The row pitch keeps every group of 4 columns 16-byte aligned (the stride is a multiple of 16
+  // floats), so the step shader can move 4 nodes per texel on every grid.
+  quad_columns_ = path == StepPath::quad;
   // Quad path: one invocation per 4 columns; column path: one per column. The workgroup spans
   // the row strip in as few groups as possible (at most POND_STEP_LOCAL_X_MAX invocations, a
   // multiple of 8 = llvmpipe's lanes) and as evenly as possible: the shader's barrier per row then
   // makes a group read and write whole rows, contiguous runs the hardware prefetcher follows.
-  step_threads_x_ = static_cast<std::uint32_t>(quad_columns_ ? model_.cols / 4 : model_.cols);
+  step_threads_x_ = static_cast<std::uint32_t>(quad_columns_ ? pitch_ / 4 : model_.cols);
   const std::uint32_t groups_x = std::max(1u, group_count(step_threads_x_, POND_STEP_LOCAL_X_MAX));
   step_local_x_ = std::max(8u, (group_count(step_threads_x_, groups_x) + 7u) / 8u * 8u);
   const SpecConstant step_constants[] = {
@@ -102,15 +118,20 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores)
       for (Buffer& b : state_) b.mapped = b.memory.mapMemory(0, VK_WHOLE_SIZE);
   }
 
-  const std::vector<std::uint32_t> kinds = pack_kinds(model_.kinds);
+  const std::vector<std::uint32_t> kinds = pack_kinds(model_, pitch_);
   kinds_ = create_buffer(ctx_, kinds.size() * 4, BU::eUniformTexelBuffer | BU::eTransferDst, MemoryUse::device,
                          "water node kinds");
   upload(ctx_, kinds_, std::as_bytes(std::span(kinds)));
 
+  // The model's tables name node row * cols + col; the state's node is row * pitch + col.
   std::vector<PerturbEntry> table;
+  const auto model_cols = static_cast<std::size_t>(model_.cols);
   for (const sim::PerturbationTable& t : model_.perturbations) {
     table_first_.push_back(static_cast<std::uint32_t>(table.size()));
-    for (std::size_t k = 0; k < t.nodes.size(); ++k) table.push_back({t.nodes[k], t.weights[k]});
+    for (std::size_t k = 0; k < t.nodes.size(); ++k) {
+      const std::size_t i = t.nodes[k] / model_cols, j = t.nodes[k] % model_cols;
+      table.push_back({static_cast<std::uint32_t>(i * pitch_ + j), t.weights[k]});
+    }
   }
   table_ = create_buffer(ctx_, std::max<std::size_t>(1, table.size()) * sizeof(PerturbEntry),
                          BU::eStorageBuffer | BU::eTransferDst, MemoryUse::device, "perturbation table");
@@ -181,7 +202,8 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores)
 
 void GpuSolver::set_state(const sim::WaterState& state, std::int64_t steps_done) {
   if (state.nodes() != model_.nodes()) throw InputError("GpuSolver::set_state: the state has the wrong node count");
-  const std::vector<float> words = to_soa_words(state, stride_);
+  const std::vector<float> words = to_soa_words(state, static_cast<std::size_t>(model_.rows),
+                                                static_cast<std::size_t>(model_.cols), pitch_, stride_);
   cur_ = 0;
   upload(ctx_, state_[0], std::as_bytes(std::span(words)));
   step_ = steps_done;
@@ -224,7 +246,8 @@ void GpuSolver::record_step(const vk::raii::CommandBuffer& cmd) {
     record_barrier(cmd);
   }
   const sim::StepConstants& k = model_.constants;
-  const StepPush push{.rows = rows, .cols = cols, .stride = stride, .pad0 = 0, .kc = k.kc, .kd = k.kd,
+  const StepPush push{.rows = rows, .cols = cols, .stride = stride, .pitch = static_cast<std::uint32_t>(pitch_),
+                      .kc = k.kc, .kd = k.kd,
                       .dt = k.dt, .rest_edge = k.rest_edge, .rest_diag = k.rest_diag};
   cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *step_pipe_.pipeline);
   cmd.pushConstants<StepPush>(*step_pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
@@ -272,7 +295,10 @@ sim::WaterState GpuSolver::read_state() const {
   sim::WaterState s(model_.nodes());
   const auto* words = static_cast<const float*>(staging.mapped);
   float* const dst[kComponents] = {s.ux.data(), s.uy.data(), s.uz.data(), s.vx.data(), s.vy.data(), s.vz.data()};
-  for (unsigned c = 0; c < kComponents; ++c) std::memcpy(dst[c], words + c * stride_, model_.nodes() * sizeof(float));
+  const auto rows = static_cast<std::size_t>(model_.rows), cols = static_cast<std::size_t>(model_.cols);
+  for (unsigned c = 0; c < kComponents; ++c)  // drops the padding: rows * cols, as sim::WaterState
+    for (std::size_t i = 0; i < rows; ++i)
+      std::memcpy(dst[c] + i * cols, words + c * stride_ + i * pitch_, cols * sizeof(float));
   return s;
 }
 
@@ -281,7 +307,8 @@ sim::WaterState GpuSolver::read_state() const {
 void GpuSolver::record_normals(const vk::raii::CommandBuffer& cmd) const {
   const NormalsPush push{.rows = static_cast<std::uint32_t>(model_.rows),
                          .cols = static_cast<std::uint32_t>(model_.cols),
-                         .stride = static_cast<std::uint32_t>(stride_)};
+                         .stride = static_cast<std::uint32_t>(stride_),
+                         .pitch = static_cast<std::uint32_t>(pitch_)};
   record_barrier(cmd);
   cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *normals_pipe_.pipeline);
   cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *normals_pipe_.layout, 0, *normals_sets_[cur_], nullptr);

@@ -26,8 +26,12 @@ class GpuSolver {
   // How the step shader stores: 64-bit stores where the device has shaderInt64 (faster on
   // llvmpipe, the same bits), or vec4 stores; tests force the second to cover both.
   enum class Stores { best, vec4 };
+  // The step shader's path (water_step.comp): 4 columns per invocation (every grid, thanks to the
+  // row pitch: the faster), or one column per invocation (kept proven by the parity suite).
+  enum class StepPath { quad, column };
   // Starts from rest. The context must outlive the solver.
-  GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores = Stores::best);
+  GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores = Stores::best,
+            StepPath path = StepPath::quad);
 
   const sim::WaterModel& model() const { return model_; }
   std::int64_t steps_done() const { return step_; }
@@ -49,12 +53,16 @@ class GpuSolver {
   // or, when it is null, in place (host_state(), which must then be non-null).
   // Beyond kMaxDispatchesPerSubmit dispatches the earlier steps go first, as advance() does.
   void advance_for_frame(std::int64_t steps, const Buffer* displacements);
-  // The current state in host memory (ux at [0], uy at [stride], uz at [2 * stride], ...) where
+  // The current state in host memory (ux at [0], uy at [stride], uz at [2 * stride], ...; node
+  // (i, j) at i * pitch() + j of each array, water_gpu.h) where
   // the state buffers' memory is host-visible, cached and coherent (CPU devices such as
   // lavapipe): valid to read after advance_for_frame(steps, nullptr) until the next command.
   // Null elsewhere (discrete GPUs: copy instead).
   const float* host_state() const { return static_cast<const float*>(state_[cur_].mapped); }
   std::size_t stride() const { return stride_; }
+  // Nodes between two rows of the state buffers: cols rounded up to 4 (gpu/water_layout.h).
+  std::size_t pitch() const { return pitch_; }
+  StepPath step_path() const { return quad_columns_ ? StepPath::quad : StepPath::column; }
   // compute_normals() and read them back, as sim::Normals.
   sim::Normals read_normals();
   // normals_buffer() read back as it is (what the last compute_normals() or advance_for_frame()
@@ -73,14 +81,15 @@ class GpuSolver {
 
   const Context& ctx_;
   sim::WaterModel model_;
-  std::size_t stride_ = 0;
+  std::size_t pitch_ = 0;   // row_pitch(cols)
+  std::size_t stride_ = 0;  // state_stride(rows * pitch_)
   ComputePipeline step_pipe_, perturb_pipe_, normals_pipe_;
   Buffer state_[2], kinds_, table_, normals_;
   // Texel-buffer views the step shader reads and writes the state through (water_gpu.h,
   // POND_STEP_BINDING_*): state c as R32F and RGBA32F, kinds as R8UI and RGBA8UI.
   vk::raii::BufferView state_r32_[2] = {nullptr, nullptr}, state_rgba32_[2] = {nullptr, nullptr};
   vk::raii::BufferView kinds_r8_ = nullptr, kinds_rgba8_ = nullptr;
-  bool quad_columns_ = false;  // the step shader's 4-columns-per-invocation path (cols % 4 == 0)
+  bool quad_columns_ = false;  // the step shader's 4-columns-per-invocation path (StepPath::quad)
   std::uint32_t step_threads_x_ = 0;  // invocations per row strip of the step shader
   std::uint32_t step_local_x_ = 0;    // its workgroup width (specialization constant)
   std::uint32_t normals_local_x_ = 0; // the normals shader's (one invocation per column)

@@ -12,13 +12,13 @@ using BU = vk::BufferUsageFlagBits;
 WaterSource::WaterSource(const Context& ctx, const sim::WaterModel& model, const SolverChoice& choice,
                          std::uint32_t slots)
     : ctx_(ctx), model_(model) {
-  const std::size_t stride = state_stride(model.nodes());
   if (choice.gpu) {
     gpu_.emplace(ctx, model);
     if (!gpu_->host_state())  // else read in place (lavapipe)
-      readback_ = create_buffer(ctx, 3 * stride * sizeof(float), BU::eTransferDst, MemoryUse::readback,
+      readback_ = create_buffer(ctx, 3 * gpu_->stride() * sizeof(float), BU::eTransferDst, MemoryUse::readback,
                                 "water positions readback");
   } else {
+    const std::size_t stride = state_stride(model.nodes());  // compact: the rows cols nodes apart
     cpu_.emplace(model, choice.backend, choice.threads);
     for (std::uint32_t s = 0; s < slots; ++s) {
       slot_state_.push_back(create_buffer(ctx, 3 * stride * sizeof(float), BU::eStorageBuffer, MemoryUse::upload,
@@ -35,8 +35,9 @@ void WaterSource::advance(std::int64_t steps) {
 }
 
 WaterSource::DrawBuffers WaterSource::advance_and_prepare(std::int64_t steps, std::uint32_t slot) {
-  const std::size_t nodes = model_.nodes(), stride = state_stride(nodes);
+  const std::size_t nodes = model_.nodes();
   if (gpu_) {
+    const std::size_t stride = gpu_->stride();
     const float* u = gpu_->host_state();
     if (u) {
       gpu_->advance_for_frame(steps, nullptr);
@@ -47,8 +48,11 @@ WaterSource::DrawBuffers WaterSource::advance_and_prepare(std::int64_t steps, st
       u = static_cast<const float*>(readback_.mapped);
     }
     displacements_ = {u, u + stride, u + 2 * stride};
-    return {&gpu_->state_buffer(), &gpu_->normals_buffer(), static_cast<std::uint32_t>(stride)};
+    displacements_pitch_ = gpu_->pitch();
+    return {&gpu_->state_buffer(), &gpu_->normals_buffer(), static_cast<std::uint32_t>(stride),
+            static_cast<std::uint32_t>(gpu_->pitch())};
   }
+  const std::size_t stride = state_stride(nodes);
   cpu_->advance(steps);
   const sim::WaterState& s = cpu_->state();
   auto* u = static_cast<float*>(slot_state_[slot].mapped);
@@ -64,13 +68,15 @@ WaterSource::DrawBuffers WaterSource::advance_and_prepare(std::int64_t steps, st
     v[4 * k + 3] = 0.0f;
   }
   displacements_ = {s.ux.data(), s.uy.data(), s.uz.data()};
-  return {&slot_state_[slot], &slot_normals_[slot], static_cast<std::uint32_t>(stride)};
+  displacements_pitch_ = static_cast<std::size_t>(model_.cols);
+  return {&slot_state_[slot], &slot_normals_[slot], static_cast<std::uint32_t>(stride),
+          static_cast<std::uint32_t>(model_.cols)};
 }
 
 lod::NodePositions WaterSource::positions() const {
   // The LOD builder converts the displacements to world positions as it copies them.
   return lod::grid_displacements(displacements_[0], displacements_[1], displacements_[2], model_.rows, model_.cols,
-                                 model_.spacing);
+                                 model_.spacing, displacements_pitch_);
 }
 
 sim::WaterState WaterSource::state() const { return gpu_ ? gpu_->read_state() : cpu_->state(); }

@@ -1,7 +1,7 @@
 #pragma once
 // The solver behind the frame loop, CPU or GPU, and what a frame needs from it after advancing:
-//  - the buffers the water vertex shader reads (state: ux | uy | uz arrays of `stride` floats;
-//    normals: one vec4 per node);
+//  - the buffers the water vertex shader reads (state: ux | uy | uz arrays of `stride` floats,
+//    rows `pitch` nodes apart; normals: one vec4 per node, compact);
 //  - the node positions on the CPU, for the LOD builder: the displacements in grid units where they
 //    already are (lod::grid_displacements; the builder converts them to world units as it copies).
 // GPU: the solver's own buffers (no copy for drawing); the normals pass runs on the GPU and the three
@@ -34,6 +34,7 @@ class WaterSource {
     const Buffer* state;
     const Buffer* normals;
     std::uint32_t stride;  // floats between the state's component arrays
+    std::uint32_t pitch;   // nodes between the state's rows: the GPU solver's pitch, or cols (CPU)
   };
   // Normals of the current state, positions made visible to the CPU, and the buffers frame slot
   // `slot` draws from.
@@ -56,6 +57,7 @@ class WaterSource {
   Buffer readback_;  // GPU, when the state is not host-readable: the displacements, copied
   std::vector<Buffer> slot_state_, slot_normals_;  // CPU: per slot
   std::array<const float*, 3> displacements_{};  // ux, uy, uz of the state prepare() last saw
+  std::size_t displacements_pitch_ = 0;           // nodes between their rows
 };
 
 }  // namespace pond::gpu

@@ -1,11 +1,14 @@
 // The parity suite (labels parity, gpu): GPU exact == CPU scalar exact, bit for bit, on a matrix
 // of scenes covering the paper's grid, rectangles, sizes that are not multiples of the workgroup
-// (2x2, 3x97, 41x67, 301x301), every border and constraint kind, islands, substeps, pre-tension,
-// every perturbation kind (velocity/position x add/set) at several steps, overlapping
-// perturbations at one step. 10,000 steps each, except 301x301: 1,500 steps (about 1.4e8
+// (2x2, 3x97, 41x67, 301x301), widths with 0 to 3 padding columns in the GPU state's rows (the
+// row pitch: 4, 48 and 200; 67; 2 and 6; 5, 33, 97, 257 and 301), every border and constraint
+// kind, islands, substeps, pre-tension, every perturbation kind (velocity/position x add/set) at
+// several steps, overlapping perturbations at one step, splashes at the right border (next to
+// the padding). 10,000 steps each, except 257x257 and 301x301: 1,000 and 1,500 steps (about 1e8
 // node-steps, which already takes the CPU reference seconds; the size is there for the grid
 // shape, the long runs for the dynamics).
 // Plus: the golden hash of the default scene, GPU normals == CPU normals, fast vs exact bound.
+#include <bit>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
@@ -89,6 +92,27 @@ const ParityCase kCases[] = {
                            {"step": 400, "row": 60.5, "col": 240.25, "radius": 3.0, "amplitude": 0.7,
                             "target": "position", "mode": "set"}]})",
      1500},
+    {"square_257x257_demo_size",  // the demo's grid: 3 padding columns, a splash at the right border
+     R"({"grid": {"rows": 257, "cols": 257}, "border": "free",
+         "constraints": [{"kind": "fixed", "rows": [60, 80], "cols": [240, 256]}],
+         "perturbations": [{"step": 0, "row": 128, "col": 255.5, "radius": 3.0, "amplitude": 1.0,
+                            "target": "velocity", "mode": "add"},
+                           {"step": 300, "row": 200, "col": 256, "radius": 2.0, "amplitude": 0.5,
+                            "target": "position", "mode": "set"}]})",
+     1000},
+    {"tiny_6x4_free",  // one group of 4 columns, both borders in it, no padding
+     R"({"grid": {"rows": 6, "cols": 4}, "border": "free",
+         "perturbations": [)" POND_SPLASHES(2, 3, 3.5, 0.5) R"(]})",
+     10000},
+    {"tiny_5x5_vertical",  // the last group: one real column (no right neighbour) and 3 padding
+     R"({"grid": {"rows": 5, "cols": 5}, "border": "vertical",
+         "physics": {"mass": 4.0, "stiffness": 7.0, "damping": 0.05, "dt": 0.4, "substeps": 2},
+         "perturbations": [)" POND_SPLASHES(2, 4, 1.5, 3.75) R"(]})",
+     10000},
+    {"narrow_7x6_free",  // the last group: two real columns and 2 padding
+     R"({"grid": {"rows": 7, "cols": 6}, "border": "free",
+         "perturbations": [)" POND_SPLASHES(3, 5, 4.5, 4.25) R"(]})",
+     10000},
 };
 
 class ParityTest : public GpuTest, public ::testing::WithParamInterface<ParityCase> {};
@@ -108,20 +132,45 @@ TEST_P(ParityTest, GpuExactEqualsCpuScalarBitForBit) {
 INSTANTIATE_TEST_SUITE_P(Scenes, ParityTest, ::testing::ValuesIn(kCases),
                          [](const ::testing::TestParamInfo<ParityCase>& p) { return std::string(p.param.name); });
 
-// The step shader has two store variants for grids whose width is a multiple of 4 (64-bit stores
-// where the device has shaderInt64, which lavapipe has, and vec4 stores): the cases above run
-// the first; this runs the second on the quad-path cases.
-TEST_F(GpuTest, Vec4StoreVariantEqualsCpuScalarBitForBit) {
-  EXPECT_TRUE(ctx().has_int64()) << "lavapipe has shaderInt64: the cases above ran the 64-bit stores";
-  int quad_cases = 0;
+// The GPU state's rows are padded to a multiple of 4 nodes, so the step shader's quad path (4
+// columns per invocation) runs every grid, odd widths too.
+TEST_F(GpuTest, QuadPathRunsEveryWidth) {
   for (const ParityCase& c : kCases) {
     const sim::WaterModel model = model_of(c);
-    if (model.cols % 4 != 0) continue;
-    ++quad_cases;
+    const gpu::GpuSolver solver(ctx(), model);
+    const auto cols = static_cast<std::size_t>(model.cols);
+    EXPECT_EQ(solver.step_path(), gpu::GpuSolver::StepPath::quad) << c.name;
+    EXPECT_EQ(solver.pitch() % 4, 0u) << c.name;
+    EXPECT_TRUE(solver.pitch() >= cols && solver.pitch() < cols + 4) << c.name << ": pitch " << solver.pitch();
+  }
+}
+
+// The cases of the matrix that run in a moment (not 257x257, 301x301), for the variants below.
+bool small_case(const ParityCase& c) { return model_of(c).nodes() < 20000; }
+
+// The step shader has two store variants in the quad path (64-bit stores where the device has
+// shaderInt64, which lavapipe has, and vec4 stores): the cases above run the first; this runs the
+// second.
+TEST_F(GpuTest, Vec4StoreVariantEqualsCpuScalarBitForBit) {
+  EXPECT_TRUE(ctx().has_int64()) << "lavapipe has shaderInt64: the cases above ran the 64-bit stores";
+  for (const ParityCase& c : kCases) {
+    if (!small_case(c)) continue;
+    const sim::WaterModel model = model_of(c);
     const auto diff = run_parity(ctx(), model, c.steps, 1000, c.name, nullptr, gpu::GpuSolver::Stores::vec4);
     EXPECT_FALSE(diff.has_value()) << c.name << ": " << describe(*diff, model);
   }
-  EXPECT_GE(quad_cases, 2);
+}
+
+// The column path (one column per invocation, no padding of its own: it stops at cols) is kept
+// proven on the rows-with-a-pitch layout.
+TEST_F(GpuTest, ColumnPathEqualsCpuScalarBitForBit) {
+  for (const ParityCase& c : kCases) {
+    if (!small_case(c)) continue;
+    const sim::WaterModel model = model_of(c);
+    const auto diff = run_parity(ctx(), model, c.steps, 1000, c.name, nullptr, gpu::GpuSolver::Stores::best,
+                                 gpu::GpuSolver::StepPath::column);
+    EXPECT_FALSE(diff.has_value()) << c.name << ": " << describe(*diff, model);
+  }
 }
 
 // The bisect mode finds the first differing step: the GPU gets one extra, tiny perturbation just
@@ -198,7 +247,9 @@ TEST_F(GpuTest, AdvanceForFrameEqualsAdvanceThenNormals) {
   ASSERT_LT(gpu::GpuSolver::kMaxDispatchesPerSubmit / chunked.substeps, 5);
   for (const sim::WaterModel& model : {model_of(kCases[5]), chunked}) {
     gpu::GpuSolver framed(ctx(), model), plain(ctx(), model);
-    const std::size_t stride = gpu::state_stride(model.nodes());
+    const std::size_t stride = framed.stride(), pitch = framed.pitch();
+    EXPECT_EQ(pitch, gpu::row_pitch(static_cast<std::size_t>(model.cols)));
+    EXPECT_EQ(stride, gpu::state_stride(static_cast<std::size_t>(model.rows) * pitch));
     const gpu::Buffer readback = gpu::create_buffer(ctx(), 3 * stride * sizeof(float),
                                                     vk::BufferUsageFlagBits::eTransferDst, gpu::MemoryUse::readback,
                                                     "test readback");
@@ -219,10 +270,18 @@ TEST_F(GpuTest, AdvanceForFrameEqualsAdvanceThenNormals) {
       ASSERT_EQ(framed.steps_done(), plain.steps_done());
       const sim::WaterState a = framed.read_state(), b = plain.read_state();
       EXPECT_EQ(sim::state_hash(a, model), sim::state_hash(b, model)) << "after " << plain.steps_done() << " steps";
-      u = seen.data();
-      EXPECT_EQ(std::memcmp(u, a.ux.data(), model.nodes() * sizeof(float)), 0);
-      EXPECT_EQ(std::memcmp(u + stride, a.uy.data(), model.nodes() * sizeof(float)), 0);
-      EXPECT_EQ(std::memcmp(u + 2 * stride, a.uz.data(), model.nodes() * sizeof(float)), 0);
+      // Row i of component c at c * stride + i * pitch; the padding after each row stays +0.
+      const auto rows = static_cast<std::size_t>(model.rows), cols = static_cast<std::size_t>(model.cols);
+      const float* const want[3] = {a.ux.data(), a.uy.data(), a.uz.data()};
+      int rows_differing = 0, padding_nonzero = 0;
+      for (std::size_t c = 0; c < 3; ++c)
+        for (std::size_t i = 0; i < rows; ++i) {
+          const float* row = seen.data() + c * stride + i * pitch;
+          rows_differing += std::memcmp(row, want[c] + i * cols, cols * sizeof(float)) != 0;
+          for (std::size_t j = cols; j < pitch; ++j) padding_nonzero += std::bit_cast<std::uint32_t>(row[j]) != 0u;
+        }
+      EXPECT_EQ(rows_differing, 0);
+      EXPECT_EQ(padding_nonzero, 0);
     }
     // The normals the last advance_for_frame() left (read back as they are) equal the plain
     // solver's, computed now.
