@@ -205,7 +205,9 @@ void GpuSolver::set_state(const sim::WaterState& state, std::int64_t steps_done)
   const std::vector<float> words = to_soa_words(state, static_cast<std::size_t>(model_.rows),
                                                 static_cast<std::size_t>(model_.cols), pitch_, stride_);
   cur_ = 0;
-  upload(ctx_, state_[0], std::as_bytes(std::span(words)));
+  // Into both buffers: the padding of either is then +0, also where the column path never
+  // writes it (the quad path keeps it +0, water_step.comp).
+  for (const Buffer& b : state_) upload(ctx_, b, std::as_bytes(std::span(words)));
   step_ = steps_done;
   next_perturbation_ = 0;
   while (next_perturbation_ < model_.perturbations.size() && model_.perturbations[next_perturbation_].step < step_)
