@@ -22,8 +22,9 @@
 //  - Column path (any grid; the solver uses it only where a test asks for it): one invocation
 //    per column walking the strip with a sliding 3x3 window (9 position fetches per node), the
 //    vertical spring reused as the next row's lower one. Before the row pitch it ran every width
-//    that is not a multiple of 4, at about twice the quad path's cost per node (257^2: 5.2 s
-//    against 2.7 s for 256^2, 2000 steps of 2 substeps).
+//    that is not a multiple of 4, at about twice the quad path's cost per node (2000 steps of 2
+//    substeps, medians of alternated runs on a busy 2-core machine: 257^2 7.9 s column path,
+//    4.8 s quad path with padding; 301^2 15.0 s, 7.2 s).
 //  - Workgroup shape: local_size_x is a specialization constant; the solver makes a workgroup
 //    span the whole row strip (up to POND_STEP_LOCAL_X_MAX = 256 invocations, a 1024-wide grid in
 //    the quad path). With the barrier per row (main_quad) a group then reads and writes each row
@@ -82,6 +83,7 @@ layout(local_size_x_id = POND_SPEC_STEP_LOCAL_X) in;
 layout(constant_id = POND_SPEC_FAST_MATH) const bool kFastMath = false;
 layout(constant_id = POND_SPEC_RSQRT_STEPS) const int kRsqrtSteps = kRsqrtStepsExact;
 layout(constant_id = POND_SPEC_QUAD_COLUMNS) const bool kQuadColumns = false;
+layout(constant_id = POND_SPEC_PADDED_ROWS) const bool kPaddedRows = true;
 
 // The bindings of shared/water_gpu.h (POND_STEP_BINDING_*): views of the source state, the
 // destination state and the kinds.
@@ -209,8 +211,11 @@ void main_quad() {
   const bool has_l = q0 > 0u, has_r = q0 + 1u < Q;
   // Whether column j0+k has its right neighbour j0+k+1 in the grid (not padding, not past the
   // row); for k = 3 that is has_r (j0+4 < pitch <=> j0+4 < cols, the pitch being cols rounded
-  // up to 4). Only the last group can have a false one.
-  const bool r0 = j0 + 1u < p.cols, r1 = j0 + 2u < p.cols, r2 = j0 + 3u < p.cols;
+  // up to 4). Only the last group of a padded row can have a false one; without padding they
+  // are constants (kPaddedRows false), which keeps those grids' code as it was (measured: the
+  // three per-lane flags cost 1024^2 a few percent).
+  const bool r0 = !kPaddedRows || j0 + 1u < p.cols, r1 = !kPaddedRows || j0 + 2u < p.cols,
+             r2 = !kPaddedRows || j0 + 3u < p.cols;
   const uint q4 = p.stride >> 2u;
 
   vec3 mid[6], up[6];

@@ -36,6 +36,7 @@
 #define POND_SPEC_QUAD_COLUMNS 2   // specialization constant: bool, 4 columns per invocation
 #define POND_SPEC_STEP_LOCAL_X 3   // specialization constant: water_step.comp's local_size_x
 #define POND_SPEC_NORMALS_LOCAL_X 4  // specialization constant: water_normals.comp's local_size_x
+#define POND_SPEC_PADDED_ROWS 5    // specialization constant: bool, the state's rows end in padding (pitch > cols)
 
 // Bindings of water_step.comp: texel-buffer views of the state and the kinds (see the buffer notes
 // above; the buffers are the same, only the views differ).

@@ -71,7 +71,8 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores, S
       {POND_SPEC_FAST_MATH, fast ? 1u : 0u},
       {POND_SPEC_RSQRT_STEPS, static_cast<std::uint32_t>(model_.constants.rsqrt_steps)},
       {POND_SPEC_QUAD_COLUMNS, quad_columns_ ? 1u : 0u},
-      {POND_SPEC_STEP_LOCAL_X, step_local_x_}};
+      {POND_SPEC_STEP_LOCAL_X, step_local_x_},
+      {POND_SPEC_PADDED_ROWS, pitch_ != static_cast<std::size_t>(model_.cols) ? 1u : 0u}};
   using DT = vk::DescriptorType;
   std::vector<DT> step_bindings(POND_STEP_BINDINGS);
   step_bindings[POND_STEP_BINDING_SRC1] = step_bindings[POND_STEP_BINDING_SRC4] = DT::eUniformTexelBuffer;
