@@ -25,6 +25,9 @@ if(POND_SANITIZE)
                                               -fno-sanitize-recover=all)
   target_link_options(pond_flags INTERFACE -fsanitize=address,undefined)
 endif()
+if(POND_FUZZ)
+  target_compile_options(pond_flags INTERFACE -fsanitize=fuzzer-no-link)  # libFuzzer's coverage
+endif()
 
 # Per-file flags for the AVX2 and AVX-512 backends, deliberately without -mfma. (-mavx512f makes
 # FMA instructions available, but no FMA intrinsic is used and -ffp-contract=off forbids the

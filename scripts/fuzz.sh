@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets with clang (POND_FUZZ=ON, ASan + UBSan, CPU-only: the targets never
-# reach Vulkan) and runs each on its committed seed corpus for a bounded time.
+# Builds the libFuzzer targets in the sanitize preset's tree (build-sanitize: clang, coverage,
+# ASan + UBSan, CPU-only: the targets never reach Vulkan) and runs each on its committed seed corpus
+# for a bounded time.
 #
 #   scripts/fuzz.sh [TARGET...]      TARGET: scene npy cli (default: all three)
 #   FUZZ_SECONDS=60                  time per target (default 60)
-#   FUZZ_BUILD_DIR=build-fuzz        build folder
 #   FUZZ_JOBS=$(nproc)               build jobs
 #
 # The committed corpus (tests/fuzz/corpus/<target>/) is read, never written: new inputs go to a
@@ -15,18 +15,13 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${FUZZ_SECONDS:-60}
-build=${FUZZ_BUILD_DIR:-build-fuzz}
+build=build-sanitize
 jobs=${FUZZ_JOBS:-$(nproc)}
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(scene npy cli)
 
-cc=${FUZZ_CC:-$(command -v clang-14 || command -v clang)}
-cxx=${FUZZ_CXX:-$(command -v clang++-14 || command -v clang++)}
-mkdir -p "$build"
-cmake -S . -B "$build" -DCMAKE_C_COMPILER="$cc" -DCMAKE_CXX_COMPILER="$cxx" \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPOND_FUZZ=ON -DPOND_WITH_VULKAN=OFF -DPOND_BUILD_BENCH=OFF \
-  -DPOND_IA32_CHECK=OFF > "$build/configure.log" 2>&1 || { cat "$build/configure.log"; exit 1; }
-cmake --build "$build" -j "$jobs" --target "${targets[@]/#/fuzz_}"
+cmake --preset sanitize > /dev/null
+cmake --build --preset sanitize -j "$jobs" --target "${targets[@]/#/fuzz_}"
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}

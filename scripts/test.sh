@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs every test: the release build (CPU, GPU on lavapipe with the validation
-# layer, the IA-32 golden hash, CLI, faults), then the CPU tests again under AddressSanitizer and
-# UndefinedBehaviorSanitizer, and the GPU solver's tests (context, float policy, SPIR-V checks,
-# parity) under both as well, then each libFuzzer target for a short time on its committed corpus
-# (FUZZ_SECONDS, default 20 here; scripts/fuzz.sh). The soak (label soak, ~12 min) is left
-# out: scripts/soak.sh runs it. Exits non-zero on the first failure.
+# layer, the IA-32 golden hash, CLI, faults); the sanitize build (clang: ASan + UBSan and libFuzzer
+# coverage) with the CPU tests and each libFuzzer target for a short time on its committed corpus
+# (FUZZ_SECONDS, default 20 here; scripts/fuzz.sh); the GPU solver's tests (context, float policy,
+# SPIR-V checks, a tenth of the parity suite's steps) under ASan + UBSan too; then the release tests.
+# The soak (label soak, ~12 min) is left out: scripts/soak.sh runs it. Exits non-zero on the first
+# failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -16,11 +17,14 @@ stage "release build"
 cmake --preset release -DPOND_REQUIRE_IA32=ON
 cmake --build --preset release -j "$jobs"
 
-stage "ASan + UBSan build and CPU tests"
+stage "ASan + UBSan build (CPU tests, fuzzers) and CPU tests"
 cmake --preset sanitize
 cmake --build --preset sanitize -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --preset sanitize -j "$jobs"
+
+stage "fuzzing"
+FUZZ_SECONDS=${FUZZ_SECONDS:-20} FUZZ_JOBS=$jobs scripts/fuzz.sh
 
 # The GPU solver's tests under ASan + UBSan too (lavapipe itself is not instrumented; leak checks
 # off, since the driver is unloaded before LeakSanitizer could name its allocations).
@@ -28,9 +32,6 @@ stage "ASan + UBSan build and GPU solver tests"
 cmake --preset sanitize-gpu
 cmake --build --preset sanitize-gpu -j "$jobs"
 ctest --preset sanitize-gpu -j "$jobs"
-
-stage "fuzzing"
-FUZZ_SECONDS=${FUZZ_SECONDS:-20} FUZZ_JOBS=$jobs scripts/fuzz.sh
 
 # Last, so its summary closes the output.
 stage "release tests"

@@ -13,6 +13,7 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 
@@ -118,6 +119,24 @@ const ParityCase kCases[] = {
 
 class ParityTest : public GpuTest, public ::testing::WithParamInterface<ParityCase> {};
 
+// POND_PARITY_STEP_SCALE (0 < s <= 1, default 1) shortens every matrix run to s times its steps
+// (at least 1): the sanitizer build in CI runs the suite for its host code at 0.1, where the full
+// length would take minutes; the release run keeps the full length.
+std::int64_t scaled_steps(std::int64_t steps) {
+  static const double scale = [] {
+    const char* text = std::getenv("POND_PARITY_STEP_SCALE");
+    if (!text || !*text) return 1.0;
+    char* end = nullptr;
+    const double s = std::strtod(text, &end);
+    if (*end != '\0' || !(s > 0 && s <= 1)) {
+      std::fprintf(stderr, "POND_PARITY_STEP_SCALE=%s: expected a number in (0, 1]\n", text);
+      std::exit(2);
+    }
+    return s;
+  }();
+  return std::max<std::int64_t>(1, std::llround(static_cast<double>(steps) * scale));
+}
+
 sim::WaterModel model_of(const ParityCase& c, sim::MathMode math = sim::MathMode::exact) {
   const sim::Scene scene = *c.json ? sim::parse_scene(c.json, c.name) : sim::load_scene("");
   return sim::build_model(scene, math);
@@ -126,7 +145,7 @@ sim::WaterModel model_of(const ParityCase& c, sim::MathMode math = sim::MathMode
 TEST_P(ParityTest, GpuExactEqualsCpuScalarBitForBit) {
   const ParityCase& c = GetParam();
   const sim::WaterModel model = model_of(c);
-  const auto diff = run_parity(ctx(), model, c.steps, 1000, c.name);
+  const auto diff = run_parity(ctx(), model, scaled_steps(c.steps), 1000, c.name);
   EXPECT_FALSE(diff.has_value()) << c.name << ": " << describe(*diff, model);
 }
 
@@ -163,7 +182,7 @@ TEST_F(GpuTest, Vec4StoreVariantEqualsCpuScalarBitForBit) {
   for (const ParityCase& c : kCases) {
     if (!small_case(c)) continue;
     const sim::WaterModel model = model_of(c);
-    const auto diff = run_parity(ctx(), model, std::min(c.steps, kForcedVariantSteps), 1000, c.name, nullptr,
+    const auto diff = run_parity(ctx(), model, scaled_steps(std::min(c.steps, kForcedVariantSteps)), 1000, c.name, nullptr,
                                  gpu::GpuSolver::Stores::vec4);
     EXPECT_FALSE(diff.has_value()) << c.name << ": " << describe(*diff, model);
   }
@@ -175,7 +194,7 @@ TEST_F(GpuTest, ColumnPathEqualsCpuScalarBitForBit) {
   for (const ParityCase& c : kCases) {
     if (!small_case(c)) continue;
     const sim::WaterModel model = model_of(c);
-    const auto diff = run_parity(ctx(), model, std::min(c.steps, kForcedVariantSteps), 1000, c.name, nullptr,
+    const auto diff = run_parity(ctx(), model, scaled_steps(std::min(c.steps, kForcedVariantSteps)), 1000, c.name, nullptr,
                                  gpu::GpuSolver::Stores::best, gpu::GpuSolver::StepPath::column);
     EXPECT_FALSE(diff.has_value()) << c.name << ": " << describe(*diff, model);
   }
