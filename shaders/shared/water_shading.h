@@ -12,14 +12,20 @@ vec3 sky_color(vec3 zenith, vec3 d, vec3 sun) {
 }
 
 // True when the target is UNORM (POND_SPEC_ENCODE_SRGB, shared/water_render.h): the shader
-// encodes sRGB itself. A constant, so the sRGB target's pipelines contain no pow() at all.
+// encodes sRGB itself. A constant, so an sRGB target's pipelines contain no encoding at all.
 layout(constant_id = POND_SPEC_ENCODE_SRGB) const bool kEncodeSrgb = false;
 
-// Linear colour in 0..1 -> what the target stores.
+// Linear colour in 0..1 -> what the target stores. For a UNORM target, the sRGB curve
+// 1.055 c^(1/2.4) - 0.055 (12.92 c below 0.0031308) as a quartic in sqrt(c), fitted minimax on
+// [0.0031308, 1]: within 0.2 of an 8-bit level of the exact curve, as close as llvmpipe's own
+// encoding on an sRGB store (0.17), and a sqrt and four multiply-adds instead of pow's exp and log.
+// (pond draws into UNORM targets: on llvmpipe the format's encoding on store costs more,
+// gpu/color_format.h.)
 vec3 encode_target(vec3 c) {
   if (kEncodeSrgb) {
     const vec3 lo = c * 12.92;
-    const vec3 hi = 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055;
+    const vec3 t = sqrt(c);
+    const vec3 hi = -0.0369580108 + t * (1.44726325 + t * (-0.942558393 + t * (0.839809749 + t * -0.308320079)));
     c = mix(hi, lo, lessThanEqual(c, vec3(0.0031308)));
   }
   return c;

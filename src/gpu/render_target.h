@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "gpu/color_format.h"
 #include "gpu/context.h"
 #include "gpu/frame_loop.h"
 
@@ -26,11 +27,11 @@ Image create_image(const Context& ctx, vk::Extent2D extent, vk::Format format, v
 // can render or hold (checked before any work, so `pond render` refuses bad sizes up front).
 void check_target_size(const Context& ctx, int width, int height, vk::Format format);
 
-// The offscreen color image of headless rendering, RGBA8: sRGB-encoded by the format (kFormat: the
-// shaders write linear colour), or R8G8B8A8Unorm, where the shaders encode (as for a UNORM swapchain).
+// The offscreen color image of headless rendering, RGBA8 holding sRGB-encoded colour: UNORM, the
+// shaders encoding (kFormat, gpu/color_format.h), or R8G8B8A8Srgb, the format encoding.
 class RenderTarget {
  public:
-  static constexpr vk::Format kFormat = vk::Format::eR8G8B8A8Srgb;
+  static constexpr vk::Format kFormat = kColorFormat;
 
   RenderTarget(const Context& ctx, int width, int height, vk::Format format = kFormat);
 

@@ -91,19 +91,21 @@ TEST_F(RenderTest, AllVerticalWavesPassThrough) {
   expect_golden("all_vertical", render({.steps = 26, .json = kAllVertical}));
 }
 
-// A UNORM target (a swapchain without an sRGB format) gets the encoding from the shaders, chosen by
-// a specialization constant, and the clear colour is encoded on the CPU: the same picture as the
-// sRGB target. (Not the wireframe: its alpha blend mixes encoded values in a UNORM target.)
-TEST_F(RenderTest, UnormTargetShowsTheSamePictureAsSrgb) {
+// An sRGB target (a swapchain without a UNORM format) gets linear colour from the shaders (a
+// specialization constant turns their encoding off) and encodes on store; the clear colour is not
+// encoded on the CPU: the same picture as the UNORM target, where the shaders encode. (Not the
+// wireframe: its alpha blend mixes encoded values in a UNORM target.)
+TEST_F(RenderTest, SrgbTargetShowsTheSamePictureAsUnorm) {
   const RenderCase c{.steps = 24};
-  const Rgba srgb = render(c);
-  RenderCase unorm = c;
-  unorm.format = vk::Format::eR8G8B8A8Unorm;
-  const ImageDiff d = compare(srgb, render(unorm), 2);
-  std::printf("UNORM vs sRGB target: largest difference %d levels, %.3f%% of pixels beyond 2\n", d.max_difference,
+  ASSERT_FALSE(gpu::is_srgb(c.format));
+  const Rgba unorm = render(c);
+  RenderCase srgb = c;
+  srgb.format = vk::Format::eR8G8B8A8Srgb;
+  const ImageDiff d = compare(unorm, render(srgb), 2);
+  std::printf("sRGB vs UNORM target: largest difference %d levels, %.3f%% of pixels beyond 2\n", d.max_difference,
               100 * d.share);
   EXPECT_LE(d.share, 0.001);
-  // And the encoding happened: without it the picture would be much darker.
+  // And both encoded: with one encoding missing the picture would be much darker or lighter.
   EXPECT_LE(d.max_difference, 8);
 }
 

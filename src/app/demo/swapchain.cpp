@@ -3,16 +3,18 @@
 #include <algorithm>
 
 #include "core/errors.h"
+#include "gpu/color_format.h"
 
 namespace pond::app::demo {
 namespace {
 
-// The renderer's shaders write linear colour into an sRGB image (as its offscreen target,
-// RenderTarget::kFormat), so an sRGB swapchain format shows the same picture; UNORM is a fallback.
-// (The ImGui shader linearizes its sRGB-authored colours for sRGB targets.)
+// The renderer draws into UNORM images, its shaders encoding sRGB (gpu/color_format.h: much cheaper
+// than the format's encoding on llvmpipe), as into its offscreen target; an sRGB format is the
+// fallback, where the shaders output linear colour. (The ImGui shader linearizes its sRGB-authored
+// colours for sRGB targets.)
 vk::SurfaceFormatKHR choose_format(const std::vector<vk::SurfaceFormatKHR>& formats) {
-  for (vk::Format want : {vk::Format::eB8G8R8A8Srgb, vk::Format::eR8G8B8A8Srgb, vk::Format::eB8G8R8A8Unorm,
-                          vk::Format::eR8G8B8A8Unorm})
+  for (vk::Format want : {vk::Format::eB8G8R8A8Unorm, gpu::kColorFormat, vk::Format::eB8G8R8A8Srgb,
+                          vk::Format::eR8G8B8A8Srgb})
     for (const auto& f : formats)
       if (f.format == want && f.colorSpace == vk::ColorSpaceKHR::eSrgbNonlinear) return f;
   if (formats.empty()) throw RuntimeError("the window's surface offers no image format");
