@@ -13,13 +13,16 @@
 #include "shared/water_render.h"
 #include "shared/water_shading.h"
 
-layout(std140, set = 0, binding = POND_TREE_BINDING_FRAME) uniform Frame { TreeRenderFrame f; };
-
 layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) flat in uvec2 in_material;  // material, shade variation
 layout(location = 3) in float in_width_px;
 layout(location = 4) noperspective in vec2 in_axis;
+// The frame's constants (tree.vert; not the uniform block, see kTreeFlatEye in tree_render.h).
+layout(location = kTreeFlatEye) flat in vec3 in_eye;
+layout(location = kTreeFlatSun) flat in vec3 in_sun;
+layout(location = kTreeFlatSky) flat in vec3 in_sky;
+layout(location = kTreeFlatAlbedo) flat in vec3 in_albedo;  // this material's colour
 layout(location = 0) out vec4 out_color;
 
 const float kPi = 3.14159265;
@@ -43,19 +46,19 @@ bool twig_covers_pixel(vec2 along_x, vec2 along_y) {
 
 vec3 twig_color(vec3 axis) {
   const vec3 d = normalize(axis);
-  const vec3 sun_across = f.sun.xyz - d * dot(f.sun.xyz, d);
-  const vec3 eye = f.eye.xyz - in_world;
+  const vec3 sun_across = in_sun - d * dot(in_sun, d);
+  const vec3 eye = in_eye - in_world;
   const vec3 eye_across = eye - d * dot(eye, d);
   const float s = length(sun_across), e = length(eye_across);
   const float c = s > 1e-6 && e > 1e-6 ? clamp(dot(sun_across, eye_across) / (s * e), -1.0, 1.0) : 0.0;
   const float phi = acos(c);
   const float diffuse = s * ((kPi - phi) * c + sin(phi)) / 4.0;
   const float up = e > 1e-6 ? kPi / 4.0 * eye_across.y / e : 0.0;
-  return f.bark.rgb * (f.sky.rgb * (0.3 + 0.15 * up) + 0.85 * diffuse * kSunColor);
+  return in_albedo * (in_sky * (0.3 + 0.15 * up) + 0.85 * diffuse * kSunColor);
 }
 
 #if defined(POND_TREE_FRAG_LINE)
-void main() { out_color = finish_color(f.line.rgb); }
+void main() { out_color = finish_color(in_albedo); }
 
 #elif defined(POND_TREE_FRAG_TWIG)
 void main() {
@@ -66,19 +69,19 @@ void main() {
 #elif defined(POND_TREE_FRAG_LEAF)
 void main() {
   vec3 n = normalize(in_normal);
-  if (dot(n, f.eye.xyz - in_world) < 0.0) n = -n;  // a leaf shows its lit side either way
-  const float sun = dot(n, f.sun.xyz);
+  if (dot(n, in_eye - in_world) < 0.0) n = -n;  // a leaf shows its lit side either way
+  const float sun = dot(n, in_sun);
   const float shade = 0.75 + 0.5 * float(in_material.y) / 255.0;
-  const vec3 ambient = f.sky.rgb * (0.3 + 0.15 * n.y);
+  const vec3 ambient = in_sky * (0.3 + 0.15 * n.y);
   // Light through a leaf: its far side still glows a little when the sun is behind it.
   const float light = 0.85 * max(sun, 0.0) + 0.25 * max(-sun, 0.0);
-  out_color = finish_color(f.leaf.rgb * shade * (ambient + light * kSunColor));
+  out_color = finish_color(in_albedo * shade * (ambient + light * kSunColor));
 }
 
 #else  // bark
 void main() {
   const vec3 n = normalize(in_normal);
-  const vec3 ambient = f.sky.rgb * (0.3 + 0.15 * n.y);
-  out_color = finish_color(f.bark.rgb * (ambient + 0.85 * max(dot(n, f.sun.xyz), 0.0) * kSunColor));
+  const vec3 ambient = in_sky * (0.3 + 0.15 * n.y);
+  out_color = finish_color(in_albedo * (ambient + 0.85 * max(dot(n, in_sun), 0.0) * kSunColor));
 }
 #endif

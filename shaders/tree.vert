@@ -32,6 +32,10 @@ layout(location = 1) out vec3 out_normal;
 layout(location = 2) flat out uvec2 out_material;  // material, shade variation
 layout(location = 3) out float out_width_px;       // twig lines: the tube's width (pixels)
 layout(location = 4) noperspective out vec2 out_axis;  // twig lines: window position (pixels)
+layout(location = kTreeFlatEye) flat out vec3 out_eye;
+layout(location = kTreeFlatSun) flat out vec3 out_sun;
+layout(location = kTreeFlatSky) flat out vec3 out_sky;
+layout(location = kTreeFlatAlbedo) flat out vec3 out_albedo;
 
 void main() {
   vec3 p;
@@ -47,4 +51,8 @@ void main() {
   // How wide a twig line's tube would be on screen (clip w is the view depth).
   out_width_px = in_info.y == kTreeMaterialTwig ? in_offset.w * inst.base.w * f.lod.x / gl_Position.w : 1.0;
   out_axis = (gl_Position.xy / gl_Position.w * 0.5 + 0.5) * f.lod.yz;
+  out_eye = f.eye.xyz;
+  out_sun = f.sun.xyz;
+  out_sky = f.sky.rgb;
+  out_albedo = in_info.y == kTreeMaterialLine ? f.line.rgb : in_info.y == kTreeMaterialLeaf ? f.leaf.rgb : f.bark.rgb;
 }

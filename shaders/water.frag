@@ -12,26 +12,30 @@
 #include "shared/water_render.h"
 #include "shared/water_shading.h"
 
-layout(std140, set = 0, binding = POND_RENDER_BINDING_FRAME) uniform Frame { WaterFrame f; };
-
 layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;
+// The frame's constants (water.vert; not the uniform block, see shared/water_render.h).
+layout(location = POND_WATER_FLAT_EYE) flat in vec4 in_eye;      // xyz: camera; w: grid spacing
+layout(location = POND_WATER_FLAT_SUN) flat in vec4 in_sun;      // xyz: toward the sun; w: floor depth
+layout(location = POND_WATER_FLAT_SKY) flat in vec3 in_sky;
+layout(location = POND_WATER_FLAT_WATER) flat in vec3 in_water;
+layout(location = POND_WATER_FLAT_GROUND) flat in vec3 in_ground;
 layout(location = 0) out vec4 out_color;
 
 // The pool floor at a world point: sand with soft ripples a few cells across, so refraction shows.
 // Triangle waves instead of sines: llvmpipe evaluates every transcendental per pixel in software.
 float tri(float x) { return abs(fract(x) - 0.5) * 4.0 - 1.0; }
 vec3 floor_color(vec2 xz) {
-  const vec2 p = xz / f.eye.w;
+  const vec2 p = xz / in_eye.w;
   const float ripple = tri(p.x * 0.21 + 0.27 * tri(p.y * 0.07)) * tri(p.y * 0.17 + 0.21 * tri(p.x * 0.06));
-  return f.ground.rgb * (0.85 + 0.15 * ripple) * (0.45 + 0.55 * max(f.sun.y, 0.0));
+  return in_ground * (0.85 + 0.15 * ripple) * (0.45 + 0.55 * max(in_sun.y, 0.0));
 }
 
 void main() {
   vec3 n = normalize(in_normal);
-  const vec3 v = normalize(f.eye.xyz - in_world);
+  const vec3 v = normalize(in_eye.xyz - in_world);
   if (!gl_FrontFacing && dot(n, v) < 0.0) n = -n;  // folded wave crests seen from below
-  const vec3 l = f.sun.xyz;
+  const vec3 l = in_sun.xyz;
 
   const float diffuse = max(dot(n, l), 0.0);  // the paper's term
   const float cos_v = clamp(dot(n, v), 0.0, 1.0);
@@ -40,16 +44,16 @@ void main() {
 
   // Seen through the water: the refracted ray to the floor (air -> water, 1 / 1.33).
   const vec3 t = refract(-v, n, 1.0 / 1.33);
-  const float depth_here = in_world.y + f.pool.x;  // water column under this point
+  const float depth_here = in_world.y + in_sun.w;  // water column under this point
   const float path = max(depth_here, 0.0) / max(-t.y, 0.08);
   const vec3 floor_hit = in_world + t * path;
-  const vec3 absorb = (vec3(1.0) - f.water.rgb) * 0.45 / f.eye.w;  // per world unit
+  const vec3 absorb = (vec3(1.0) - in_water) * 0.45 / in_eye.w;  // per world unit
   const vec3 transmit = exp(-absorb * path);
-  const vec3 body = f.water.rgb * (0.35 + 0.65 * diffuse);  // scattered light: diffuse-lit water colour
+  const vec3 body = in_water * (0.35 + 0.65 * diffuse);  // scattered light: diffuse-lit water colour
   const vec3 seen_through = floor_color(floor_hit.xz) * transmit + body * (vec3(1.0) - transmit);
 
   const vec3 r = reflect(-v, n);
-  const vec3 reflected = sky_color(f.sky.rgb, r, l);
+  const vec3 reflected = sky_color(in_sky, r, l);
   // The sun's glint, (r.l)^2048 by squaring: a narrow lobe without pow's exp/log.
   float spec = max(dot(r, l), 0.0);
   for (int k = 0; k < 11; ++k) spec *= spec;

@@ -12,6 +12,13 @@ layout(std430, set = 0, binding = POND_RENDER_BINDING_NORMALS) restrict readonly
 
 layout(location = 0) out vec3 out_world;
 layout(location = 1) out vec3 out_normal;
+// The frame's constants for water.frag, as flat varyings (see POND_WATER_FLAT_* in
+// shared/water_render.h for why not the uniform block).
+layout(location = POND_WATER_FLAT_EYE) flat out vec4 out_eye;
+layout(location = POND_WATER_FLAT_SUN) flat out vec4 out_sun;
+layout(location = POND_WATER_FLAT_SKY) flat out vec3 out_sky;
+layout(location = POND_WATER_FLAT_WATER) flat out vec3 out_water;
+layout(location = POND_WATER_FLAT_GROUND) flat out vec3 out_ground;
 
 void main() {
   const uint n = uint(gl_VertexIndex);  // compact: row * cols + col
@@ -24,4 +31,9 @@ void main() {
   out_world = world;
   out_normal = normals[n].xyz;
   gl_Position = f.view_proj * vec4(world, 1.0);
+  out_eye = f.eye;
+  out_sun = vec4(f.sun.xyz, f.pool.x);
+  out_sky = f.sky.rgb;
+  out_water = f.water.rgb;
+  out_ground = f.ground.rgb;
 }

@@ -51,6 +51,13 @@ POND_CONST uint kTreeMaterialLeaf = 2u;  // leaf, lit from both sides
 POND_CONST uint kTreeMaterialTwig = 3u;  // a twig thinner than a pixel or so drawn as a line: bark,
                                          // lit as its tube on average, lighting the pixels it would
 
+// tree.vert -> tree.frag: the frame's constants as flat varyings, not read from the uniform block
+// in the fragment shader (llvmpipe gathers those per lane: see POND_WATER_FLAT_* in water_render.h).
+POND_CONST int kTreeFlatEye = 5;     // TreeRenderFrame::eye.xyz
+POND_CONST int kTreeFlatSun = 6;     // TreeRenderFrame::sun.xyz
+POND_CONST int kTreeFlatSky = 7;     // TreeRenderFrame::sky.rgb
+POND_CONST int kTreeFlatAlbedo = 8;  // the vertex's material colour: line, bark (bark, twig) or leaf
+
 // The longest root-to-vertex chain the length-preserving walk follows: the root plus one vertex
 // per level, and a tree has at most 10 levels (tree::kMaxTreeDepth).
 POND_CONST int kTreeMaxChain = 11;
