@@ -263,6 +263,7 @@ struct FrameLoop::Impl {
     cmd.setViewport(0, vk::Viewport{0, 0, static_cast<float>(target.extent.width),
                                     static_cast<float>(target.extent.height), 0, 1});
     cmd.setScissor(0, vk::Rect2D{{0, 0}, target.extent});
+    for (PassDrawable* d : drawables) d->draw_occluding(info);
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *s.set, nullptr);
     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.land);
     cmd.bindVertexBuffers(0, *land.buffer, vk::DeviceSize{0});

@@ -96,6 +96,10 @@ class PassDrawable {
   virtual void prepare(const FrameInfo& /*frame*/) {}
   // Inside the pass (viewport, scissor set; depth test on): bind and draw.
   virtual void draw(const FrameInfo& frame) = 0;
+  // Inside the pass, before the scene: opaque screen-space overlays (the demo's panel) that write
+  // the nearest depth, so the scene's fragments behind them fail the depth test before they are
+  // shaded (on llvmpipe the water's shading of the pixels under the panel was most of its cost).
+  virtual void draw_occluding(const FrameInfo& /*frame*/) {}
 };
 
 class FrameLoop {
@@ -131,7 +135,7 @@ class FrameLoop {
   // loop built for new constraints. InputError when the node count differs.
   void set_state(const sim::WaterState& state, std::int64_t steps);
 
-  void add_drawable(PassDrawable& drawable);     // drawn after the water, in insertion order
+  void add_drawable(PassDrawable& drawable);     // drawn after the water (occluders before the scene), in insertion order
 
   const sim::Scene& scene() const;
   const sim::WaterModel& model() const;

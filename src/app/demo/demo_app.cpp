@@ -49,7 +49,12 @@ class ImGuiSession {
     io.IniFilename = nullptr;  // nothing written to the working directory
     io.LogFilename = nullptr;
     ImGui::StyleColorsDark();
-    ImGui::GetStyle().AntiAliasedLinesUseTex = false;  // the atlas is sampled nearest (imgui_renderer.cpp)
+    ImGuiStyle& style = ImGui::GetStyle();
+    style.AntiAliasedLinesUseTex = false;  // the atlas is sampled nearest (imgui_renderer.cpp)
+    // Opaque windows: the UI is drawn before the scene and hides what is behind it by depth
+    // (imgui_renderer.h), so a see-through window would show the clear colour, not the water.
+    style.Colors[ImGuiCol_WindowBg].w = 1.0f;
+    style.Colors[ImGuiCol_PopupBg].w = 1.0f;
     ImGui_ImplGlfw_InitForVulkan(window, true);
   }
   ~ImGuiSession() {

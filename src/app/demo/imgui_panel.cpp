@@ -65,10 +65,10 @@ PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, gpu::TreeDrawa
   PanelRequests req;
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowBgAlpha(0.8f);
-  // The stats and the physics open, the other sections closed: on lavapipe every pixel of the
-  // panel is a blended, textured fragment (all sections open cover ~240k pixels of 1280x720,
-  // 2.5-5 ms of a frame); a click opens what is needed.
+  // Opaque (the style's): the panel hides the scene behind it by depth (imgui_renderer.h). The
+  // stats and the physics open, the other sections closed: on lavapipe every pixel of the panel
+  // is a blended, textured fragment (all sections open cover ~240k pixels of 1280x720, 2.5-5 ms of
+  // a frame before the panel occluded the scene); a click opens what is needed.
   if (!ImGui::Begin("pond (H: keys)", &s.show_panel)) {
     ImGui::End();
     return req;
@@ -157,7 +157,6 @@ PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, gpu::TreeDrawa
 void draw_help_overlay(bool& open) {
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 10, 10), ImGuiCond_Always, ImVec2(1, 0));
-  ImGui::SetNextWindowBgAlpha(0.85f);
   if (!ImGui::Begin("Keys and mouse", &open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove)) {
     ImGui::End();
     return;

@@ -115,8 +115,10 @@ ImGuiRenderer::ImGuiRenderer(const gpu::Context& ctx, vk::Format color_format)
                                                         .cullMode = vk::CullModeFlagBits::eNone,
                                                         .frontFace = vk::FrontFace::eCounterClockwise, .lineWidth = 1.0f};
   const vk::PipelineMultisampleStateCreateInfo multisample{.rasterizationSamples = vk::SampleCountFlagBits::e1};
-  // Over the scene: no depth test, no depth write (the pass's depth attachment is still bound).
-  const vk::PipelineDepthStencilStateCreateInfo depth{.depthTestEnable = VK_FALSE, .depthWriteEnable = VK_FALSE};
+  // Before the scene (draw_occluding), in draw order, writing the nearest depth (z = 0): the scene's
+  // fragments behind the panel then fail their depth test before they are shaded.
+  const vk::PipelineDepthStencilStateCreateInfo depth{.depthTestEnable = VK_TRUE, .depthWriteEnable = VK_TRUE,
+                                                      .depthCompareOp = vk::CompareOp::eAlways};
   const vk::PipelineColorBlendAttachmentState blend_attachment{
       .blendEnable = VK_TRUE,
       .srcColorBlendFactor = vk::BlendFactor::eSrcAlpha,
@@ -176,7 +178,7 @@ void ImGuiRenderer::prepare(const gpu::FrameInfo& frame) {
   slot.ready = true;  // upload memory is host-coherent: the submit makes the writes visible
 }
 
-void ImGuiRenderer::draw(const gpu::FrameInfo& frame) {
+void ImGuiRenderer::draw_occluding(const gpu::FrameInfo& frame) {
   const SlotBuffers& slot = slots_[frame.slot];
   const ImDrawData* data = ImGui::GetDrawData();
   if (!slot.ready || !data) return;
@@ -213,7 +215,7 @@ void ImGuiRenderer::draw(const gpu::FrameInfo& frame) {
     vertex_base += static_cast<std::uint32_t>(list->VtxBuffer.Size);
     index_base += static_cast<std::uint32_t>(list->IdxBuffer.Size);
   }
-  // Leave the scissor as the loop set it for later drawables.
+  // Leave the scissor as the loop set it for the scene.
   cmd.setScissor(0, vk::Rect2D{{0, 0}, frame.extent});
 }
 

@@ -1,5 +1,7 @@
 #pragma once
-// Draws ImGui's draw data inside the frame loop's pass, as one more PassDrawable after the water.
+// Draws ImGui's draw data inside the frame loop's pass, as a PassDrawable's occluding overlay: before
+// the scene, at the nearest depth, so the scene behind the panel is never shaded (the demo makes
+// ImGui's windows opaque for it, demo_app.cpp).
 // Written here rather than taken from libimgui's Vulkan backend because that backend (1.86) needs
 // a VkRenderPass (the frame loop uses dynamic rendering) and links the Vulkan loader directly
 // (pond loads it at run time, gpu/vulkan.h).
@@ -21,7 +23,8 @@ class ImGuiRenderer final : public gpu::PassDrawable {
   ImGuiRenderer(const gpu::Context& ctx, vk::Format color_format);
 
   void prepare(const gpu::FrameInfo& frame) override;  // copies ImGui::GetDrawData() into the slot
-  void draw(const gpu::FrameInfo& frame) override;
+  void draw(const gpu::FrameInfo&) override {}
+  void draw_occluding(const gpu::FrameInfo& frame) override;
 
  private:
   struct SlotBuffers {
