@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <optional>
+#include <stdexcept>
 
 #include "core/errors.h"
 #include "gpu/buffer.h"
@@ -139,45 +141,77 @@ struct FrameLoop::Impl {
   }
 
   // ---- The frame loop ----
-  FrameStats frame(const FrameTarget& target, const FrameView& view) {
-    Slot& s = slots[next];
+  // What simulate() left for draw().
+  struct Simulated {
+    std::uint32_t slot = 0;
+    FrameView view;
+    lod::Camera camera;  // view.camera at the size the LOD was built for
+    WaterSource::DrawBuffers bufs;
+    std::size_t index_count = 0;
+    FrameStats stats;
+  };
+  std::optional<Simulated> simulated;
+
+  FrameStats simulate(const FrameView& view, vk::Extent2D extent) {
     const std::uint32_t slot = next;
-    next = (next + 1) % kFramesInFlight;
+    Slot& s = slots[slot];
     wait(s);  // the slot's previous draw is done: its buffers may be rewritten
-    FrameStats st;
-    st.full_triangles = full_index_count / 3;
-    st.land_triangles = land_vertices / 3;
+    Simulated f;
+    f.slot = slot;
+    f.view = view;
+    f.stats.full_triangles = full_index_count / 3;
+    f.stats.land_triangles = land_vertices / 3;
     auto t = std::chrono::steady_clock::now();
-
     // 1. substeps, 2. normals, positions -> CPU (on the GPU: one submission)
-    const WaterSource::DrawBuffers bufs = water->advance_and_prepare(view.steps, slot);
-    st.simulate_ms = ms_since(t);
+    f.bufs = water->advance_and_prepare(view.steps, slot);
+    f.stats.simulate_ms = ms_since(t);
+    build_lod(f, extent);  // 3. LOD into the slot's indices
+    f.stats.lod_ms = ms_since(t);
+    simulated = f;
+    return f.stats;
+  }
 
-    lod::Camera camera = view.camera;                                   // 3. LOD into the slot's indices
-    camera.width = static_cast<int>(target.extent.width);
-    camera.height = static_cast<int>(target.extent.height);
-    const bool full = view.lod_tolerance_px <= 0;
-    const std::size_t index_count =
-        full ? full_index_count
-             : lod.build(water->positions(), camera, view.lod_tolerance_px,
-                         std::span(static_cast<std::uint32_t*>(s.indices.mapped), lod.max_indices()));
-    st.triangles = index_count / 3;
-    st.lod_ms = ms_since(t);
+  void build_lod(Simulated& f, vk::Extent2D extent) {
+    f.camera = f.view.camera;
+    f.camera.width = static_cast<int>(extent.width);
+    f.camera.height = static_cast<int>(extent.height);
+    Slot& s = slots[f.slot];
+    f.index_count = f.view.lod_tolerance_px <= 0
+                        ? full_index_count
+                        : lod.build(water->positions(), f.camera, f.view.lod_tolerance_px,
+                                    std::span(static_cast<std::uint32_t*>(s.indices.mapped), lod.max_indices()));
+    f.stats.triangles = f.index_count / 3;
+  }
 
-    const std::array<float, 16> view_proj = view_projection(camera, model);  // 4. draw
-    write_frame_uniforms(s, camera, view_proj, bufs.stride, bufs.pitch);
-    bind_buffers(s, bufs);
+  FrameStats draw(const FrameTarget& target) {
+    if (!simulated) throw std::logic_error("FrameLoop::draw without a simulated frame");
+    Simulated f = *simulated;
+    simulated.reset();
+    Slot& s = slots[f.slot];
+    next = (f.slot + 1) % kFramesInFlight;
+    auto t = std::chrono::steady_clock::now();
+    if (static_cast<std::uint32_t>(f.camera.width) != target.extent.width ||
+        static_cast<std::uint32_t>(f.camera.height) != target.extent.height) {
+      build_lod(f, target.extent);  // the window was resized between the halves
+      f.stats.lod_ms += ms_since(t);
+    }
+    const bool full = f.view.lod_tolerance_px <= 0;
+    const std::array<float, 16> view_proj = view_projection(f.camera, model);  // 4. draw
+    write_frame_uniforms(s, f.camera, view_proj, f.bufs.stride, f.bufs.pitch);
+    bind_buffers(s, f.bufs);
     ensure_depth(s, target.extent);
-    const FrameInfo info{s.cmd, slot, view_proj.data(),
-                         {static_cast<float>(camera.eye[0]), static_cast<float>(camera.eye[1]), static_cast<float>(camera.eye[2])},
+    const FrameInfo info{s.cmd, f.slot, view_proj.data(),
+                         {static_cast<float>(f.camera.eye[0]), static_cast<float>(f.camera.eye[1]),
+                          static_cast<float>(f.camera.eye[2])},
                          target.extent, static_cast<double>(water->steps_done()) * model.physics.dt,
                          scene.lighting};
     for (PassDrawable* d : drawables) d->prepare(info);
-    record(s, target, info, full ? full_indices : s.indices, static_cast<std::uint32_t>(index_count), view.wireframe);
+    record(s, target, info, full ? full_indices : s.indices, static_cast<std::uint32_t>(f.index_count),
+           f.view.wireframe);
     submit(s, target);
-    if (view.wait) wait(s);
-    st.draw_ms = ms_since(t);
-    return st;
+    if (f.view.wait) wait(s);
+    f.stats.draw_ms = ms_since(t);
+    return f.stats;
   }
 
   void write_frame_uniforms(const Slot& s, const lod::Camera& camera, const std::array<float, 16>& view_proj,
@@ -306,6 +340,7 @@ struct FrameLoop::Impl {
 
   // Replaces the solver (new choice or new model), carrying the state and step count over.
   void rebuild_water(const sim::WaterState& state, std::int64_t steps) {
+    simulated.reset();  // its buffers are the old solver's
     wait_all();
     water.reset();
     water = std::make_unique<WaterSource>(ctx, model, choice, kFramesInFlight);
@@ -320,8 +355,19 @@ FrameLoop::~FrameLoop() {
   if (impl_) impl_->wait_all();
 }
 
-void FrameLoop::advance(std::int64_t steps) { impl_->water->advance(steps); }
-FrameStats FrameLoop::frame(const FrameTarget& target, const FrameView& view) { return impl_->frame(target, view); }
+// A simulated frame not drawn yet is dropped by whatever changes the water (its LOD and buffers
+// would show the state before the change); the next frame simulates again.
+void FrameLoop::advance(std::int64_t steps) {
+  impl_->simulated.reset();
+  impl_->water->advance(steps);
+}
+FrameStats FrameLoop::frame(const FrameTarget& target, const FrameView& view) {
+  impl_->simulate(view, target.extent);
+  return impl_->draw(target);
+}
+FrameStats FrameLoop::simulate(const FrameView& view, vk::Extent2D extent) { return impl_->simulate(view, extent); }
+bool FrameLoop::simulated() const { return impl_->simulated.has_value(); }
+FrameStats FrameLoop::draw(const FrameTarget& target) { return impl_->draw(target); }
 void FrameLoop::wait_idle() const { impl_->wait_all(); }
 
 void FrameLoop::set_solver(SolverChoice solver) {
@@ -335,6 +381,7 @@ void FrameLoop::set_solver(SolverChoice solver) {
 void FrameLoop::splash(const sim::Perturbation& splash) {
   sim::WaterState state = impl_->water->state();
   sim::apply_perturbation(sim::tabulate(splash, impl_->model), state);
+  impl_->simulated.reset();
   impl_->wait_all();
   impl_->water->set_state(state, impl_->water->steps_done());
 }
@@ -365,6 +412,7 @@ void FrameLoop::set_state(const sim::WaterState& state, std::int64_t steps) {
   if (state.nodes() != impl_->model.nodes())
     throw InputError("set_state: " + std::to_string(state.nodes()) + " nodes for a grid of " +
                      std::to_string(impl_->model.nodes()));
+  impl_->simulated.reset();
   impl_->wait_all();
   impl_->water->set_state(state, steps);
 }

@@ -14,12 +14,17 @@
 // CPU-solver vertex buffers are per frame slot (kFramesInFlight), each slot guarded by its fence:
 // writing frame N+1's indices never waits for frame N's draw.
 //
-// The demo drives it like this (per frame):
+// A frame is two calls, simulate() (substeps, normals, LOD: the part that needs no target) and
+// draw(target); frame() makes both. The demo drives it like this (per frame):
+//     loop.simulate(view_params, swapchain extent)
 //     acquire swapchain image i (semaphore `acquired[slot]`)
-//     loop.frame(FrameTarget{image, view, format, extent, eUndefined, ePresentSrcKHR,
-//                            acquired[slot], rendered[i]}, view_params);
+//     loop.draw(FrameTarget{image, view, format, extent, eUndefined, ePresentSrcKHR,
+//                           acquired[slot], rendered[i]})
 //     present image i waiting on rendered[i]
-// and between frames may call set_solver(), splash(), set_physics(), reset().
+// and between frames may call set_solver(), splash(), set_physics(), reset(). Simulating before
+// acquiring lets the frame's compute and LOD run while the window system still takes the last
+// frame (on lavapipe under X without DRI3 every present is an XPutImage, and acquiring waits for
+// the X server to finish it).
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -116,8 +121,17 @@ class FrameLoop {
 
   // Advances without drawing (pond render --steps N before its frames).
   void advance(std::int64_t steps);
-  // One frame, see the top of this file.
+  // One frame, see the top of this file: simulate(view, target.extent), then draw(target).
   FrameStats frame(const FrameTarget& target, const FrameView& view);
+  // The first half of a frame: waits for its slot, advances view.steps, computes the normals and
+  // builds the LOD for `extent` (the size of the target draw() will get). Stats: simulate, LOD.
+  FrameStats simulate(const FrameView& view, vk::Extent2D extent);
+  // Whether simulate() ran and its frame is not drawn yet.
+  bool simulated() const;
+  // The second half: draws the simulated frame into `target` (rebuilding the LOD first if the
+  // target's size differs from the one simulate() was given). Throws std::logic_error without a
+  // simulated frame. Stats: the whole frame's.
+  FrameStats draw(const FrameTarget& target);
   // Waits until every submitted frame is drawn (before reading back, resizing, tearing down).
   void wait_idle() const;
 

@@ -370,6 +370,16 @@ void DemoApp::draw_ui() {
 
 bool DemoApp::draw_frame(const std::string* screenshot_path) {
   using Clock = std::chrono::steady_clock;
+  // The frame's compute and LOD first, then the swapchain image: acquiring waits for the window
+  // system to have taken the last frame (frame_loop.h), which this way overlaps with them. A frame
+  // simulated before a failed acquire is drawn after the swapchain's recreation.
+  if (!loop_->simulated()) {
+    std::int64_t steps = settings_.paused ? 0 : settings_.steps_per_frame;
+    if (settings_.step_once) steps = std::max<std::int64_t>(steps, 1), settings_.step_once = false;
+    const gpu::FrameView view{.camera = current_camera(), .lod_tolerance_px = settings_.lod_tolerance_px,
+                              .wireframe = settings_.wireframe, .steps = steps};
+    loop_->simulate(view, swapchain_.extent());
+  }
   const Clock::time_point t0 = Clock::now();
   const std::optional<AcquiredImage> image = swapchain_.acquire();
   acquire_ms_ = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
@@ -381,11 +391,7 @@ bool DemoApp::draw_frame(const std::string* screenshot_path) {
                                 .final_layout = shot ? vk::ImageLayout::eTransferSrcOptimal : vk::ImageLayout::ePresentSrcKHR,
                                 .wait_semaphore = image->acquired,
                                 .signal_semaphore = shot ? shots_.drawn() : image->rendered};
-  std::int64_t steps = settings_.paused ? 0 : settings_.steps_per_frame;
-  if (settings_.step_once) steps = std::max<std::int64_t>(steps, 1), settings_.step_once = false;
-  const gpu::FrameView view{.camera = current_camera(), .lod_tolerance_px = settings_.lod_tolerance_px,
-                            .wireframe = settings_.wireframe, .steps = steps};
-  stats_.last = loop_->frame(target, view);
+  stats_.last = loop_->draw(target);
   stats_.steps_done = loop_->steps_done();
   if (shot) {
     shots_.save(image->image, swapchain_.format(), extent, image->rendered, *screenshot_path);

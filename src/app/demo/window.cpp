@@ -16,6 +16,10 @@ std::string last_glfw_error() {
   return text ? text : "unknown GLFW error";
 }
 
+vk::Extent2D extent(int width, int height) {
+  return {static_cast<std::uint32_t>(width < 0 ? 0 : width), static_cast<std::uint32_t>(height < 0 ? 0 : height)};
+}
+
 }  // namespace
 
 std::string no_display_message(const std::string& why) {
@@ -65,8 +69,15 @@ Window::Window(int width, int height, const std::string& title) {
     self(w).events_.push_back({.kind = InputEvent::Kind::scroll, .x = dx, .y = dy});
   });
   glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int fw, int fh) {
-    self(w).events_.push_back({.kind = InputEvent::Kind::resize, .x = static_cast<double>(fw), .y = static_cast<double>(fh)});
+    Window& me = self(w);
+    me.framebuffer_ = extent(fw, fh);
+    me.events_.push_back({.kind = InputEvent::Kind::resize, .x = static_cast<double>(fw), .y = static_cast<double>(fh)});
   });
+  glfwSetWindowIconifyCallback(window_, [](GLFWwindow* w, int iconified) { self(w).iconified_ = iconified == GLFW_TRUE; });
+  int fw = 0, fh = 0;
+  glfwGetFramebufferSize(window_, &fw, &fh);
+  framebuffer_ = extent(fw, fh);
+  iconified_ = glfwGetWindowAttrib(window_, GLFW_ICONIFIED) == GLFW_TRUE;
 }
 
 Window::~Window() { glfwDestroyWindow(window_); }
@@ -76,16 +87,6 @@ void Window::request_close() const { glfwSetWindowShouldClose(window_, GLFW_TRUE
 void Window::poll() { glfwPollEvents(); }
 void Window::wait(double seconds) { glfwWaitEventsTimeout(seconds); }
 
-vk::Extent2D Window::framebuffer_extent() const {
-  int w = 0, h = 0;
-  glfwGetFramebufferSize(window_, &w, &h);
-  return {static_cast<std::uint32_t>(w < 0 ? 0 : w), static_cast<std::uint32_t>(h < 0 ? 0 : h)};
-}
-
-bool Window::minimized() const {
-  const vk::Extent2D fb = framebuffer_extent();
-  return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) == GLFW_TRUE || fb.width == 0 || fb.height == 0;
-}
 void Window::minimize() const { glfwIconifyWindow(window_); }
 void Window::restore() const { glfwRestoreWindow(window_); }
 

@@ -38,10 +38,14 @@ class Window {
   // Blocks until something happens (while minimized), at most `seconds`.
   void wait(double seconds);
   std::vector<InputEvent>& events() { return events_; }
-  // The framebuffer size in pixels (0 x 0 while minimized on some systems; X11 keeps the size).
-  vk::Extent2D framebuffer_extent() const;
-  // Iconified, or with an empty framebuffer: nothing to draw into, nothing anyone sees.
-  bool minimized() const;
+  // The framebuffer size in pixels (0 x 0 while minimized on some systems; X11 keeps the size),
+  // as GLFW last reported it (polled once at creation, then from its callback): asking the window
+  // system every frame would be a round trip, which on X waits for the server to finish the
+  // previous frame's image.
+  vk::Extent2D framebuffer_extent() const { return framebuffer_; }
+  // Iconified (GLFW's callback, likewise), or with an empty framebuffer: nothing to draw into,
+  // nothing anyone sees.
+  bool minimized() const { return iconified_ || framebuffer_.width == 0 || framebuffer_.height == 0; }
   void minimize() const;  // a request to the window manager (none: nothing happens)
   void restore() const;
   void set_size(int width, int height) const;
@@ -58,6 +62,8 @@ class Window {
   GLFWwindow* window_ = nullptr;
   std::vector<InputEvent> events_;
   double cursor_x_ = 0, cursor_y_ = 0;
+  vk::Extent2D framebuffer_;
+  bool iconified_ = false;
 };
 
 }  // namespace pond::app::demo
