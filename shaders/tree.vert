@@ -44,12 +44,19 @@ void main() {
   else
     p = tree_wind_bend(in_position, in_wind_x, in_wind_z, in_jitter, inst.wind.wind.x, inst.wind.wind.z,
                        inst.wind.twig.xyz);
-  out_world = inst.base.xyz + (p + in_offset.xyz) * inst.base.w;
+  // Pruned far leaves are drawn bigger (inst.pruning.x, 1 otherwise), grown about their centres.
+  vec3 offset = in_offset.xyz;
+  if (in_info.y == kTreeMaterialLeaf && inst.pruning.x != 1.0) {  // unpruned: the offset exactly
+    const vec3 centre = unpackSnorm4x8(in_info.w).xyz * inst.pruning.z;
+    offset = centre + (offset - centre) * inst.pruning.x;
+  }
+  out_world = inst.base.xyz + (p + offset) * inst.base.w;
   out_normal = in_normal.xyz;
   out_material = in_info.yz;
   gl_Position = f.view_proj * vec4(out_world, 1.0);
   // How wide a twig line's tube would be on screen (clip w is the view depth).
-  out_width_px = in_info.y == kTreeMaterialTwig ? in_offset.w * inst.base.w * f.lod.x / gl_Position.w : 1.0;
+  // (Pruned twig lines are drawn wider: inst.pruning.y.)
+  out_width_px = in_info.y == kTreeMaterialTwig ? in_offset.w * inst.pruning.y * inst.base.w * f.lod.x / gl_Position.w : 1.0;
   out_axis = (gl_Position.xy / gl_Position.w * 0.5 + 0.5) * f.lod.yz;
   out_eye = f.eye.xyz;
   out_sun = f.sun.xyz;

@@ -80,6 +80,9 @@ struct TreeRenderFrame {
 struct TreeInstance {
   vec4 base;           // xyz: the trunk's foot (world); w: world units per tree unit
   TreeWindFrame wind;  // this instance's wind, q, time (with its phase) and bend mode
+  vec4 pruning;        // the level of detail's pruning of this draw (gpu/tree_lod.h): x: leaves'
+                       // size scale (about their centres); y: twig lines' width scale; z: the
+                       // mesh's longest leaf (tree units: unpacks the centres); w: 0
 };
 
 #ifdef __cplusplus
@@ -90,7 +93,8 @@ struct TreeMeshVertex {
                       // lines the tube's mean width at this vertex (tree units)
   vec4 normal;        // xyz: rest normal (unit; zero for lines, the segment's direction for twig
                       // lines); w: 0
-  uvec4 info;         // x: branch vertex index; y: material; z: shade variation 0..255; w: 0
+  uvec4 info;         // x: branch vertex index; y: material; z: shade variation 0..255; w: leaves:
+                      // the leaf's centre offset / the longest leaf, packSnorm4x8 (x, y, z, 0); else 0
 };
 static_assert(sizeof(uvec4) == 16 && sizeof(mat4) == 64);
 static_assert(sizeof(TreeMeshVertex) == 96);
@@ -101,7 +105,7 @@ static_assert(offsetof(TreeRenderFrame, eye) == 64 && offsetof(TreeRenderFrame, 
               offsetof(TreeRenderFrame, sky) == 96 && offsetof(TreeRenderFrame, bark) == 112 &&
               offsetof(TreeRenderFrame, leaf) == 128 && offsetof(TreeRenderFrame, line) == 144 &&
               offsetof(TreeRenderFrame, lod) == 160);
-static_assert(sizeof(TreeInstance) == 64 && offsetof(TreeInstance, wind) == 16);
+static_assert(sizeof(TreeInstance) == 80 && offsetof(TreeInstance, wind) == 16 && offsetof(TreeInstance, pruning) == 64);
 }  // namespace pond::shared::tree_wind
 #endif
 #undef POND_CONST

@@ -39,6 +39,8 @@ struct Instance {
   tree::TreeWindFrame frame{};
   int thinnest_tube = 1;
   bool diamond_leaves = true;
+  Pruning leaves;                      // of the far leaves' triangles
+  std::vector<Pruning> twigs;          // of each level's twig lines (index: level)
 };
 
 struct SlotResources {
@@ -156,6 +158,17 @@ struct TreeDrawable::Impl {
                                            : std::numeric_limits<float>::infinity();
       inst.thinnest_tube = thinnest_tube_level(pixels, grown.depth);
       inst.diamond_leaves = gpu::diamond_leaves(pixels, mesh.longest_leaf);
+      const auto leaves = mesh.leaf_triangles.count / 3;
+      inst.leaves = level_of_detail && !inst.diamond_leaves
+                        ? prune(leaves, mesh.mean_leaf_area * pixels * pixels, kPrunedLeafArea)
+                        : Pruning{leaves, 1.0f};
+      inst.twigs.assign(static_cast<std::size_t>(grown.depth) + 1, {});
+      for (int level = 1; level < inst.thinnest_tube && level <= grown.depth; ++level) {
+        const auto lines = mesh.lines.level(level).count / 2;
+        inst.twigs[static_cast<std::size_t>(level)] =
+            level_of_detail ? prune(lines, 2.0f * tree_tube_radius(grown.depth, level) * pixels, kPrunedTwigPixels)
+                            : Pruning{lines, 1.0f};
+      }
     }
 
     const auto& sun = info.lighting.sun;
@@ -172,18 +185,25 @@ struct TreeDrawable::Impl {
     std::memcpy(slots[info.slot].uniforms.mapped, &f, sizeof f);
   }
 
-  // Draws each instance's part of the mesh, `range(instance)`, with `vertex_offset`.
-  template <class RangeOf>
-  void draw_instances(const vk::raii::CommandBuffer& cmd, const vk::raii::Pipeline& pipe, RangeOf range,
+  // What one draw of an instance draws: an index range, and the pruning's scales for the shader.
+  struct Part {
+    IndexRange range;
+    float leaf_scale = 1.0f, twig_scale = 1.0f;
+  };
+  // Draws each instance's parts of the mesh, `parts(instance, add)` calling add(Part) for each,
+  // with `vertex_offset`.
+  template <class PartsOf>
+  void draw_instances(const vk::raii::CommandBuffer& cmd, const vk::raii::Pipeline& pipe, PartsOf parts,
                       std::int32_t vertex_offset = 0) const {
     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipe);
-    for (const Instance& inst : instances) {
-      const IndexRange r = range(inst);
-      if (r.count == 0) continue;
-      const sh::TreeInstance push{.base = inst.base, .wind = inst.frame};
-      cmd.pushConstants<sh::TreeInstance>(*pipes.layout, vk::ShaderStageFlagBits::eVertex, 0, push);
-      cmd.drawIndexed(r.count, 1, r.first, vertex_offset, 0);
-    }
+    for (const Instance& inst : instances)
+      parts(inst, [&](const Part& part) {
+        if (part.range.count == 0) return;
+        const sh::TreeInstance push{.base = inst.base, .wind = inst.frame,
+                                    .pruning = {part.leaf_scale, part.twig_scale, mesh.longest_leaf, 0.0f}};
+        cmd.pushConstants<sh::TreeInstance>(*pipes.layout, vk::ShaderStageFlagBits::eVertex, 0, push);
+        cmd.drawIndexed(part.range.count, 1, part.range.first, vertex_offset, 0);
+      });
   }
 
   void draw(const FrameInfo& info) const {
@@ -192,14 +212,27 @@ struct TreeDrawable::Impl {
     cmd.bindVertexBuffers(0, *vertices.buffer, vk::DeviceSize{0});
     cmd.bindIndexBuffer(*indices.buffer, 0, vk::IndexType::eUint32);
     if (spec.draw == sim::TreeDraw::tubes) {
-      draw_instances(cmd, pipes.tubes, [&](const Instance& i) { return mesh.tubes.at_least(i.thinnest_tube); });
-      draw_instances(cmd, pipes.twigs, [&](const Instance& i) { return mesh.lines.below(i.thinnest_tube); },
-                     mesh.twig_vertices);
+      draw_instances(cmd, pipes.tubes, [&](const Instance& i, auto add) { add({mesh.tubes.at_least(i.thinnest_tube)}); });
+      // Each level below the tubes as its (pruned) twig lines: a prefix of the level's shuffled order.
+      draw_instances(
+          cmd, pipes.twigs,
+          [&](const Instance& i, auto add) {
+            for (int level = 1; level < i.thinnest_tube && level < static_cast<int>(i.twigs.size()); ++level) {
+              const Pruning& p = i.twigs[static_cast<std::size_t>(level)];
+              add({{mesh.lines.level(level).first, 2 * p.count}, 1.0f, p.scale});
+            }
+          },
+          mesh.twig_vertices);
     } else {
-      draw_instances(cmd, pipes.lines, [&](const Instance&) { return mesh.lines.all; });
+      draw_instances(cmd, pipes.lines, [&](const Instance&, auto add) { add({mesh.lines.all}); });
     }
     if (spec.leaves)
-      draw_instances(cmd, pipes.leaves, [&](const Instance& i) { return i.diamond_leaves ? mesh.leaves : mesh.leaf_triangles; });
+      draw_instances(cmd, pipes.leaves, [&](const Instance& i, auto add) {
+        if (i.diamond_leaves)
+          add({mesh.leaves});
+        else  // a prefix of the shuffled triangles, each grown so the sample covers the crown's area
+          add({{mesh.leaf_triangles.first, 3 * i.leaves.count}, std::sqrt(i.leaves.scale), 1.0f});
+      });
   }
 };
 

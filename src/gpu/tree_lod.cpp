@@ -75,6 +75,13 @@ int thinnest_tube_level(float pixels_per_unit, int depth) {
   return depth + 1;
 }
 
+Pruning prune(std::uint32_t n, float measure, float least) {
+  if (n == 0 || !(measure < least)) return {n, 1.0f};
+  const double wanted = std::ceil(static_cast<double>(n) * std::max(measure, 0.0f) / least);
+  const auto count = static_cast<std::uint32_t>(std::clamp(wanted, 1.0, static_cast<double>(n)));
+  return {count, static_cast<float>(n) / static_cast<float>(count)};
+}
+
 bool diamond_leaves(float pixels_per_unit, float longest_leaf) {
   return longest_leaf * pixels_per_unit >= kMinDiamondLeafPixels;
 }

@@ -26,6 +26,26 @@ inline constexpr float kMinDiamondLeafPixels = 4.0f;
 // tube up to about that width; 1.5 rather than 1 keeps a tube wherever the line would visibly thin it.
 inline constexpr float kMinTubePixels = 1.5f;
 
+// Stochastic pruning (Cook, Halstead, Planck and Ryu, "Stochastic simplification of aggregate
+// detail", 2007) of what is far below a pixel: far leaves (triangles) smaller than
+// kPrunedLeafArea square pixels, and twig lines narrower than kPrunedTwigPixels, are drawn as a
+// uniform sample (a prefix of the mesh's shuffled order, tree_mesh.h) whose elements are enlarged
+// so that the sample covers the same area on average. On llvmpipe every leaf and line costs its
+// vertices and its setup on one thread whatever it covers: at the demo's distance the crown's 2187
+// leaves are 1.3 px^2 each and most twigs 0.08 px wide.
+inline constexpr float kPrunedLeafArea = 4.0f;     // px^2
+inline constexpr float kPrunedTwigPixels = 0.25f;  // px
+
+// Which part of n elements of `measure` (area or width, on screen) to draw where the threshold is
+// `least`: all of them at their size when measure >= least; else the first `count` =
+// ceil(n measure / least) (at least 1), each with its measure multiplied by `scale` = n / count, so
+// that count * scale * measure = n * measure.
+struct Pruning {
+  std::uint32_t count = 0;
+  float scale = 1.0f;
+};
+Pruning prune(std::uint32_t n, float measure, float least);
+
 // The camera as the level of detail needs it.
 struct TreeLodCamera {
   std::array<float, 4> depth_row{};  // view depth (clip w) of world p: dot(xyz, p) + w

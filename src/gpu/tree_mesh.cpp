@@ -39,6 +39,19 @@ std::uint32_t hash(std::uint32_t x) {
   return x;
 }
 
+// GLSL's packSnorm4x8 of (v, 0): each component rounded to a signed byte, x in the low byte.
+std::uint32_t pack_snorm4x8(Vec3 v) {
+  auto byte = [](float c) {
+    return static_cast<std::uint32_t>(static_cast<std::uint8_t>(static_cast<std::int8_t>(std::lround(std::clamp(c, -1.0f, 1.0f) * 127.0f))));
+  };
+  return byte(v.x) | byte(v.y) << 8 | byte(v.z) << 16;
+}
+
+// The order of a fixed shuffle of the skeleton's vertices (ties broken by the index).
+std::uint64_t shuffle_key(std::size_t i) {
+  return (std::uint64_t{hash(static_cast<std::uint32_t>(i) ^ 0x9e3779b9u)} << 32) | i;
+}
+
 TreeMeshVertex mesh_vertex(const tree::Tree& t, std::size_t branch, Vec3 offset, Vec3 normal,
                            std::uint32_t material, std::uint32_t shade = 0) {
   TreeMeshVertex v;
@@ -65,15 +78,24 @@ IndexRange LevelRange::below(int level) const {
   return {all.first + thick.count, all.count - thick.count};
 }
 
+IndexRange LevelRange::level(int level) const {
+  const IndexRange thick = at_least(level + 1), with = at_least(level);
+  return {all.first + thick.count, with.count - thick.count};
+}
+
 TreeMesh build_tree_mesh(const tree::Tree& t) {
   TreeMesh m;
   const std::size_t n = t.size();
   for (std::size_t i = 0; i < n; ++i) m.rest_height = std::max(m.rest_height, t.vertices[i].position.y);
 
-  // The segments (by their tip vertex), the trunk's level first; in skeleton order within a level.
+  // The segments (by their tip vertex), the trunk's level first; within a level in the order of a
+  // hash of the tip (a fixed shuffle: any prefix of a level is a uniform sample of it).
   std::vector<std::size_t> segments;
   for (std::size_t i = 1; i < n; ++i) segments.push_back(i);
-  std::stable_sort(segments.begin(), segments.end(), [&](std::size_t a, std::size_t b) { return t.levels[a] > t.levels[b]; });
+  std::sort(segments.begin(), segments.end(), [&](std::size_t a, std::size_t b) {
+    if (t.levels[a] != t.levels[b]) return t.levels[a] > t.levels[b];
+    return shuffle_key(a) < shuffle_key(b);
+  });
   // Marks the end of each level in `r` as the segments are added: level_end[L] = indices so far
   // once every segment of level >= L is in.
   auto close_levels = [&](LevelRange& r, int from_level, int to_level) {
@@ -146,7 +168,11 @@ TreeMesh build_tree_mesh(const tree::Tree& t) {
   // the diamond's half on one side twice as wide: the same reach, area and centre along the twig.
   m.leaves.first = static_cast<std::uint32_t>(m.indices.size());
   std::vector<std::uint32_t> triangles;
-  for (std::size_t i = 1; i < n; ++i) {
+  std::vector<std::pair<std::uint32_t, Vec3>> centres;
+  double leaf_area = 0.0;
+  // The leaves in the segments' order, whose thinnest level is shuffled: the triangles' prefixes are
+  // uniform samples of the crown.
+  for (std::size_t i : segments) {
     if (t.levels[i] != 1) continue;
     const auto p = static_cast<std::size_t>(t.parents[i]);
     const Vec3 dir = t.vertices[i].position - t.vertices[p].position;
@@ -157,13 +183,20 @@ TreeMesh build_tree_mesh(const tree::Tree& t) {
     const std::uint32_t shade = hash(static_cast<std::uint32_t>(i)) & 255u;
     const Vec3 along = d * (kLeafLength * len), across = side * (0.5f * kLeafWidth * len);
     m.longest_leaf = std::max(m.longest_leaf, kLeafLength * len);
+    leaf_area += 0.5 * kLeafLength * kLeafWidth * len * len;
     const auto base = static_cast<std::uint32_t>(m.vertices.size());
     for (const Vec3 corner : {Vec3{}, along * 0.45f + across, along, along * 0.45f - across * 1.0f, along * 0.45f + across * 2.0f})
       m.vertices.push_back(mesh_vertex(t, i, corner, normal, sh::kTreeMaterialLeaf, shade));
     m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
     triangles.insert(triangles.end(), {base, base + 4, base + 2});
+    // The triangle's centre, which the pruning grows it about (tree.vert), packed in its corners'
+    // info.w relative to the longest leaf (set below, once known).
+    const Vec3 centre = (along + along * 0.45f + across * 2.0f) * (1.0f / 3.0f);
+    for (std::uint32_t k = 0; k < 5; ++k) centres.push_back({base + k, centre});
   }
   m.leaves.count = static_cast<std::uint32_t>(m.indices.size()) - m.leaves.first;
+  if (m.leaves.count > 0) m.mean_leaf_area = static_cast<float>(leaf_area / (m.leaves.count / 6));
+  for (const auto& [vertex, centre] : centres) m.vertices[vertex].info.w = pack_snorm4x8(centre * (1.0f / m.longest_leaf));
   m.leaf_triangles = {static_cast<std::uint32_t>(m.indices.size()), static_cast<std::uint32_t>(triangles.size())};
   m.indices.insert(m.indices.end(), triangles.begin(), triangles.end());
 

@@ -13,7 +13,9 @@
 //
 // Lines and tubes list their segments by level, the trunk first and the thinnest twigs last, so
 // that the level of detail draws "every level from L up" as one prefix and "every level below L"
-// as one suffix of each range.
+// as one suffix of each range. Within a level, and among the far leaves' triangles, the order is a
+// fixed shuffle: any prefix is a uniform sample, which the level of detail's pruning draws
+// (tree_lod.h).
 #include <cstdint>
 #include <vector>
 
@@ -37,6 +39,7 @@ struct LevelRange {
 
   IndexRange at_least(int level) const;  // the segments of level >= `level` (a prefix)
   IndexRange below(int level) const;     // the segments of level < `level` (the rest)
+  IndexRange level(int level) const;     // the segments of `level` alone
 };
 
 struct TreeMesh {
@@ -46,6 +49,7 @@ struct TreeMesh {
   IndexRange leaves;          // diamonds, two triangles a leaf
   IndexRange leaf_triangles;  // one triangle a leaf: the same length, area and centre along the twig
   float longest_leaf = 0.0f;  // tree units
+  float mean_leaf_area = 0.0f;  // tree units^2 (a triangle's, the same as its diamond's)
   // The lines' indices drawn with this vertexOffset reach a second copy of the skeleton's vertices,
   // the twig lines (kTreeMaterialTwig): each carries its segment's direction as its normal and the
   // tube's diameter there in offset.w, which the level of detail's thin lines shade with.

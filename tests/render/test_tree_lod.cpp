@@ -9,6 +9,7 @@
 //    distance the twig lines cover about as much, in about the same colour, as the tubes they
 //    stand for.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -88,6 +89,115 @@ TEST(TreeMeshOrder, TubeTrianglesFaceOutward) {
     }
     ASSERT_GT(tree::dot(face, outward), 0.0f) << "tube triangle " << (k - m.tubes.all.first) / 3;
   }
+}
+
+// Pruning draws a prefix of a level's lines, or of the far leaves: any prefix must be a uniform
+// sample of the crown, not one bough (the skeleton's own, depth-first order would be). Measured by
+// the share of each octant about the crown's centroid in the first quarter against in all, which a
+// uniform random sample of q points keeps within about sqrt(p (1 - p) / q) (p ~ 1/8): the bound is
+// four times that.
+TEST(TreeMeshOrder, PrefixesAreUniformSamplesOfTheCrown) {
+  const tree::Tree t = tree::grow_tree({.depth = 8, .seed = 5});
+  const gpu::TreeMesh m = gpu::build_tree_mesh(t);
+  auto worst_octant_error = [](const std::vector<Vec3>& points) {
+    Vec3 mean{};
+    for (const Vec3& p : points) mean = mean + p * (1.0f / static_cast<float>(points.size()));
+    auto octant = [&](const Vec3& p) { return (p.x > mean.x) | (p.y > mean.y) << 1 | (p.z > mean.z) << 2; };
+    std::array<double, 8> all{}, prefix{};
+    const std::size_t quarter = points.size() / 4;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      all[octant(points[i])] += 1.0 / static_cast<double>(points.size());
+      if (i < quarter) prefix[octant(points[i])] += 1.0 / static_cast<double>(quarter);
+    }
+    double worst = 0;
+    for (int o = 0; o < 8; ++o) worst = std::max(worst, std::abs(prefix[o] - all[o]));
+    return worst;
+  };
+  auto bound = [](std::size_t n) { return 4.0 * std::sqrt(0.125 * 0.875 / static_cast<double>(n / 4)); };
+  // The far leaves' triangles, by their first corner's branch vertex (the twig's tip).
+  std::vector<Vec3> leaves;
+  for (std::uint32_t k = 0; k < m.leaf_triangles.count; k += 3)
+    leaves.push_back(t.vertices[m.vertices[m.indices[m.leaf_triangles.first + k]].info.x].position);
+  ASSERT_EQ(leaves.size(), m.leaves.count / 6);
+  ASSERT_GE(leaves.size(), 1000u);
+  EXPECT_LT(worst_octant_error(leaves), bound(leaves.size())) << worst_octant_error(leaves);
+  // Each thin level's lines, by their tip.
+  for (int level = 1; level <= 3; ++level) {
+    const gpu::IndexRange r = m.lines.level(level);
+    std::vector<Vec3> tips;
+    for (std::uint32_t k = 0; k < r.count; k += 2) {
+      const std::uint32_t tip = m.indices[r.first + k + 1];
+      EXPECT_EQ(t.levels[tip], level);
+      tips.push_back(t.vertices[tip].position);
+    }
+    ASSERT_GE(tips.size(), 200u) << "level " << level;
+    EXPECT_LT(worst_octant_error(tips), bound(tips.size())) << "level " << level << ": " << worst_octant_error(tips);
+  }
+  // The skeleton's order fails the same measure: the test can tell.
+  std::vector<Vec3> skeleton;
+  for (std::size_t i = 1; i < t.size(); ++i)
+    if (t.levels[i] == 1) skeleton.push_back(t.vertices[i].position);
+  EXPECT_GT(worst_octant_error(skeleton), 2 * bound(skeleton.size())) << worst_octant_error(skeleton);
+}
+
+// The far leaves grow about their centres (tree.vert): each corner carries its triangle's centroid,
+// packed relative to the longest leaf, to within the packing's step.
+TEST(TreeMeshOrder, LeafTrianglesCarryTheirCentres) {
+  const tree::Tree t = tree::grow_tree({.depth = 6, .seed = 3});
+  const gpu::TreeMesh m = gpu::build_tree_mesh(t);
+  auto unpack = [&](std::uint32_t w, int byte) {
+    return std::max(static_cast<float>(static_cast<std::int8_t>(w >> (8 * byte) & 255u)) / 127.0f, -1.0f) * m.longest_leaf;
+  };
+  for (std::uint32_t k = 0; k < m.leaf_triangles.count; k += 3) {
+    Vec3 centroid{};
+    for (int c = 0; c < 3; ++c) {
+      const gpu::TreeMeshVertex& v = m.vertices[m.indices[m.leaf_triangles.first + k + c]];
+      centroid = centroid + Vec3{v.offset.x, v.offset.y, v.offset.z} * (1.0f / 3.0f);
+    }
+    for (int c = 0; c < 3; ++c) {
+      const std::uint32_t w = m.vertices[m.indices[m.leaf_triangles.first + k + c]].info.w;
+      const float step = m.longest_leaf / 127.0f;
+      ASSERT_NEAR(unpack(w, 0), centroid.x, step) << "leaf " << k / 3;
+      ASSERT_NEAR(unpack(w, 1), centroid.y, step) << "leaf " << k / 3;
+      ASSERT_NEAR(unpack(w, 2), centroid.z, step) << "leaf " << k / 3;
+      ASSERT_EQ(w >> 24, 0u);
+    }
+  }
+  EXPECT_GT(m.mean_leaf_area, 0.0f);
+}
+
+// ---- The pruning (no GPU) -------------------------------------------------------------------------
+
+TEST(TreeLod, PruningKeepsWhatIsBigEnough) {
+  for (float measure : {4.0f, 5.0f, 1e6f}) {
+    const gpu::Pruning p = gpu::prune(2187, measure, 4.0f);
+    EXPECT_EQ(p.count, 2187u);
+    EXPECT_EQ(p.scale, 1.0f);
+  }
+  EXPECT_EQ(gpu::prune(0, 0.5f, 4.0f).count, 0u);
+  // A measure that is not a number draws everything rather than nothing.
+  EXPECT_EQ(gpu::prune(100, std::nanf(""), 4.0f).count, 100u);
+}
+
+TEST(TreeLod, PruningKeepsTheCoveredArea) {
+  for (std::uint32_t n : {1u, 7u, 729u, 2187u})
+    for (float measure : {3.99f, 1.3f, 0.5f, 0.08f, 1e-4f, 0.0f, -1.0f}) {
+      const gpu::Pruning p = gpu::prune(n, measure, 4.0f);
+      ASSERT_GE(p.count, 1u);
+      ASSERT_LE(p.count, n);
+      // The drawn elements stand for all of them...
+      const double count = p.count, all = n;
+      EXPECT_NEAR(count * p.scale, all, 1e-3 * all) << n << " of " << measure;
+      // ...each at most the threshold, and (when more than one is drawn) not much below it.
+      if (measure > 0) {
+        EXPECT_LE(measure * p.scale, 4.0f * (1 + 1e-5f)) << n << " of " << measure;
+        if (p.count > 1) {
+          EXPECT_GT(measure * p.scale, 4.0 * (count - 1) / count) << n << " of " << measure;
+        }
+      }
+    }
+  // The demo's far crown: 2187 leaves of 1.3 px^2 are 711 of 4 px^2.
+  EXPECT_EQ(gpu::prune(2187, 1.3f, 4.0f).count, 711u);
 }
 
 // ---- The bounds and the choice (no GPU) -----------------------------------------------------------

@@ -72,7 +72,7 @@ class TreeParityTest : public GpuTest {
       writes.push_back({.dstSet = *set, .dstBinding = b, .descriptorCount = 1,
                         .descriptorType = vk::DescriptorType::eStorageBuffer, .pBufferInfo = &infos[b]});
     ctx().device().updateDescriptorSets(writes, nullptr);
-    const sh::TreeInstance push{.base = {0, 0, 0, 1}, .wind = frame};
+    const sh::TreeInstance push{.base = {0, 0, 0, 1}, .wind = frame, .pruning = {1, 1, 0, 0}};
     ctx().submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
       cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipe.pipeline);
       cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipe.layout, 0, *set, nullptr);
