@@ -31,7 +31,7 @@ void main() {
   out_world = world;
   out_normal = normals[n].xyz;
   gl_Position = f.view_proj * vec4(world, 1.0);
-  out_eye = f.eye;
+  out_eye = vec4(f.eye.xyz, 1.0 / f.eye.w);  // water.frag multiplies by the reciprocal
   out_sun = vec4(f.sun.xyz, f.pool.x);
   out_sky = f.sky.rgb;
   out_water = f.water.rgb;

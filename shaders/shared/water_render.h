@@ -45,7 +45,7 @@ struct mat4 {
 // fragments may start with an inactive one and it cannot load once and broadcast; a flat input is
 // read once per triangle. Measured on a 257^2 frame at 1280x720 (callgrind, whole process): 151 ->
 // 121 M instructions. Locations of water.vert -> water.frag:
-#define POND_WATER_FLAT_EYE 2     // WaterFrame::eye (xyz: camera, w: grid spacing)
+#define POND_WATER_FLAT_EYE 2     // WaterFrame::eye (xyz: camera), w: 1 / its w (the grid spacing)
 #define POND_WATER_FLAT_SUN 3     // xyz: WaterFrame::sun; w: WaterFrame::pool.x (floor depth)
 #define POND_WATER_FLAT_SKY 4     // WaterFrame::sky.rgb
 #define POND_WATER_FLAT_WATER 5   // WaterFrame::water.rgb
