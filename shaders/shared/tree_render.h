@@ -8,7 +8,8 @@
 //                               (TreeVertex of tree_wind.h: position, wX, wZ, jitter coefficients)
 //   POND_TREE_BINDING_PARENTS   storage buffer: int per tree vertex, the parent (-1 for the root)
 // The two storage buffers are what the length-preserving bend walks (shared/tree_pose.h).
-// Push constants: TreeInstance, one tree instance (its foot, its scale, its own wind frame).
+// Push constants: TreeInstance, one draw of a tree instance (its foot, its scale, its own wind
+// frame, and the level of detail's pruning of the part drawn).
 //
 // The mesh is a vertex buffer of TreeMeshVertex. Every mesh vertex carries the article's per-vertex
 // data (position, wX, wZ, jitter: the original's normal/binormal/tangent attributes) of the branch

@@ -74,7 +74,9 @@ struct TreeBounds {
 
 TreeBounds tree_bounds(const tree::Tree& tree, const TreeMesh& mesh);
 
-// A sphere (tree units) holding every drawn vertex of the tree bent by `frame`: the article's bend
+// A sphere (tree units) holding every vertex of the tree's mesh bent by `frame` (pruned far leaves,
+// drawn grown, may reach a little past it: it sizes the level of detail, nothing is culled by it;
+// by then they are under 4 px^2, so their reach past it is a pixel or two): the article's bend
 // moves a vertex by at most wind_gain * (max(|wind.x|, |wind.z|) + jitter_gain * max|q|), the
 // length-preserving one keeps every vertex within `reach` of its (so moved) root.
 Sphere bent_bounds(const TreeBounds& bounds, const tree::TreeWindFrame& frame);
