@@ -14,4 +14,5 @@ echo "run.sh: no display (DISPLAY is not set), so no window: rendering the defau
 build/src/app/pond render --steps 60 --frames 5 --size 1280x720 --out build/frame.png
 build/src/app/pond simulate --steps 400 --out build/state.npy
 echo "run.sh: wrote build/frame.png and build/state.npy; for the window, run under a display" \
-     "(e.g. xvfb-run -a scripts/run.sh)." >&2
+     "(e.g. MALLOC_TOP_PAD_=67108864 xvfb-run -a scripts/run.sh; the variable keeps Xvfb from" \
+     "halving the frame rate, see the README's demo section)." >&2
