@@ -19,7 +19,9 @@ layout(location = POND_WATER_FLAT_EYE) flat in vec4 in_eye;      // xyz: camera;
 layout(location = POND_WATER_FLAT_SUN) flat in vec4 in_sun;      // xyz: toward the sun; w: floor depth
 layout(location = POND_WATER_FLAT_SKY) flat in vec3 in_sky;
 layout(location = POND_WATER_FLAT_WATER) flat in vec3 in_water;
-layout(location = POND_WATER_FLAT_GROUND) flat in vec3 in_ground;
+layout(location = POND_WATER_FLAT_GROUND) flat in vec3 in_ground;  // lit by the sun
+layout(location = POND_WATER_FLAT_HORIZON) flat in vec3 in_horizon;
+layout(location = POND_WATER_FLAT_ABSORB) flat in vec3 in_absorb;    // per world unit
 layout(location = 0) out vec4 out_color;
 
 // The pool floor at a world point: sand with soft ripples a few cells across, so refraction shows.
@@ -28,18 +30,17 @@ float tri(float x) { return abs(fract(x) - 0.5) * 4.0 - 1.0; }
 vec3 floor_color(vec2 xz) {
   const vec2 p = xz * in_eye.w;
   const float ripple = tri(p.x * 0.21 + 0.27 * tri(p.y * 0.07)) * tri(p.y * 0.17 + 0.21 * tri(p.x * 0.06));
-  return in_ground * (0.85 + 0.15 * ripple) * (0.45 + 0.55 * max(in_sun.y, 0.0));
+  return in_ground * (0.85 + 0.15 * ripple);
 }
 
 // exp(-x) for x >= 0, without exp: llvmpipe evaluates exp per lane and channel in software
-// (exp2's range reduction and polynomial for each of the three channels). exp(-x) = exp(-x/16)^16,
-// exp(-u) by its cubic Taylor polynomial: absolute error below 1e-4 (a fortieth of an 8-bit
-// level), relative below 0.6 % while exp(-x) > 0.01, and decreasing in x; u is clamped at 1.5,
-// where the cubic is 0.0625 and its 16th power 5e-20: as good as 0.
+// (exp2's range reduction and polynomial for each of the three channels). exp(-x) = exp(-x/8)^8,
+// exp(-u) by its cubic Taylor polynomial: absolute error below 6e-4 (a seventh of an 8-bit level),
+// and decreasing in x; u is clamped at 1.5, where the cubic is 0.0625 and its 8th power 2e-10:
+// as good as 0. (exp(-x/16)^16 would be ten times closer for three more multiplies a channel.)
 vec3 exp_neg(vec3 x) {
-  const vec3 u = min(x * 0.0625, vec3(1.5));
+  const vec3 u = min(x * 0.125, vec3(1.5));
   vec3 e = vec3(1.0) - u * (vec3(1.0) - u * (vec3(0.5) - u * (1.0 / 6.0)));
-  e *= e;
   e *= e;
   e *= e;
   return e * e;
@@ -61,13 +62,12 @@ void main() {
   const float depth_here = in_world.y + in_sun.w;  // water column under this point
   const float path = max(depth_here, 0.0) / max(-t.y, 0.08);
   const vec3 floor_hit = in_world + t * path;
-  const vec3 absorb = (vec3(1.0) - in_water) * (0.45 * in_eye.w);  // per world unit
-  const vec3 transmit = exp_neg(absorb * path);
+  const vec3 transmit = exp_neg(in_absorb * path);
   const vec3 body = in_water * (0.35 + 0.65 * diffuse);  // scattered light: diffuse-lit water colour
   const vec3 seen_through = floor_color(floor_hit.xz) * transmit + body * (vec3(1.0) - transmit);
 
   const vec3 r = reflect(-v, n);
-  const vec3 reflected = sky_color(in_sky, r, l);
+  const vec3 reflected = sky_color(in_sky, in_horizon, r, l);
   // The sun's glint, (r.l)^2048 by squaring: a narrow lobe without pow's exp/log.
   float spec = max(dot(r, l), 0.0);
   for (int k = 0; k < 11; ++k) spec *= spec;

@@ -5,6 +5,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/water_render.h"
+#include "shared/water_shading.h"
 
 layout(std140, set = 0, binding = POND_RENDER_BINDING_FRAME) uniform Frame { WaterFrame f; };
 layout(std430, set = 0, binding = POND_RENDER_BINDING_STATE) restrict readonly buffer State { float state[]; };
@@ -19,6 +20,8 @@ layout(location = POND_WATER_FLAT_SUN) flat out vec4 out_sun;
 layout(location = POND_WATER_FLAT_SKY) flat out vec3 out_sky;
 layout(location = POND_WATER_FLAT_WATER) flat out vec3 out_water;
 layout(location = POND_WATER_FLAT_GROUND) flat out vec3 out_ground;
+layout(location = POND_WATER_FLAT_HORIZON) flat out vec3 out_horizon;
+layout(location = POND_WATER_FLAT_ABSORB) flat out vec3 out_absorb;
 
 void main() {
   const uint n = uint(gl_VertexIndex);  // compact: row * cols + col
@@ -35,5 +38,7 @@ void main() {
   out_sun = vec4(f.sun.xyz, f.pool.x);
   out_sky = f.sky.rgb;
   out_water = f.water.rgb;
-  out_ground = f.ground.rgb;
+  out_ground = f.ground.rgb * (0.45 + 0.55 * max(f.sun.y, 0.0));
+  out_horizon = sky_horizon(f.sky.rgb);
+  out_absorb = (vec3(1.0) - f.water.rgb) * (0.45 / f.eye.w);
 }

@@ -44,12 +44,15 @@ struct mat4 {
 // shader as an 8-lane gather with a bounds check per lane and per float, because a batch of
 // fragments may start with an inactive one and it cannot load once and broadcast; a flat input is
 // read once per triangle. Measured on a 257^2 frame at 1280x720 (callgrind, whole process): 151 ->
-// 121 M instructions. Locations of water.vert -> water.frag:
-#define POND_WATER_FLAT_EYE 2     // WaterFrame::eye (xyz: camera), w: 1 / its w (the grid spacing)
-#define POND_WATER_FLAT_SUN 3     // xyz: WaterFrame::sun; w: WaterFrame::pool.x (floor depth)
-#define POND_WATER_FLAT_SKY 4     // WaterFrame::sky.rgb
-#define POND_WATER_FLAT_WATER 5   // WaterFrame::water.rgb
-#define POND_WATER_FLAT_GROUND 6  // WaterFrame::ground.rgb
+// 121 M instructions. What depends on the frame alone is also computed there, once a vertex
+// rather than once a pixel. Locations of water.vert -> water.frag:
+#define POND_WATER_FLAT_EYE 2      // WaterFrame::eye (xyz: camera), w: 1 / its w (the grid spacing)
+#define POND_WATER_FLAT_SUN 3      // xyz: WaterFrame::sun; w: WaterFrame::pool.x (floor depth)
+#define POND_WATER_FLAT_SKY 4      // WaterFrame::sky.rgb (the zenith)
+#define POND_WATER_FLAT_WATER 5    // WaterFrame::water.rgb
+#define POND_WATER_FLAT_GROUND 6   // WaterFrame::ground.rgb lit by the sun (the pool floor's light)
+#define POND_WATER_FLAT_HORIZON 7  // the sky's colour at the horizon
+#define POND_WATER_FLAT_ABSORB 8   // the water's absorption per world unit (rgb)
 
 // Fragment-shader specialization constant (bool), set by gpu/graphics_pipeline.cpp from the colour
 // format: true when the target is UNORM and the shader must encode sRGB itself.

@@ -1,10 +1,12 @@
-// GLSL helpers shared by the water and land fragment shaders (GLSL only; kept under shared/ so that
+// GLSL helpers shared by the water and land shaders (GLSL only; kept under shared/ so that
 // cmake/Shaders.cmake rebuilds every shader when it changes).
 
+// The sky's colour at the horizon, from the zenith's.
+vec3 sky_horizon(vec3 zenith) { return mix(zenith, vec3(1.0), 0.55); }
+
 // The sky in direction `d`: lighter towards the horizon, with a glow around the sun.
-vec3 sky_color(vec3 zenith, vec3 d, vec3 sun) {
+vec3 sky_color(vec3 zenith, vec3 horizon, vec3 d, vec3 sun) {
   const float up = clamp(d.y, 0.0, 1.0);
-  const vec3 horizon = mix(zenith, vec3(1.0), 0.55);
   const vec3 base = mix(horizon, zenith, sqrt(up));
   float glow = max(dot(d, sun), 0.0);  // ^256 by squaring (no exp/log per pixel)
   for (int k = 0; k < 8; ++k) glow *= glow;
