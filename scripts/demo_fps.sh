@@ -13,6 +13,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rounds=${1:-5}
+[[ $rounds =~ ^[1-9][0-9]*$ ]] || { echo "demo_fps.sh: ROUNDS must be a positive integer, not '$rounds'" >&2; exit 2; }
 pond=build/src/app/pond
 [ -x "$pond" ] || { echo "demo_fps.sh: $pond is missing: build first (cmake --preset release && cmake --build --preset release)" >&2; exit 2; }
 command -v Xvfb > /dev/null || { echo "demo_fps.sh: Xvfb is missing: scripts/setup.sh installs it" >&2; exit 2; }
