@@ -39,8 +39,8 @@ struct Instance {
   tree::TreeWindFrame frame{};
   int thinnest_tube = 1;
   bool diamond_leaves = true;
-  Pruning leaves;                      // of the far leaves' triangles
-  std::vector<Pruning> twigs;          // of each level's twig lines (index: level)
+  Pruning leaves;              // of the far leaves' triangles (used when not diamonds)
+  std::vector<Pruning> twigs;  // of each twig-line level below thinnest_tube (index: level)
 };
 
 struct SlotResources {
@@ -158,17 +158,12 @@ struct TreeDrawable::Impl {
                                            : std::numeric_limits<float>::infinity();
       inst.thinnest_tube = thinnest_tube_level(pixels, grown.depth);
       inst.diamond_leaves = gpu::diamond_leaves(pixels, mesh.longest_leaf);
-      const auto leaves = mesh.leaf_triangles.count / 3;
-      inst.leaves = level_of_detail && !inst.diamond_leaves
-                        ? prune(leaves, mesh.mean_leaf_area * pixels * pixels, kPrunedLeafArea)
-                        : Pruning{leaves, 1.0f};
-      inst.twigs.assign(static_cast<std::size_t>(grown.depth) + 1, {});
-      for (int level = 1; level < inst.thinnest_tube && level <= grown.depth; ++level) {
-        const auto lines = mesh.lines.level(level).count / 2;
-        inst.twigs[static_cast<std::size_t>(level)] =
-            level_of_detail ? prune(lines, 2.0f * tree_tube_radius(grown.depth, level) * pixels, kPrunedTwigPixels)
-                            : Pruning{lines, 1.0f};
-      }
+      // Without the level of detail `pixels` is infinite: diamonds, every level a tube, no pruning.
+      inst.leaves = prune(mesh.leaf_triangles.count / 3, mesh.mean_leaf_area * pixels * pixels, kPrunedLeafArea);
+      inst.twigs.assign(static_cast<std::size_t>(inst.thinnest_tube), {});  // index: level; 0 unused
+      for (int level = 1; level < inst.thinnest_tube; ++level)
+        inst.twigs[static_cast<std::size_t>(level)] = prune(
+            mesh.lines.level(level).count / 2, 2.0f * tree_tube_radius(grown.depth, level) * pixels, kPrunedTwigPixels);
     }
 
     const auto& sun = info.lighting.sun;
@@ -217,7 +212,7 @@ struct TreeDrawable::Impl {
       draw_instances(
           cmd, pipes.twigs,
           [&](const Instance& i, auto add) {
-            for (int level = 1; level < i.thinnest_tube && level < static_cast<int>(i.twigs.size()); ++level) {
+            for (int level = 1; level < i.thinnest_tube; ++level) {
               const Pruning& p = i.twigs[static_cast<std::size_t>(level)];
               add({{mesh.lines.level(level).first, 2 * p.count}, 1.0f, p.scale});
             }
