@@ -13,5 +13,6 @@ if(POND_WITH_VULKAN)
   find_package(glfw3 3.3 REQUIRED)
   find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
   find_program(SPIRV_VAL spirv-val REQUIRED)
-  find_path(STB_INCLUDE_DIR stb_image_write.h PATH_SUFFIXES stb REQUIRED)
 endif()
+find_path(STB_INCLUDE_DIR stb/stb_image_write.h REQUIRED)  # core/png.cpp
+find_path(GLM_INCLUDE_DIR glm/glm.hpp REQUIRED)            # view/view_projection.cpp

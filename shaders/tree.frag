@@ -28,7 +28,7 @@ layout(location = 0) out vec4 out_color;
 const float kPi = 3.14159265;
 const vec3 kSunColor = vec3(1.0, 0.96, 0.9);
 
-// A twig line stands for a tube narrower than a pixel or so (gpu/tree_lod.h), and lights the
+// A twig line stands for a tube narrower than a pixel or so (tree/tree_lod.h), and lights the
 // pixels that tube would: those whose centres lie within half its width of its axis (so a tube
 // well under a pixel wide shows as the same broken dashes). The line's fragments interpolate a
 // point of the axis (in window pixels), whose derivatives run along it: the distance across is the

@@ -5,7 +5,7 @@
 // length-preserving variant walked along the vertex's ancestors (shared/tree_pose.h); then the
 // instance's placement and the view-projection. Tube rings and leaf corners carry their skeleton
 // vertex's data, so they move with it by its offset. Twig lines (the level of detail's stand-in for
-// sub-pixel tubes, gpu/tree_lod.h) also pass on how much of a pixel their tube would cover.
+// sub-pixel tubes, tree/tree_lod.h) also pass on how much of a pixel their tube would cover.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_spirv_intrinsics : require
 

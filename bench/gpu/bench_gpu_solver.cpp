@@ -15,7 +15,7 @@
 #include "gpu/gpu_solver.h"
 #include "sim/cpu_solver.h"
 #include "sim/model.h"
-#include "sim/scene.h"
+#include "scene/scene.h"
 
 namespace {
 
@@ -24,7 +24,7 @@ using namespace pond;
 // A square pond with a fixed shore, an island and a splash in the middle: every code path of a
 // substep (free, fixed, borders) runs, the waves keep every node busy.
 sim::WaterModel square_pond(int n, int substeps, sim::MathMode math) {
-  sim::Scene s;
+  scene::Scene s;
   s.grid.rows = s.grid.cols = n;
   s.physics.substeps = substeps;
   s.constraints.push_back({sim::NodeKind::fixed, n / 4, n / 4 + n / 16, n / 2, n / 2 + n / 16});

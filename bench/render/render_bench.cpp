@@ -9,9 +9,10 @@
 #include <memory>
 #include <string>
 
-#include "gpu/frame_loop.h"
-#include "gpu/render_target.h"
-#include "sim/scene.h"
+#include "gpu/gpu_solver.h"
+#include "render/frame_loop.h"
+#include "render/render_target.h"
+#include "scene/scene.h"
 
 namespace {
 
@@ -34,15 +35,18 @@ std::string rippled_scene(int n) {
 
 struct Fixture {
   gpu::Context ctx{gpu::ContextOptions{}};
-  std::map<int, std::unique_ptr<gpu::FrameLoop>> loops;
-  gpu::RenderTarget target{ctx, 1280, 720};
+  std::map<int, std::unique_ptr<sim::Session>> sessions;  // before the loops that draw them
+  std::map<int, std::unique_ptr<render::FrameLoop>> loops;
+  render::RenderTarget target{ctx, 1280, 720};
 
-  gpu::FrameLoop& loop(int n) {
+  render::FrameLoop& loop(int n) {
     auto& l = loops[n];
     if (!l) {
-      l = std::make_unique<gpu::FrameLoop>(ctx, sim::parse_scene(rippled_scene(n), "bench"), gpu::SolverChoice{},
-                                           gpu::RenderTarget::kFormat);
-      l->advance(200);
+      auto& s = sessions[n];
+      s = std::make_unique<sim::Session>(scene::parse_scene(rippled_scene(n), "bench"), sim::SolverChoice{},
+                                         gpu::gpu_solver_factory(ctx));
+      s->advance(200);
+      l = std::make_unique<render::FrameLoop>(ctx, *s, render::RenderTarget::kFormat);
     }
     return *l;
   }
@@ -56,15 +60,15 @@ Fixture& fixture() {
 void BM_Frame(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const double tolerance = static_cast<double>(state.range(1));
-  gpu::FrameLoop& loop = fixture().loop(n);
-  gpu::FrameView view;
+  render::FrameLoop& loop = fixture().loop(n);
+  render::FrameView view;
   view.camera = loop.default_camera(1280, 720);
   view.lod_tolerance_px = tolerance;
   view.steps = 1;
   view.wait = true;
   double sim_ms = 0, lod_ms = 0, draw_ms = 0, tris = 0, full = 0;
   for (auto _ : state) {
-    const gpu::FrameStats s = loop.frame(fixture().target.frame_target(), view);
+    const render::FrameStats s = loop.frame(fixture().target.frame_target(), view);
     sim_ms += s.simulate_ms;
     lod_ms += s.lod_ms;
     draw_ms += s.draw_ms;

@@ -11,10 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "gpu/frame_loop.h"
-#include "gpu/render_target.h"
-#include "gpu/tree_drawable.h"
-#include "sim/scene.h"
+#include "gpu/gpu_solver.h"
+#include "render/frame_loop.h"
+#include "render/render_target.h"
+#include "render/tree_drawable.h"
+#include "scene/scene.h"
 
 namespace {
 
@@ -34,24 +35,26 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
   const int frames = argc > 1 ? std::atoi(argv[1]) : 200;
-  const sim::Scene scene = sim::load_scene(POND_SCENES_DIR "/demo_257.json");
+  const scene::Scene scene = scene::load_scene(POND_SCENES_DIR "/demo_257.json");
   const Config configs[] = {{"no tree", false, false, false},
                             {"tubes, every level (LOD off)", true, false, true},
                             {"LOD: tubes + twig lines", true, true, true},
                             {"LOD, no leaves", true, true, false}};
   gpu::Context ctx{gpu::ContextOptions{}};
-  const gpu::RenderTarget target(ctx, 1280, 720);
-  std::vector<std::unique_ptr<gpu::FrameLoop>> loops;
-  std::vector<std::unique_ptr<gpu::TreeDrawable>> trees;
+  const render::RenderTarget target(ctx, 1280, 720);
+  std::vector<std::unique_ptr<sim::Session>> sessions;  // before the loops that draw them
+  std::vector<std::unique_ptr<render::FrameLoop>> loops;
+  std::vector<std::unique_ptr<render::TreeDrawable>> trees;
   for (const Config& c : configs) {
-    loops.push_back(std::make_unique<gpu::FrameLoop>(ctx, scene, gpu::SolverChoice{}, gpu::RenderTarget::kFormat));
-    loops.back()->advance(200);
-    trees.push_back(std::make_unique<gpu::TreeDrawable>(ctx, *loops.back(), *scene.tree, scene.wind));
+    sessions.push_back(std::make_unique<sim::Session>(scene, sim::SolverChoice{}, gpu::gpu_solver_factory(ctx)));
+    sessions.back()->advance(200);
+    loops.push_back(std::make_unique<render::FrameLoop>(ctx, *sessions.back(), render::RenderTarget::kFormat));
+    trees.push_back(std::make_unique<render::TreeDrawable>(ctx, *loops.back(), *scene.tree, scene.wind));
     trees.back()->set_level_of_detail(c.level_of_detail);
     trees.back()->set_leaves(c.leaves);
     if (c.tree) loops.back()->add_drawable(*trees.back());
   }
-  gpu::FrameView view;
+  render::FrameView view;
   view.camera = loops.front()->default_camera(1280, 720);
   view.steps = 0;
   view.wait = true;

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "sim/cpu_solver.h"
-#include "sim/scene.h"
+#include "scene/scene.h"
 
 namespace {
 using namespace pond::sim;

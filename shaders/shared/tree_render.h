@@ -1,6 +1,6 @@
 // The wind tree renderer's CPU<->GPU layouts, declared once: included by shaders/tree.vert,
-// tree.frag, tree_pose.comp (the parity test) as GLSL and by src/gpu/tree_*.cpp as C++, where the
-// static_asserts below pin sizes and offsets.
+// tree.frag, tree_pose.comp (the parity test) as GLSL and by src/tree/tree_mesh.cpp and
+// src/render/tree_*.cpp as C++, where the static_asserts below pin sizes and offsets.
 //
 // One descriptor set (set 0):
 //   POND_TREE_BINDING_FRAME     uniform TreeRenderFrame (std140), per frame slot
@@ -81,7 +81,7 @@ struct TreeRenderFrame {
 struct TreeInstance {
   vec4 base;           // xyz: the trunk's foot (world); w: world units per tree unit
   TreeWindFrame wind;  // this instance's wind, q, time (with its phase) and bend mode
-  vec4 pruning;        // the level of detail's pruning of this draw (gpu/tree_lod.h): x: leaves'
+  vec4 pruning;        // the level of detail's pruning of this draw (tree/tree_lod.h): x: leaves'
                        // size scale (about their centres); y: twig lines' width scale; z: the
                        // mesh's longest leaf (tree units: unpacks the centres); w: 0
 };

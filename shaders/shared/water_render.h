@@ -1,5 +1,5 @@
 // The water renderer's CPU<->GPU layouts, declared once: included by shaders/water.vert,
-// water.frag, water_wire.frag, land.vert, land.frag as GLSL and by src/gpu/render_layout.h as C++
+// water.frag, water_wire.frag, land.vert, land.frag as GLSL and by src/render/render_layout.h as C++
 // (which pins sizes and offsets with static_asserts).
 //
 // Bindings of the one descriptor set every pass of the water renderer uses (set 0):
@@ -54,7 +54,7 @@ struct mat4 {
 #define POND_WATER_FLAT_HORIZON 7  // the sky's colour at the horizon
 #define POND_WATER_FLAT_ABSORB 8   // the water's absorption per world unit (rgb)
 
-// Fragment-shader specialization constant (bool), set by gpu/graphics_pipeline.cpp from the colour
+// Fragment-shader specialization constant (bool), set by render/graphics_pipeline.cpp from the colour
 // format: true when the target is UNORM and the shader must encode sRGB itself.
 #define POND_SPEC_ENCODE_SRGB 0
 

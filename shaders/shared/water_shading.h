@@ -22,7 +22,7 @@ layout(constant_id = POND_SPEC_ENCODE_SRGB) const bool kEncodeSrgb = false;
 // [0.0031308, 1]: within 0.2 of an 8-bit level of the exact curve, as close as llvmpipe's own
 // encoding on an sRGB store (0.17), and a sqrt and four multiply-adds instead of pow's exp and log.
 // (pond draws into UNORM targets: on llvmpipe the format's encoding on store costs more,
-// gpu/color_format.h.)
+// render/color_format.h.)
 vec3 encode_target(vec3 c) {
   if (kEncodeSrgb) {
     const vec3 lo = c * 12.92;

@@ -10,9 +10,9 @@
 #include "core/errors.h"
 #include "core/npy.h"
 #include "core/output_file.h"
-#include "sim/cpu_solver.h"
+#include "scene/scene.h"
 #include "sim/diagnostics.h"
-#include "sim/scene.h"
+#include "sim/session.h"
 
 namespace pond::app {
 namespace {
@@ -23,9 +23,9 @@ struct SimulateOptions {
   int threads = 0;
 };
 
-// Advances the CPU solver, drawing a progress bar on a terminal once the run passes one second, and
+// Advances the session, drawing a progress bar on a terminal once the run passes one second, and
 // stops between chunks when SIGINT or SIGTERM arrived (app/interrupt.h).
-void advance_with_progress(sim::CpuSolver& solver, std::int64_t steps) {
+void advance_with_progress(sim::Session& session, std::int64_t steps) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
   const bool tty = ::isatty(2);
@@ -34,7 +34,7 @@ void advance_with_progress(sim::CpuSolver& solver, std::int64_t steps) {
   while (done < steps) {
     const std::int64_t n = std::min(chunk, steps - done);
     const auto t0 = clock::now();
-    solver.advance(n);
+    session.advance(n);
     done += n;
     const double chunk_s = std::chrono::duration<double>(clock::now() - t0).count();
     if (chunk_s < 0.05) chunk *= 2;  // keep checks about 20 per second
@@ -57,25 +57,16 @@ int run_simulate(const SimulateOptions& o) {
   const sim::MathMode math = o.math == "fast" ? sim::MathMode::fast : sim::MathMode::exact;
   check_output_path(o.out);
   const InterruptScope interrupt_scope;  // SIGINT/SIGTERM stop the run before anything is written
-  const sim::Scene scene = sim::load_scene(o.scene);
-  const sim::WaterModel model = sim::build_model(scene, math);
+  sim::SolverChoice choice{.gpu = o.solver == "gpu", .threads = o.threads, .math = math};
+  if (!choice.gpu) choice.backend = o.solver == "auto" ? sim::best_backend() : *sim::parse_backend(o.solver);
+  sim::Session session(scene::load_scene(o.scene), choice, headless_gpu_solvers(GpuRunOptions{o.device, false}));
 
   const auto t0 = std::chrono::steady_clock::now();
-  sim::WaterState state;
-  std::string engine;
-  if (o.solver == "gpu") {
-    state = simulate_on_gpu(model, o.steps, GpuRunOptions{o.device, false});
-    engine = "gpu";
-  } else {
-    const sim::Backend backend =
-        o.solver == "auto" ? sim::best_backend() : *sim::parse_backend(o.solver);
-    sim::CpuSolver solver(model, backend, o.threads);
-    advance_with_progress(solver, o.steps);
-    state = solver.state();
-    engine = std::string(sim::backend_name(backend)) + " x " + std::to_string(solver.threads()) +
-             (solver.threads() == 1 ? " thread" : " threads");
-  }
+  advance_with_progress(session, o.steps);
+  const sim::WaterState state = session.finite_state();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const sim::WaterModel& model = session.model();
+  const std::string engine = session.solver().engine();
 
   throw_if_interrupted("after the last step");
   const std::vector<float> world = sim::to_world_interleaved(state, model);

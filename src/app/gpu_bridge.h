@@ -1,11 +1,9 @@
 #pragma once
 // The one door from the CPU-only command code to the GPU solver, so `pond simulate` builds the same
 // in Vulkan and in IA-32 builds (where gpu_bridge_none.cpp says the GPU is not in this build).
-#include <cstdint>
 #include <string>
 
-#include "sim/model.h"
-#include "sim/state.h"
+#include "sim/session.h"
 
 namespace pond::app {
 
@@ -14,8 +12,7 @@ struct GpuRunOptions {
   bool validation = false;
 };
 
-// Runs `steps` steps of `model` from rest on the GPU and reads the state back.
-sim::WaterState simulate_on_gpu(const sim::WaterModel& model, std::int64_t steps,
-                                const GpuRunOptions& options);
+// GPU solvers for a session, on a headless Vulkan device the factory opens on first use and keeps.
+sim::GpuSolverFactory headless_gpu_solvers(const GpuRunOptions& options);
 
 }  // namespace pond::app

@@ -3,8 +3,10 @@
 
 namespace pond::app {
 
-sim::WaterState simulate_on_gpu(const sim::WaterModel&, std::int64_t, const GpuRunOptions&) {
-  throw InputError("--solver gpu: this build has no GPU solver (IA-32 builds are CPU-only)");
+sim::GpuSolverFactory headless_gpu_solvers(const GpuRunOptions&) {
+  return [](const sim::WaterModel&) -> std::unique_ptr<sim::Solver> {
+    throw InputError("--solver gpu: this build has no GPU solver (IA-32 builds are CPU-only)");
+  };
 }
 
 }  // namespace pond::app

@@ -1,38 +1,39 @@
 // `pond simulate --solver gpu`: the GPU solver behind the one door the CPU-only command code knows.
-#include <algorithm>
-#include <cmath>
-#include <string>
+#include <memory>
 
 #include "app/gpu_bridge.h"
-#include "app/interrupt.h"
-#include "core/errors.h"
 #include "gpu/context.h"
-#include "gpu/headless.h"
 #include "gpu/gpu_solver.h"
+#include "gpu/headless.h"
 
 namespace pond::app {
+namespace {
 
-sim::WaterState simulate_on_gpu(const sim::WaterModel& model, std::int64_t steps, const GpuRunOptions& options) {
-  const gpu::Context ctx(gpu::headless_options(options.device, options.validation));
-  gpu::GpuSolver solver(ctx, model);
-  // In chunks, so that SIGINT/SIGTERM (app/interrupt.h) stop the run within a chunk's time.
-  constexpr std::int64_t kChunk = 256;
-  for (std::int64_t done = 0; done < steps;) {
-    const std::int64_t n = std::min(kChunk, steps - done);
-    solver.advance(n);
-    done += n;
-    throw_if_interrupted("after step " + std::to_string(done) + " of " + std::to_string(steps));
-  }
-  sim::WaterState state = solver.read_state();
-  // The CPU solver refuses a run that blows up at the step it happens; the GPU does not stop to
-  // check, so it refuses it at the end.
-  for (std::size_t n = 0; n < state.nodes(); ++n)
-    if (!std::isfinite(state.vx[n]) || !std::isfinite(state.vy[n]) || !std::isfinite(state.vz[n]))
-      throw InputError("the water blew up on the GPU (non-finite velocity at node row " +
-                       std::to_string(n / static_cast<std::size_t>(model.cols)) + ", col " +
-                       std::to_string(n % static_cast<std::size_t>(model.cols)) +
-                       "); lower physics.dt, raise physics.substeps or soften the perturbations");
-  return state;
+// A GpuSolver together with the context it runs on (a headless run has no other owner for it).
+class HeadlessGpuSolver final : public sim::Solver {
+ public:
+  HeadlessGpuSolver(std::shared_ptr<const gpu::Context> ctx, const sim::WaterModel& model)
+      : ctx_(std::move(ctx)), solver_(*ctx_, model) {}
+  const sim::WaterModel& model() const override { return solver_.model(); }
+  std::int64_t steps_done() const override { return solver_.steps_done(); }
+  void advance(std::int64_t steps) override { solver_.advance(steps); }
+  sim::WaterState read_state() const override { return solver_.read_state(); }
+  void set_state(const sim::WaterState& state, std::int64_t steps) override { solver_.set_state(state, steps); }
+  std::string engine() const override { return solver_.engine(); }
+
+ private:
+  std::shared_ptr<const gpu::Context> ctx_;  // declared first: outlives the solver
+  gpu::GpuSolver solver_;
+};
+
+}  // namespace
+
+sim::GpuSolverFactory headless_gpu_solvers(const GpuRunOptions& options) {
+  return [options, ctx = std::shared_ptr<const gpu::Context>()](const sim::WaterModel& model) mutable
+             -> std::unique_ptr<sim::Solver> {
+    if (!ctx) ctx = std::make_shared<const gpu::Context>(gpu::headless_options(options.device, options.validation));
+    return std::make_unique<HeadlessGpuSolver>(ctx, model);
+  };
 }
 
 }  // namespace pond::app

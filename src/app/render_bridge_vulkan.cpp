@@ -1,4 +1,4 @@
-// `pond render`: the frame loop (gpu/frame_loop.h) drawing into an offscreen image, read back and
+// `pond render`: the frame loop (render/frame_loop.h) drawing into an offscreen image, read back and
 // written as a PNG; median milliseconds per frame by part.
 #include <algorithm>
 #include <cinttypes>
@@ -10,12 +10,13 @@
 #include "app/render_bridge.h"
 #include "core/errors.h"
 #include "gpu/context.h"
-#include "gpu/frame_loop.h"
-#include "gpu/png.h"
-#include "gpu/render_target.h"
-#include "gpu/tree_drawable.h"
-#include "gpu/tree_ripples.h"
-#include "sim/scene.h"
+#include "render/frame_loop.h"
+#include "core/png.h"
+#include "render/render_target.h"
+#include "render/tree_drawable.h"
+#include "gpu/gpu_solver.h"
+#include "sim/session.h"
+#include "scene/scene.h"
 
 namespace pond::app {
 namespace {
@@ -26,35 +27,27 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-gpu::SolverChoice solver_choice(const std::string& name) {
-  gpu::SolverChoice c;
+sim::SolverChoice solver_choice(const std::string& name) {
+  sim::SolverChoice c;
   c.gpu = name == "gpu";
   if (!c.gpu) c.backend = *sim::parse_backend(name);
   if (!c.gpu && !sim::cpu_supports(c.backend)) throw InputError("--solver " + name + ": this CPU does not support it");
   return c;
 }
 
-void check_finite(const sim::WaterState& s, const sim::WaterModel& model) {
-  for (std::size_t n = 0; n < s.nodes(); ++n)
-    if (!std::isfinite(s.uy[n]) || !std::isfinite(s.vy[n]))
-      throw InputError("the water blew up (non-finite state at node row " + std::to_string(n / model.cols) + ", col " +
-                       std::to_string(n % model.cols) + "); lower physics.dt, raise physics.substeps or soften the perturbations");
-}
-
 }  // namespace
 
 int run_render(const RenderOptions& o) {
-  sim::Scene scene = sim::load_scene(o.scene);
-  // Gusts that ripple the water are deterministic scene perturbations over the steps to be run.
-  gpu::add_wind_ripples(scene, o.steps + static_cast<std::int64_t>(o.frames) * scene.view.steps_per_frame);
-  const gpu::SolverChoice solver = solver_choice(o.solver);
+  const scene::Scene scene = scene::load_scene(o.scene);
+  const sim::SolverChoice solver = solver_choice(o.solver);
   const gpu::Context ctx(gpu::ContextOptions{.device = o.device, .validation = o.validation});
-  gpu::check_target_size(ctx, o.width, o.height, gpu::RenderTarget::kFormat);
+  render::check_target_size(ctx, o.width, o.height, render::RenderTarget::kFormat);
 
-  gpu::FrameLoop loop(ctx, scene, solver, gpu::RenderTarget::kFormat);
-  std::optional<gpu::TreeDrawable> trees;  // the scene's wind trees, in the water's pass
+  sim::Session session(scene, solver, gpu::gpu_solver_factory(ctx));
+  render::FrameLoop loop(ctx, session, render::RenderTarget::kFormat);
+  std::optional<render::TreeDrawable> trees;  // the scene's wind trees, in the water's pass
   if (scene.tree) loop.add_drawable(trees.emplace(ctx, loop, *scene.tree, scene.wind));
-  gpu::FrameView view;
+  render::FrameView view;
   view.camera = loop.default_camera(o.width, o.height);
   if (o.eye) view.camera.eye = *o.eye;
   if (o.target) view.camera.target = *o.target;
@@ -65,10 +58,10 @@ int run_render(const RenderOptions& o) {
   view.wait = true;  // time each frame whole, and read the last one back
   lod::validate(view.camera, view.lod_tolerance_px > 0 ? view.lod_tolerance_px : 1.0);
 
-  const gpu::RenderTarget target(ctx, o.width, o.height);
-  loop.advance(o.steps);
+  const render::RenderTarget target(ctx, o.width, o.height);
+  session.advance(o.steps);
   std::vector<double> total, simulate, lod, draw;
-  gpu::FrameStats last;
+  render::FrameStats last;
   for (int f = 0; f < o.frames; ++f) {
     last = loop.frame(target.frame_target(), view);
     simulate.push_back(last.simulate_ms);
@@ -76,14 +69,14 @@ int run_render(const RenderOptions& o) {
     draw.push_back(last.draw_ms);
     total.push_back(last.simulate_ms + last.lod_ms + last.draw_ms);
   }
-  check_finite(loop.state(), loop.model());
+  session.finite_state();
   const std::vector<std::uint8_t> rgba = target.read_rgba();
   if (o.validation && !ctx.validation_log().messages().empty())
     throw RuntimeError(std::to_string(ctx.validation_log().messages().size()) +
                        " Vulkan validation message(s), the first: " + ctx.validation_log().messages().front());
-  gpu::write_png(o.out, o.width, o.height, rgba);
+  pond::write_png(o.out, o.width, o.height, rgba);
 
-  const sim::WaterModel& m = loop.model();
+  const sim::WaterModel& m = session.model();
   char lod_text[64] = "full mesh";
   if (view.lod_tolerance_px > 0) std::snprintf(lod_text, sizeof lod_text, "LOD %g px", view.lod_tolerance_px);
   std::printf("rendered %d frame%s of a %d x %d grid at %dx%d on %s, %s solver, %" PRId64 " step%s per frame, %s\n",
@@ -95,13 +88,13 @@ int run_render(const RenderOptions& o) {
               last.full_triangles ? 100.0 * static_cast<double>(last.triangles) / static_cast<double>(last.full_triangles) : 0.0,
               last.land_triangles);
   if (trees) {
-    const gpu::TreeDrawStats t = trees->stats();
+    const render::TreeDrawStats t = trees->stats();
     std::printf("tree: %zu instance%s of %zu vertices (%s), wind %g at %g deg, %g s of wind\n", t.instances,
                 t.instances == 1 ? "" : "s", t.skeleton_vertices,
-                scene.tree->draw == sim::TreeDraw::lines ? "lines" : "tubes", scene.wind.strength,
+                scene.tree->draw == tree::TreeDraw::lines ? "lines" : "tubes", scene.wind.strength,
                 scene.wind.direction_deg, trees->wind_time());
   }
-  std::printf("steps done %" PRId64 "\nwrote %s\n", loop.steps_done(), o.out.c_str());
+  std::printf("steps done %" PRId64 "\nwrote %s\n", session.steps_done(), o.out.c_str());
   return 0;
 }
 

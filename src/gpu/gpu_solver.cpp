@@ -382,4 +382,8 @@ sim::Normals GpuSolver::normals() const {
   return n;
 }
 
+sim::GpuSolverFactory gpu_solver_factory(const Context& ctx) {
+  return [&ctx](const sim::WaterModel& model) { return std::make_unique<GpuSolver>(ctx, model); };
+}
+
 }  // namespace pond::gpu

@@ -10,6 +10,7 @@
 //  - Normals are computed on the GPU into normals_buffer(), the buffer the water vertex shader
 //    reads (one vec4 per node).
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "gpu/buffer.h"
@@ -17,11 +18,13 @@
 #include "gpu/context.h"
 #include "sim/model.h"
 #include "sim/normals.h"
+#include "sim/session.h"
+#include "sim/solver.h"
 #include "sim/state.h"
 
 namespace pond::gpu {
 
-class GpuSolver {
+class GpuSolver final : public sim::Solver {
  public:
   // How the step shader stores: 64-bit stores where the device has shaderInt64 (faster on
   // llvmpipe, the same bits), or vec4 stores; tests force the second to cover both.
@@ -33,16 +36,17 @@ class GpuSolver {
   GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores = Stores::best,
             StepPath path = StepPath::quad);
 
-  const sim::WaterModel& model() const { return model_; }
-  std::int64_t steps_done() const { return step_; }
+  const sim::WaterModel& model() const override { return model_; }
+  std::int64_t steps_done() const override { return step_; }
+  std::string engine() const override { return "gpu"; }
 
   // Advances `steps` steps (recorded in command buffers of at most kMaxDispatchesPerSubmit
   // dispatches, each submitted and waited for).
-  void advance(std::int64_t steps);
+  void advance(std::int64_t steps) override;
   // Replaces the state and the step counter (the bisect mode of the parity suite uses it).
-  void set_state(const sim::WaterState& state, std::int64_t steps_done);
+  void set_state(const sim::WaterState& state, std::int64_t steps_done) override;
   // Copies the current state back (waits for the GPU).
-  sim::WaterState read_state() const;
+  sim::WaterState read_state() const override;
 
   // Computes the normals of the current state into normals_buffer().
   void compute_normals();
@@ -102,5 +106,8 @@ class GpuSolver {
   std::size_t next_perturbation_ = 0;
   std::int64_t step_ = 0;
 };
+
+// GpuSolvers on `ctx` for a session (sim/session.h); the context must outlive the session.
+sim::GpuSolverFactory gpu_solver_factory(const Context& ctx);
 
 }  // namespace pond::gpu

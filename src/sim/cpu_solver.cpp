@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "sim/diagnostics.h"
 #include "sim/perturbation.h"
 
 namespace pond::sim {
@@ -28,8 +29,8 @@ CpuSolver::CpuSolver(WaterModel model, Backend backend, int threads)
   next_ = WaterState(model_.nodes());
 }
 
-void CpuSolver::set_state(WaterState state, std::int64_t steps_done) {
-  cur_ = std::move(state);
+void CpuSolver::set_state(const WaterState& state, std::int64_t steps_done) {
+  cur_ = state;
   step_ = steps_done;
   next_perturbation_ = 0;
   while (next_perturbation_ < model_.perturbations.size() &&
@@ -49,16 +50,12 @@ void CpuSolver::substep() {
   });
   std::swap(cur_, next_);
   for (float c : checks_)
-    if (!std::isfinite(c)) {
-      std::size_t bad = 0;
-      while (bad < cur_.nodes() && std::isfinite(cur_.vx[bad]) && std::isfinite(cur_.vy[bad]) &&
-             std::isfinite(cur_.vz[bad]) && std::fabs(cur_.vy[bad]) < 1e30f)
-        ++bad;
-      const std::size_t n = std::min(bad, cur_.nodes() - 1);
-      throw InputError("step " + std::to_string(step_) + ": the water blew up (non-finite velocity at node row " +
-                       std::to_string(n / model_.cols) + ", col " + std::to_string(n % model_.cols) +
-                       "); lower physics.dt, raise physics.substeps or soften the perturbations");
-    }
+    if (!std::isfinite(c)) throw_blow_up(cur_, model_, "step " + std::to_string(step_) + ": ");
+}
+
+std::string CpuSolver::engine() const {
+  return std::string(backend_name(backend_)) + " x " + std::to_string(threads()) +
+         (threads() == 1 ? " thread" : " threads");
 }
 
 void CpuSolver::advance(std::int64_t steps) {

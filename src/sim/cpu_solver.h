@@ -10,25 +10,28 @@
 #include "sim/backends.h"
 #include "sim/model.h"
 #include "sim/row_threads.h"
+#include "sim/solver.h"
 #include "sim/state.h"
 
 namespace pond::sim {
 
-class CpuSolver {
+class CpuSolver final : public Solver {
  public:
   // threads <= 0: all cores. Throws InputError when the backend is unavailable.
   CpuSolver(WaterModel model, Backend backend, int threads = 0);
 
-  const WaterModel& model() const { return model_; }
+  const WaterModel& model() const override { return model_; }
   Backend backend() const { return backend_; }
   int threads() const { return threads_->size(); }
-  std::int64_t steps_done() const { return step_; }
+  std::int64_t steps_done() const override { return step_; }
   const WaterState& state() const { return cur_; }
+  WaterState read_state() const override { return cur_; }
   // Replaces the state and the step counter (e.g. when switching solvers).
-  void set_state(WaterState state, std::int64_t steps_done);
+  void set_state(const WaterState& state, std::int64_t steps_done) override;
+  std::string engine() const override;
 
   // Advances `steps` steps. Throws InputError naming the step when the state becomes non-finite.
-  void advance(std::int64_t steps);
+  void advance(std::int64_t steps) override;
 
  private:
   void substep();

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/errors.h"
+
 namespace pond::sim {
 
 Diagnostics diagnose(const WaterState& s, const WaterModel& m) {
@@ -49,6 +51,21 @@ std::uint64_t state_hash(std::span<const float> data) {
 std::uint64_t state_hash(const WaterState& s, const WaterModel& m) {
   const auto world = to_world_interleaved(s, m);
   return state_hash(world);
+}
+
+std::optional<std::size_t> first_blown_up_node(const WaterState& s) {
+  for (std::size_t n = 0; n < s.nodes(); ++n)
+    if (!std::isfinite(s.vx[n]) || !std::isfinite(s.vy[n]) || !std::isfinite(s.vz[n]) || !(std::fabs(s.vy[n]) < 1e30f))
+      return n;
+  return std::nullopt;
+}
+
+void throw_blow_up(const WaterState& state, const WaterModel& model, const std::string& prefix) {
+  const std::size_t n = first_blown_up_node(state).value_or(state.nodes() - 1);
+  const auto cols = static_cast<std::size_t>(model.cols);
+  throw InputError(prefix + "the water blew up (non-finite velocity at node row " + std::to_string(n / cols) +
+                   ", col " + std::to_string(n % cols) +
+                   "); lower physics.dt, raise physics.substeps or soften the perturbations");
 }
 
 }  // namespace pond::sim

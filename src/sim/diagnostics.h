@@ -4,7 +4,9 @@
 // displacement of a node from its rest position. And a 64-bit hash of the dumped state, the
 // "golden hash" every backend must reproduce.
 #include <cstdint>
+#include <optional>
 #include <span>
+#include <string>
 
 #include "sim/model.h"
 #include "sim/state.h"
@@ -23,5 +25,11 @@ Diagnostics diagnose(const WaterState& state, const WaterModel& model);
 // FNV-1a 64 over the bytes of the world-unit dump (to_world_interleaved).
 std::uint64_t state_hash(std::span<const float> world_interleaved);
 std::uint64_t state_hash(const WaterState& state, const WaterModel& model);
+
+// The blow-up check: the first node whose velocity is not finite (or beyond 1e30), if any.
+std::optional<std::size_t> first_blown_up_node(const WaterState& state);
+// Throws InputError: "<prefix>the water blew up (non-finite velocity at node row R, col C); ..."
+// naming the first such node (the last node when none is: the caller saw a non-finite sum).
+[[noreturn]] void throw_blow_up(const WaterState& state, const WaterModel& model, const std::string& prefix);
 
 }  // namespace pond::sim

@@ -50,7 +50,7 @@ PerturbationTable tabulate(const Perturbation& p, const WaterModel& m) {
   return t;
 }
 
-WaterModel build_model(const Scene& s, MathMode math) {
+WaterModel build_model(const WaterSpec& s, MathMode math) {
   WaterModel m;
   m.rows = s.grid.rows;
   m.cols = s.grid.cols;

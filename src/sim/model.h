@@ -1,12 +1,12 @@
 #pragma once
-// WaterModel: everything a solver (CPU or GPU) needs, derived once from a Scene. Solvers work in
+// WaterModel: everything a solver (CPU or GPU) needs, derived once from the WaterSpec of a scene. Solvers work in
 // grid units: positions divided by the spacing h, so node (i, j) rests at (j, 0, i) exactly and an
 // edge spring's rest length is 1. Hooke's law is homogeneous of degree one in length, so the motion
 // in grid units is the world motion divided by h; the state is scaled back on output.
 #include <cstdint>
 #include <vector>
 
-#include "sim/scene.h"
+#include "sim/water_spec.h"
 
 namespace pond::sim {
 
@@ -48,7 +48,7 @@ struct WaterModel {
   std::size_t nodes() const { return static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols); }
 };
 
-WaterModel build_model(const Scene& scene, MathMode math = MathMode::exact);
+WaterModel build_model(const WaterSpec& water, MathMode math = MathMode::exact);
 
 // A rest length L such that 1 - L * rsqrt(l2) is exactly 0 for the rest squared length l2, so that
 // a grid at rest stays at rest bit for bit (the approximate rsqrt is not exactly 1/sqrt).

@@ -7,16 +7,16 @@
 #include "core/errors.h"
 #include "sim/cpu_solver.h"
 #include "sim/model.h"
-#include "sim/scene.h"
+#include "scene/scene.h"
 #include "targets.h"
 
 namespace pond::fuzz {
 
 int scene(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  sim::Scene s;
+  scene::Scene s;
   try {
-    s = sim::parse_scene(text, "fuzz.json");
+    s = scene::parse_scene(text, "fuzz.json");
   } catch (const InputError& e) {
     if (std::string_view(e.what()).empty()) property_failed("InputError without a message");
     return 0;

@@ -24,7 +24,7 @@
 #include "sim/cpu_solver.h"
 #include "sim/diagnostics.h"
 #include "sim/normals.h"
-#include "sim/scene.h"
+#include "scene/scene.h"
 
 namespace pond::test {
 namespace {
@@ -138,7 +138,7 @@ std::int64_t scaled_steps(std::int64_t steps) {
 }
 
 sim::WaterModel model_of(const ParityCase& c, sim::MathMode math = sim::MathMode::exact) {
-  const sim::Scene scene = *c.json ? sim::parse_scene(c.json, c.name) : sim::load_scene("");
+  const scene::Scene scene = *c.json ? scene::parse_scene(c.json, c.name) : scene::load_scene("");
   return sim::build_model(scene, math);
 }
 
@@ -227,7 +227,7 @@ constexpr std::uint64_t kGoldenHash = 0x338fc857b8648871ull;
 using GoldenTest = GpuTest;
 
 TEST_F(GoldenTest, DefaultSceneAfter1000StepsHasTheCpuHash) {
-  const sim::WaterModel model = sim::build_model(sim::load_scene(""));
+  const sim::WaterModel model = sim::build_model(scene::load_scene(""));
   gpu::GpuSolver solver(ctx(), model);
   solver.advance(1000);
   const std::uint64_t hash = sim::state_hash(solver.read_state(), model);
@@ -327,7 +327,7 @@ TEST_F(GpuTest, AdvanceForFrameEqualsAdvanceThenNormals) {
 // evaluation, also at rest (the rest lengths are calibrated for the exact rsqrt), and the waves
 // carry and accumulate the differences over the 1,000 steps.
 TEST_F(GoldenTest, FastMathStaysWithinTheStatedBoundOfExact) {
-  const sim::WaterModel exact = sim::build_model(sim::load_scene(""), sim::MathMode::exact);
+  const sim::WaterModel exact = sim::build_model(scene::load_scene(""), sim::MathMode::exact);
   sim::WaterModel fast = exact;
   fast.math = sim::MathMode::fast;  // same constants: only the shader's math differs
   sim::CpuSolver cpu(exact, sim::Backend::scalar, 1);

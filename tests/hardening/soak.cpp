@@ -35,7 +35,7 @@
 #include "sim/cpu_solver.h"
 #include "sim/diagnostics.h"
 #include "sim/model.h"
-#include "sim/scene.h"
+#include "scene/scene.h"
 
 namespace {
 
@@ -61,8 +61,8 @@ long rss_kib() {
 }
 
 // The splashes: a small xorshift so the sequence is the same on every machine.
-pond::sim::Scene soak_scene(const Options& o) {
-  pond::sim::Scene s;
+pond::scene::Scene soak_scene(const Options& o) {
+  pond::scene::Scene s;
   s.name = "soak";
   s.grid.rows = s.grid.cols = o.size;
   s.border = pond::sim::NodeKind::fixed;
@@ -124,7 +124,7 @@ bool parse_args(int argc, char** argv, Options& o) {
 
 int run(const Options& o) {
   using clock = std::chrono::steady_clock;
-  const pond::sim::Scene scene = soak_scene(o);
+  const pond::scene::Scene scene = soak_scene(o);
   const pond::sim::WaterModel model = pond::sim::build_model(scene, pond::sim::MathMode::exact);
   pond::sim::CpuSolver cpu(model, pond::sim::best_backend(), o.threads);
   std::optional<pond::gpu::Context> ctx;

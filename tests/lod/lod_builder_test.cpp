@@ -12,7 +12,7 @@
 #include "lod/mesh_checker.h"
 #include "lod/rippled_states.h"
 #include "sim/cpu_solver.h"
-#include "sim/scene.h"
+#include "scene/scene.h"
 
 namespace pond::lod_test {
 namespace {
@@ -176,7 +176,7 @@ TEST(LodBuilder, ReadsStructureOfArraysLikeInterleaved) {
 // documented way, (col + ux) * h, uy * h, (row + uz) * h; 33 x 21 also runs the 4-wide path's
 // scalar tail (21 = 5 x 4 + 1). A non-finite displacement is refused like a position.
 TEST(LodBuilder, ReadsGridDisplacementsLikeWorldPositions) {
-  const sim::Scene scene = sim::parse_scene(
+  const scene::Scene scene = scene::parse_scene(
       R"({"grid": {"rows": 33, "cols": 21, "spacing": 0.5},
           "perturbations": [{"step": 0, "row": 16, "col": 10, "radius": 2.0, "amplitude": 2.0},
                             {"step": 5, "row": 8, "col": 4.5, "radius": 1.5, "amplitude": 1.0,
@@ -220,7 +220,7 @@ TEST(LodBuilder, ReadsGridDisplacementsLikeWorldPositions) {
 // never read. Covers the displacement copy (4-wide and tail) and the plain SoA and interleaved
 // copies (one run per row).
 TEST(LodBuilder, ReadsPaddedRowsLikeCompactOnes) {
-  const sim::Scene scene = sim::parse_scene(
+  const scene::Scene scene = scene::parse_scene(
       R"({"grid": {"rows": 19, "cols": 21, "spacing": 0.5},
           "perturbations": [{"step": 0, "row": 9, "col": 10, "radius": 2.0, "amplitude": 2.0}]})",
       "padded");
@@ -299,7 +299,7 @@ TEST(LodBuilder, RejectsBadInput) {
 // The paper's figure 8: its 50 x 50 pond (the default scene: a splash beside an island) rippling,
 // seen obliquely from above. Paper: 4802 triangles full, 2431 simplified.
 TEST(LodBuilder, PapersFigureEightCase) {
-  sim::CpuSolver solver(sim::build_model(sim::load_scene("")), sim::Backend::scalar, 1);
+  sim::CpuSolver solver(sim::build_model(scene::load_scene("")), sim::Backend::scalar, 1);
   solver.advance(60);
   const std::vector<float> s = sim::to_world_interleaved(solver.state(), solver.model());
   const CheckCamera cam{{24.5, 28, -22}, {24.5, 0, 26}, 60, 1024, 768};

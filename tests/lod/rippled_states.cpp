@@ -4,13 +4,13 @@
 #include <random>
 
 #include "sim/cpu_solver.h"
-#include "sim/scene.h"
+#include "scene/scene.h"
 
 namespace pond::lod_test {
 
 std::vector<float> simulated_pond(int rows, int cols, int drops, int per_step, int settle,
                                   std::uint32_t seed, double amplitude) {
-  sim::Scene scene;
+  scene::Scene scene;
   scene.grid = {rows, cols, 1.0};
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> row(1, rows - 2), col(1, cols - 2), amp(0.3 * amplitude, amplitude),

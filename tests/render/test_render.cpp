@@ -11,13 +11,14 @@
 #include <string>
 
 #include "core/errors.h"
-#include "gpu/frame_loop.h"
-#include "gpu/png.h"
-#include "gpu/render_target.h"
+#include "drawn_session.h"
+#include "render/frame_loop.h"
+#include "core/png.h"
+#include "render/render_target.h"
 #include "gpu_fixture.h"
 #include "golden.h"
 #include "image_compare.h"
-#include "sim/scene.h"
+#include "scene/scene.h"
 
 namespace pond::test {
 namespace {
@@ -32,9 +33,9 @@ struct RenderCase {
   std::int64_t steps = 0;
   double tolerance = 1.0;
   bool wireframe = false;
-  gpu::SolverChoice solver{};
+  sim::SolverChoice solver{};
   std::string json{};  // empty: the embedded default scene
-  vk::Format format = gpu::RenderTarget::kFormat;
+  vk::Format format = render::RenderTarget::kFormat;
 };
 
 // The scenes: the embedded default (island + splash), and small variations of it.
@@ -57,16 +58,17 @@ const char* kRippled129 = R"({"grid": {"rows": 129, "cols": 129},
 class RenderTest : public GpuTest {
  protected:
   Rgba render(const RenderCase& c) {
-    const sim::Scene scene = sim::parse_scene(c.json.empty() ? std::string(sim::default_scene_json()) : c.json, "test");
-    gpu::FrameLoop loop(ctx(), scene, c.solver, c.format);
-    return draw(loop, c);
+    const scene::Scene scene = scene::parse_scene(c.json.empty() ? std::string(scene::default_scene_json()) : c.json, "test");
+    DrawnSession d(ctx(), scene, c.solver, c.format);
+    return draw(d, c);
   }
 
-  // Advances an existing loop by c.steps and draws one frame of it (c's view settings and format).
-  Rgba draw(gpu::FrameLoop& loop, const RenderCase& c) {
-    const gpu::RenderTarget target(ctx(), kWidth, kHeight, c.format);
-    loop.advance(c.steps);
-    gpu::FrameView view;
+  // Advances an existing session by c.steps and draws one frame of it (c's view settings and format).
+  Rgba draw(DrawnSession& d, const RenderCase& c) {
+    render::FrameLoop& loop = d.loop;
+    const render::RenderTarget target(ctx(), kWidth, kHeight, c.format);
+    d.session.advance(c.steps);
+    render::FrameView view;
     view.camera = loop.default_camera(kWidth, kHeight);
     view.lod_tolerance_px = c.tolerance;
     view.wireframe = c.wireframe;
@@ -76,7 +78,7 @@ class RenderTest : public GpuTest {
     return Rgba{kWidth, kHeight, target.read_rgba()};
   }
 
-  gpu::FrameStats last_;
+  render::FrameStats last_;
 };
 
 TEST_F(RenderTest, PondAtRest) { expect_golden("rest", render({.steps = 0})); }
@@ -97,7 +99,7 @@ TEST_F(RenderTest, AllVerticalWavesPassThrough) {
 // wireframe: its alpha blend mixes encoded values in a UNORM target.)
 TEST_F(RenderTest, SrgbTargetShowsTheSamePictureAsUnorm) {
   const RenderCase c{.steps = 24};
-  ASSERT_FALSE(gpu::is_srgb(c.format));
+  ASSERT_FALSE(render::is_srgb(c.format));
   const Rgba unorm = render(c);
   RenderCase srgb = c;
   srgb.format = vk::Format::eR8G8B8A8Srgb;
@@ -134,48 +136,50 @@ TEST_F(RenderTest, CpuSolverDrawsTheSamePictureAndSwitchingCarriesTheState) {
   const Rgba cpu_img = render({.steps = 24, .solver = {.gpu = false}});
   EXPECT_EQ(compare(gpu_img, cpu_img, 0).share, 0.0);
 
-  const sim::Scene scene = sim::load_scene("");
-  gpu::FrameLoop loop(ctx(), scene, {.gpu = false}, gpu::RenderTarget::kFormat);
-  const gpu::RenderTarget target(ctx(), kWidth, kHeight);
-  gpu::FrameView view;
+  const scene::Scene scene = scene::load_scene("");
+  DrawnSession d(ctx(), scene, {.gpu = false}, render::RenderTarget::kFormat);
+  render::FrameLoop& loop = d.loop;
+  const render::RenderTarget target(ctx(), kWidth, kHeight);
+  render::FrameView view;
   view.camera = loop.default_camera(kWidth, kHeight);
   view.steps = 4;
   view.wait = true;
-  loop.advance(8);
+  d.session.advance(8);
   loop.frame(target.frame_target(), view);   // 12 steps on the CPU
-  loop.set_solver({.gpu = true});
+  d.session.set_solver({.gpu = true});
   loop.frame(target.frame_target(), view);   // 16 on the GPU
-  loop.set_solver({.gpu = false});
-  loop.advance(4);
+  d.session.set_solver({.gpu = false});
+  d.session.advance(4);
   loop.frame(target.frame_target(), view);   // 24 on the CPU
-  EXPECT_EQ(loop.steps_done(), 24);
+  EXPECT_EQ(d.session.steps_done(), 24);
   EXPECT_EQ(compare(gpu_img, Rgba{kWidth, kHeight, target.read_rgba()}, 0).share, 0.0);
 }
 
 // A splash added at run time is the scene's perturbation applied now: same picture.
-// The demo's light control: set_sun() on a running loop draws what a scene with that sun draws, and
-// a zero or non-finite direction is refused without changing the light.
+// The demo's light control: set_sun() on a running loop draws what a scene with that sun draws; a
+// zero or non-finite direction is refused by the scene file's own check, which the demo calls first.
 TEST_F(RenderTest, SetSunEqualsTheSceneLightAndRefusesZero) {
   const std::array<double, 3> low_sun{0.8, 0.25, 0.3};
-  sim::Scene scene = sim::load_scene("");
+  scene::Scene scene = scene::load_scene("");
   scene.lighting.sun = low_sun;
-  gpu::FrameLoop scene_lit(ctx(), scene, {}, gpu::RenderTarget::kFormat);
+  DrawnSession scene_lit(ctx(), scene, {}, render::RenderTarget::kFormat);
   const Rgba expected = draw(scene_lit, {.steps = 24});
   EXPECT_GT(compare(render({.steps = 24}), expected, 8).share, 0.05);  // the light visibly moved
 
-  gpu::FrameLoop loop(ctx(), sim::load_scene(""), {}, gpu::RenderTarget::kFormat);
-  loop.set_sun(low_sun);
-  EXPECT_THROW(loop.set_sun({0.0, 0.0, 0.0}), InputError);
-  EXPECT_THROW(loop.set_sun({std::nan(""), 1.0, 0.0}), InputError);
-  EXPECT_EQ(compare(expected, draw(loop, {.steps = 24}), 0).share, 0.0);
+  DrawnSession d(ctx(), scene::load_scene(""), {}, render::RenderTarget::kFormat);
+  EXPECT_NO_THROW(scene::check_sun(low_sun));
+  d.loop.set_sun(low_sun);
+  EXPECT_THROW(scene::check_sun({0.0, 0.0, 0.0}), InputError);
+  EXPECT_THROW(scene::check_sun({std::nan(""), 1.0, 0.0}), InputError);
+  EXPECT_EQ(compare(expected, draw(d, {.steps = 24}), 0).share, 0.0);
 }
 
 TEST_F(RenderTest, RunTimeSplashEqualsTheScenePerturbation) {
   const char* no_splash = R"({"constraints": [{"kind": "fixed", "rows": [30, 35], "cols": [30, 36]}]})";
-  const sim::Scene scene = sim::parse_scene(no_splash, "test");
-  gpu::FrameLoop loop(ctx(), scene, {}, gpu::RenderTarget::kFormat);
-  loop.splash(sim::load_scene("").perturbations.at(0));
-  EXPECT_EQ(compare(render({.steps = 24}), draw(loop, {.steps = 24}), 0).share, 0.0);
+  const scene::Scene scene = scene::parse_scene(no_splash, "test");
+  DrawnSession d(ctx(), scene, {}, render::RenderTarget::kFormat);
+  d.session.splash(scene::load_scene("").perturbations.at(0));
+  EXPECT_EQ(compare(render({.steps = 24}), draw(d, {.steps = 24}), 0).share, 0.0);
 }
 
 }  // namespace

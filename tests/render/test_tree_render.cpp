@@ -17,17 +17,18 @@
 
 #include "gpu/buffer.h"
 #include "gpu/compute_pipeline.h"
-#include "gpu/frame_loop.h"
-#include "gpu/png.h"
-#include "gpu/render_target.h"
-#include "gpu/tree_drawable.h"
-#include "gpu/tree_mesh.h"
-#include "gpu/tree_ripples.h"
+#include "drawn_session.h"
+#include "render/frame_loop.h"
+#include "core/png.h"
+#include "render/render_target.h"
+#include "render/tree_drawable.h"
+#include "tree/tree_mesh.h"
+#include "sim/wind_ripples.h"
 #include "gpu_fixture.h"
 #include "golden.h"
 #include "image_compare.h"
 #include "shared/tree_render.h"
-#include "sim/scene.h"
+#include "scene/scene.h"
 #include "tree/bend.h"
 #include "tree/noise.h"
 
@@ -157,19 +158,20 @@ std::string tree_scene(const std::string& tree, const std::string& wind) {
 class TreeRenderTest : public GpuTest {
  protected:
   // Renders the scene after `steps` steps (the wind clock: steps * dt simulated seconds).
-  Rgba render(const std::string& json, std::int64_t steps, gpu::FrameStats* stats = nullptr, int frames = 1) {
-    const sim::Scene scene = sim::parse_scene(json, "test");
-    gpu::FrameLoop loop(ctx(), scene, {}, gpu::RenderTarget::kFormat);
-    gpu::TreeDrawable tree(ctx(), loop, *scene.tree, scene.wind);
+  Rgba render(const std::string& json, std::int64_t steps, render::FrameStats* stats = nullptr, int frames = 1) {
+    const scene::Scene scene = scene::parse_scene(json, "test");
+    DrawnSession drawn(ctx(), scene, {}, render::RenderTarget::kFormat);
+    render::FrameLoop& loop = drawn.loop;
+    render::TreeDrawable tree(ctx(), loop, *scene.tree, scene.wind);
     loop.add_drawable(tree);
-    const gpu::RenderTarget target(ctx(), kWidth, kHeight);
-    loop.advance(steps);
-    gpu::FrameView view;
+    const render::RenderTarget target(ctx(), kWidth, kHeight);
+    drawn.session.advance(steps);
+    render::FrameView view;
     view.camera = loop.default_camera(kWidth, kHeight);
     view.steps = 0;
     view.wait = true;
     for (int f = 0; f < frames; ++f) {
-      const gpu::FrameStats s = loop.frame(target.frame_target(), view);
+      const render::FrameStats s = loop.frame(target.frame_target(), view);
       if (stats) *stats = s;
     }
     EXPECT_NEAR(tree.wind_time(), static_cast<double>(steps) * scene.physics.dt, 1e-9);
@@ -211,13 +213,14 @@ TEST_F(TreeRenderTest, WindMovesTheTreeOverTime) {
 
 // Two instances of the same tree under the same wind sway out of step (instance_phase).
 TEST_F(TreeRenderTest, InstancesSwayOutOfStep) {
-  const sim::Scene scene = sim::parse_scene(
+  const scene::Scene scene = scene::parse_scene(
       tree_scene(R"({"depth": 5, "positions": [[31, 31], [34, 35]]})", kWind), "test");
-  gpu::FrameLoop loop(ctx(), scene, {}, gpu::RenderTarget::kFormat);
-  gpu::TreeDrawable tree(ctx(), loop, *scene.tree, scene.wind);
+  DrawnSession drawn(ctx(), scene, {}, render::RenderTarget::kFormat);
+  render::FrameLoop& loop = drawn.loop;
+  render::TreeDrawable tree(ctx(), loop, *scene.tree, scene.wind);
   loop.add_drawable(tree);
-  const gpu::RenderTarget target(ctx(), kWidth, kHeight);
-  gpu::FrameView view;
+  const render::RenderTarget target(ctx(), kWidth, kHeight);
+  render::FrameView view;
   view.camera = loop.default_camera(kWidth, kHeight);
   view.wait = true;
   for (int f = 0; f < 10; ++f) loop.frame(target.frame_target(), view);
@@ -230,12 +233,13 @@ TEST_F(TreeRenderTest, InstancesSwayOutOfStep) {
 
 // The controls change what the next frame draws; regrow gives another tree of the same size.
 TEST_F(TreeRenderTest, ControlsAndRegrow) {
-  const sim::Scene scene = sim::parse_scene(tree_scene(kTubes, kCalm), "test");
-  gpu::FrameLoop loop(ctx(), scene, {}, gpu::RenderTarget::kFormat);
-  gpu::TreeDrawable tree(ctx(), loop, *scene.tree, scene.wind);
+  const scene::Scene scene = scene::parse_scene(tree_scene(kTubes, kCalm), "test");
+  DrawnSession drawn(ctx(), scene, {}, render::RenderTarget::kFormat);
+  render::FrameLoop& loop = drawn.loop;
+  render::TreeDrawable tree(ctx(), loop, *scene.tree, scene.wind);
   loop.add_drawable(tree);
-  const gpu::RenderTarget target(ctx(), kWidth, kHeight);
-  gpu::FrameView view;
+  const render::RenderTarget target(ctx(), kWidth, kHeight);
+  render::FrameView view;
   view.camera = loop.default_camera(kWidth, kHeight);
   view.wait = true;
   loop.frame(target.frame_target(), view);
@@ -243,8 +247,8 @@ TEST_F(TreeRenderTest, ControlsAndRegrow) {
   tree.set_strength(12);  // clamped to 9
   EXPECT_EQ(tree.wind().strength, 9.0);
   tree.set_wind_direction(1.0);
-  tree.set_bend_mode(sim::TreeBend::keep_length);
-  tree.set_draw_mode(sim::TreeDraw::lines);
+  tree.set_bend_mode(tree::TreeBend::keep_length);
+  tree.set_draw_mode(tree::TreeDraw::lines);
   tree.set_leaves(false);
   tree.set_manual_clock();
   tree.advance_clock(2.0);
@@ -270,7 +274,7 @@ TEST_F(TreeRenderTest, KeepLengthCostIsPrinted) {
     const std::string t = std::string(R"({"depth": 8, "draw": "tubes", "bend": ")") + bend + "\"}";
     std::vector<double> ms;
     for (int k = 0; k < 5; ++k) {
-      gpu::FrameStats s;
+      render::FrameStats s;
       render(tree_scene(t, kWind), kWindSteps, &s);
       ms.push_back(s.draw_ms);
     }
@@ -286,12 +290,12 @@ TEST_F(TreeRenderTest, KeepLengthCostIsPrinted) {
 // ---- Ripples (no GPU) ---------------------------------------------------------------------------
 
 TEST(TreeRipples, DeterministicOnWaterAndOnlyInWind) {
-  const sim::Scene scene = sim::parse_scene(tree_scene("{}", R"({"strength": 6, "ripples": true})"), "test");
+  const scene::Scene scene = scene::parse_scene(tree_scene("{}", R"({"strength": 6, "ripples": true})"), "test");
   const sim::WaterModel model = sim::build_model(scene);
   const tree::NoiseTable noise = tree::make_noise_table(1);
-  const auto user = gpu::scene_user_wind(scene.wind);
-  const auto a = gpu::wind_ripples(model, noise, user, 1, 0, 300);
-  const auto b = gpu::wind_ripples(model, noise, user, 1, 0, 300);
+  const auto user = sim::scene_user_wind(scene.wind);
+  const auto a = sim::wind_ripples(model, noise, user, 1, 0, 300);
+  const auto b = sim::wind_ripples(model, noise, user, 1, 0, 300);
   ASSERT_EQ(a.size(), 100u);  // one every kRippleEverySteps
   for (std::size_t k = 0; k < a.size(); ++k) {
     EXPECT_EQ(a[k].step, b[k].step);
@@ -303,18 +307,18 @@ TEST(TreeRipples, DeterministicOnWaterAndOnlyInWind) {
     EXPECT_NE(model.kinds[n], static_cast<std::uint8_t>(sim::NodeKind::fixed));
   }
   // Split windows give the same ripples as one.
-  auto first = gpu::wind_ripples(model, noise, user, 1, 0, 151);
-  const auto second = gpu::wind_ripples(model, noise, user, 1, 151, 300);
+  auto first = sim::wind_ripples(model, noise, user, 1, 0, 151);
+  const auto second = sim::wind_ripples(model, noise, user, 1, 151, 300);
   first.insert(first.end(), second.begin(), second.end());
   ASSERT_EQ(first.size(), a.size());
   for (std::size_t k = 0; k < a.size(); ++k) EXPECT_EQ(first[k].step, a[k].step);
   tree::UserWind calm = user;
   calm.strength = 0;
-  EXPECT_TRUE(gpu::wind_ripples(model, noise, calm, 1, 0, 300).empty());
+  EXPECT_TRUE(sim::wind_ripples(model, noise, calm, 1, 0, 300).empty());
   // Only with "ripples": true does the scene gain perturbations.
-  sim::Scene with = scene, without = sim::parse_scene(tree_scene("{}", R"({"strength": 6})"), "test");
-  gpu::add_wind_ripples(with, 300);
-  gpu::add_wind_ripples(without, 300);
+  scene::Scene with = scene, without = scene::parse_scene(tree_scene("{}", R"({"strength": 6})"), "test");
+  sim::add_wind_ripples(with, with.wind, 300);
+  sim::add_wind_ripples(without, without.wind, 300);
   EXPECT_EQ(with.perturbations.size(), a.size());
   EXPECT_TRUE(without.perturbations.empty());
 }
@@ -323,7 +327,7 @@ TEST(TreeRipples, DeterministicOnWaterAndOnlyInWind) {
 // test_tree_lod.cpp).
 TEST(TreeMesh, CountsAndRanges) {
   const tree::Tree t = tree::grow_tree({.depth = 6, .seed = 1});
-  const gpu::TreeMesh m = gpu::build_tree_mesh(t);
+  const tree::TreeMesh m = tree::build_tree_mesh(t);
   EXPECT_EQ(m.lines.all.count, 2 * (t.size() - 1));
   std::size_t twigs = 0, thin = 0;
   for (std::size_t i = 1; i < t.size(); ++i) {
@@ -338,7 +342,7 @@ TEST(TreeMesh, CountsAndRanges) {
   EXPECT_EQ(m.leaves.first, m.tubes.all.first + m.tubes.all.count);
   for (std::uint32_t idx : m.indices) EXPECT_LT(idx, m.vertices.size());
   EXPECT_GT(m.rest_height, 1.0f);
-  EXPECT_GT(gpu::tree_tube_radius(6, 6), gpu::tree_tube_radius(6, 1));
+  EXPECT_GT(tree::tree_tube_radius(6, 6), tree::tree_tube_radius(6, 1));
 }
 
 }  // namespace

@@ -14,6 +14,10 @@
 namespace pond::sim {
 namespace {
 
+using scene::load_scene;
+using scene::parse_scene;
+using scene::Scene;
+
 // The default scene after 1,000 steps, exact math. Changing the model's arithmetic changes it;
 // then every backend, the IA-32 build and the GPU must agree on the new value.
 constexpr std::uint64_t kGoldenDefaultScene1000 = 0x338fc857b8648871ull;

@@ -16,6 +16,10 @@
 
 namespace pond::sim {
 namespace {
+
+using scene::load_scene;
+using scene::parse_scene;
+using scene::Scene;
 using test::grid_scene;
 using test::node;
 using test::run;

@@ -12,6 +12,10 @@
 namespace pond::sim {
 namespace {
 
+using scene::load_scene;
+using scene::parse_scene;
+using scene::Scene;
+
 TEST(Stability, BoundFormula) {
   EXPECT_NEAR(stability_bound(4, 7, 0), 2 / std::sqrt(8 * 7 / 4.0), 1e-12);
   const double b = 0.05 / 4, w2 = 14;

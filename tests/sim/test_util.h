@@ -4,12 +4,12 @@
 #include <string>
 
 #include "sim/cpu_solver.h"
-#include "sim/scene.h"
+#include "scene/scene.h"
 
 namespace pond::test {
 
-inline sim::Scene grid_scene(int rows, int cols, sim::NodeKind border = sim::NodeKind::fixed) {
-  sim::Scene s;
+inline scene::Scene grid_scene(int rows, int cols, sim::NodeKind border = sim::NodeKind::fixed) {
+  scene::Scene s;
   s.grid.rows = rows;
   s.grid.cols = cols;
   s.border = border;
@@ -31,7 +31,7 @@ inline sim::Perturbation splash(double row, double col, double radius = 2.0, dou
   return p;
 }
 
-inline sim::WaterState run(const sim::Scene& scene, std::int64_t steps,
+inline sim::WaterState run(const scene::Scene& scene, std::int64_t steps,
                            sim::Backend backend = sim::Backend::scalar, int threads = 1,
                            sim::MathMode math = sim::MathMode::exact) {
   sim::CpuSolver solver(sim::build_model(scene, math), backend, threads);
@@ -39,7 +39,7 @@ inline sim::WaterState run(const sim::Scene& scene, std::int64_t steps,
   return solver.state();
 }
 
-inline std::size_t node(const sim::Scene& s, int i, int j) {
+inline std::size_t node(const scene::Scene& s, int i, int j) {
   return static_cast<std::size_t>(i) * s.grid.cols + j;
 }
 

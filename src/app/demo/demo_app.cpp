@@ -26,15 +26,17 @@
 #include "core/errors.h"
 #include "core/output_file.h"
 #include "gpu/context.h"
-#include "gpu/frame_loop.h"
-#include "gpu/tree_drawable.h"
+#include "render/frame_loop.h"
+#include "gpu/gpu_solver.h"
+#include "render/tree_drawable.h"
+#include "scene/scene.h"
 #include "sim/backends.h"
-#include "sim/scene.h"
+#include "sim/session.h"
 
 namespace pond::app::demo {
 namespace {
 
-static_assert(Swapchain::kAcquireRing == gpu::FrameLoop::kFramesInFlight + 1,
+static_assert(Swapchain::kAcquireRing == render::FrameLoop::kFramesInFlight + 1,
               "the acquire-semaphore ring relies on the frame loop's slot fences (swapchain.h)");
 
 constexpr double kTauSteps[] = {0, 0.25, 0.5, 1, 2, 4, 8, 16, 32};
@@ -77,24 +79,13 @@ struct IdleBeforeTeardown {
   }
 };
 
-// A state taken over by new constraints obeys them from the start: fixed nodes at rest,
-// vertical-only nodes without horizontal displacement or velocity.
-void constrain(sim::WaterState& s, const sim::WaterModel& model) {
-  for (std::size_t n = 0; n < s.nodes(); ++n) {
-    const auto kind = static_cast<sim::NodeKind>(model.kinds[n]);
-    if (kind == sim::NodeKind::free) continue;
-    s.ux[n] = s.uz[n] = s.vx[n] = s.vz[n] = 0;
-    if (kind == sim::NodeKind::fixed) s.uy[n] = s.vy[n] = 0;
-  }
-}
-
-std::string solver_label(const gpu::SolverChoice& s) {
+std::string solver_label(const sim::SolverChoice& s) {
   return s.gpu ? "GPU solver" : std::string("CPU solver (") + sim::backend_name(s.backend) + ")";
 }
 
 class DemoApp final : public ControlTarget {
  public:
-  DemoApp(const DemoOptions& options, sim::Scene scene, Script script)
+  DemoApp(const DemoOptions& options, scene::Scene scene, Script script)
       : options_(options),
         base_scene_(std::move(scene)),
         script_(std::move(script)),
@@ -114,7 +105,9 @@ class DemoApp final : public ControlTarget {
     stats_.device = ctx_.device_name();
     if (!swapchain_.can_copy_images() && (!options.screenshot.empty() || !script_.screenshots.empty()))
       throw RuntimeError("this window's swapchain images cannot be read back, so no screenshots can be taken");
-    build_loop(gpu::SolverChoice{});
+    session_ = std::make_unique<sim::Session>(scene_with_settings(), sim::SolverChoice{}, gpu::gpu_solver_factory(ctx_));
+    stats_.solver = solver_label(session_->choice());
+    build_loop();
     const vk::Extent2D e = swapchain_.extent();
     camera_.set_home(loop_->default_camera(static_cast<int>(e.width), static_cast<int>(e.height)));
   }
@@ -141,7 +134,8 @@ class DemoApp final : public ControlTarget {
     return gpu::WindowSurface{.instance_extensions = Window::required_instance_extensions(),
                               .make_surface = [&window](VkInstance instance) { return window.create_surface(instance); }};
   }
-  void build_loop(gpu::SolverChoice solver);
+  scene::Scene scene_with_settings() const;  // the scene with the demo's modes and edits
+  void build_loop();
   void apply_requests(const PanelRequests& req);
   void make_rain();
   void draw_ui();
@@ -153,7 +147,7 @@ class DemoApp final : public ControlTarget {
   void take_screenshot_next(std::string path) { pending_shot_ = std::move(path); }
 
   DemoOptions options_;
-  sim::Scene base_scene_;
+  scene::Scene base_scene_;
   Script script_;
   // Dependency order: destroyed bottom-up (the loop before the drawable it draws, everything
   // Vulkan before the context, the context's surface before the window, the window before GLFW).
@@ -164,8 +158,9 @@ class DemoApp final : public ControlTarget {
   Swapchain swapchain_;
   ImGuiRenderer imgui_;
   ScreenshotWriter shots_;
-  std::unique_ptr<gpu::FrameLoop> loop_;
-  std::optional<gpu::TreeDrawable> tree_;  // the scene's wind tree; waits for the device when destroyed
+  std::unique_ptr<sim::Session> session_;  // the water: splashes, edits, solver switches go here
+  std::unique_ptr<render::FrameLoop> loop_;
+  std::optional<render::TreeDrawable> tree_;  // the scene's wind tree; waits for the device when destroyed
   IdleBeforeTeardown idle_;
 
   DemoSettings settings_;
@@ -180,35 +175,30 @@ class DemoApp final : public ControlTarget {
   std::mt19937 rng_{12345};  // deterministic rain: scripted runs repeat
 };
 
-void DemoApp::build_loop(gpu::SolverChoice solver) {
-  // The water carries over to the new constraints (the first loop starts from rest).
-  std::optional<sim::WaterState> carried;
-  std::int64_t steps = 0;
-  if (loop_) {
-    carried = loop_->state();
-    steps = loop_->steps_done();
-    loop_->wait_idle();
-  }
-  loop_.reset();  // one loop at a time: its buffers and pipelines are the big allocations
-  sim::Scene scene = apply_modes(base_scene_, settings_.modes);
+scene::Scene DemoApp::scene_with_settings() const {
+  scene::Scene scene = apply_modes(base_scene_, settings_.modes);
   scene.physics = settings_.physics;
   scene.lighting.sun = settings_.sun;
-  loop_ = std::make_unique<gpu::FrameLoop>(ctx_, scene, solver, swapchain_.format());
-  if (scene.tree) {  // drawn before the UI; the controls' changes carry over to the rebuilt loop
-    const sim::TreeSpec spec = tree_ ? tree_->spec() : *scene.tree;
-    const sim::WindSpec wind = tree_ ? tree_->wind() : scene.wind;
+  return scene;
+}
+
+// A loop for the session's current model (its land follows the constraints); the tree with the
+// controls' changes carried over.
+void DemoApp::build_loop() {
+  if (loop_) loop_->wait_idle();
+  loop_.reset();  // one loop at a time: its buffers and pipelines are the big allocations
+  loop_ = std::make_unique<render::FrameLoop>(ctx_, *session_, swapchain_.format());
+  loop_->set_sun(settings_.sun);
+  const scene::Scene& scene = session_->scene();
+  if (scene.tree) {  // drawn before the UI
+    const tree::TreeSpec spec = tree_ ? tree_->spec() : *scene.tree;
+    const tree::WindSpec wind = tree_ ? tree_->wind() : scene.wind;
     tree_.reset();
     tree_.emplace(ctx_, *loop_, spec, wind);
     tree_->set_manual_clock();  // the water runs faster than real time; the wind runs in real time
     loop_->add_drawable(*tree_);
   }
   loop_->add_drawable(imgui_);
-  if (carried) {
-    constrain(*carried, loop_->model());
-    loop_->set_state(*carried, steps);
-  }
-  settings_.gpu_solver = solver.gpu;
-  stats_.solver = solver_label(solver);
 }
 
 void DemoApp::on_action(Action action) {
@@ -277,8 +267,8 @@ void DemoApp::on_wind_drag(double x0, double y0, double x, double y) {
 }
 
 void DemoApp::on_splash(double x, double y, SplashKind kind) {
-  const sim::WaterModel& model = loop_->model();
-  const sim::WaterState state = loop_->state();  // rare (a click): the copy is fine
+  const sim::WaterModel& model = session_->model();
+  const sim::WaterState state = session_->state();  // rare (a click): the copy is fine
   const std::optional<SurfaceHit> hit = intersect_surface(pixel_ray(current_camera(), x, y), model, state);
   if (!hit) {
     settings_.message = "the click missed the water";
@@ -301,7 +291,7 @@ void DemoApp::on_splash(double x, double y, SplashKind kind) {
       p.target = sim::PerturbTarget::velocity;
       break;
   }
-  loop_->splash(p);
+  session_->splash(p);
   char text[96];
   std::snprintf(text, sizeof text, "splash at row %.1f col %.1f", hit->row, hit->col);
   settings_.message = text;
@@ -310,9 +300,10 @@ void DemoApp::on_splash(double x, double y, SplashKind kind) {
 void DemoApp::apply_requests(const PanelRequests& req) {
   if (req.reset_camera) camera_.reset();
   if (req.rebuild_scene) {
-    // The constraints change the model and the land meshes: a new loop on the same solver, the
-    // water carried over.
-    build_loop(loop_->solver());
+    // The constraints change the model and the land meshes: the session takes them with the water
+    // carried over, and a new loop draws its land.
+    session_->set_water(apply_modes(base_scene_, settings_.modes));
+    build_loop();
     char text[128];
     std::snprintf(text, sizeof text, "border %s, all vertical %s, islands %s",
                   border_name(settings_.modes.border), settings_.modes.all_vertical ? "on" : "off",
@@ -320,36 +311,39 @@ void DemoApp::apply_requests(const PanelRequests& req) {
     settings_.message = text;
   }
   if (req.switch_solver) {
-    gpu::SolverChoice s = loop_->solver();
+    sim::SolverChoice s = session_->choice();
     s.gpu = settings_.gpu_solver;
     if (!s.gpu) s.backend = sim::best_backend();
-    loop_->set_solver(s);
+    session_->set_solver(s);
     stats_.solver = solver_label(s);
     settings_.message = "switched to the " + stats_.solver + " (state carried over)";
   }
-  if (req.apply_sun) loop_->set_sun(settings_.sun);  // the panel's vectors are unit vectors
+  if (req.apply_sun) {
+    scene::check_sun(settings_.sun);  // the panel's vectors are unit vectors
+    loop_->set_sun(settings_.sun);
+  }
   if (req.apply_physics) {
     try {
-      loop_->set_physics(settings_.physics);
+      session_->set_physics(settings_.physics);
       settings_.message.clear();
     } catch (const InputError& e) {
       settings_.message = std::string("refused: ") + e.what();
-      settings_.physics = loop_->model().physics;
+      settings_.physics = session_->scene().physics;
     }
   }
   if (req.reset_water) {
-    loop_->reset();
+    session_->reset();
     settings_.message = "water reset";
   }
 }
 
 void DemoApp::make_rain() {
   if (!settings_.rain.on) return;
-  const sim::WaterModel& model = loop_->model();
+  const sim::WaterModel& model = session_->model();
   std::uniform_real_distribution<double> row(1, model.rows - 2), col(1, model.cols - 2), scale(0.5, 1.5);
   rain_carry_ += settings_.rain.drops_per_frame;
   for (; rain_carry_ >= 1; rain_carry_ -= 1)
-    loop_->splash(sim::Perturbation{.row = row(rng_), .col = col(rng_),
+    session_->splash(sim::Perturbation{.row = row(rng_), .col = col(rng_),
                                     .radius = settings_.rain.radius * model.spacing,
                                     .amplitude = settings_.rain.amplitude * scale(rng_) * model.spacing});
 }
@@ -376,7 +370,7 @@ bool DemoApp::draw_frame(const std::string* screenshot_path) {
   if (!loop_->simulated()) {
     std::int64_t steps = settings_.paused ? 0 : settings_.steps_per_frame;
     if (settings_.step_once) steps = std::max<std::int64_t>(steps, 1), settings_.step_once = false;
-    const gpu::FrameView view{.camera = current_camera(), .lod_tolerance_px = settings_.lod_tolerance_px,
+    const render::FrameView view{.camera = current_camera(), .lod_tolerance_px = settings_.lod_tolerance_px,
                               .wireframe = settings_.wireframe, .steps = steps};
     loop_->simulate(view, swapchain_.extent());
   }
@@ -386,13 +380,13 @@ bool DemoApp::draw_frame(const std::string* screenshot_path) {
   if (!image) return false;
   const vk::Extent2D extent = swapchain_.extent();
   const bool shot = screenshot_path != nullptr;
-  const gpu::FrameTarget target{.image = image->image, .view = image->view, .format = swapchain_.format(),
+  const render::FrameTarget target{.image = image->image, .view = image->view, .format = swapchain_.format(),
                                 .extent = extent, .old_layout = vk::ImageLayout::eUndefined,
                                 .final_layout = shot ? vk::ImageLayout::eTransferSrcOptimal : vk::ImageLayout::ePresentSrcKHR,
                                 .wait_semaphore = image->acquired,
                                 .signal_semaphore = shot ? shots_.drawn() : image->rendered};
   stats_.last = loop_->draw(target);
-  stats_.steps_done = loop_->steps_done();
+  stats_.steps_done = session_->steps_done();
   if (shot) {
     shots_.save(image->image, swapchain_.format(), extent, image->rendered, *screenshot_path);
     settings_.message = "saved " + *screenshot_path;
@@ -411,7 +405,7 @@ int DemoApp::run() {
   std::size_t next_event = 0;
   std::int64_t frame = 0, drawn = 0, minimized_frames = 0;
   double total_ms = 0, acquire_ms = 0, present_ms = 0;
-  gpu::FrameStats sum{};
+  render::FrameStats sum{};
   while (!quit_ && (options_.frames == 0 || frame < options_.frames)) {
     window_.poll();
     if (window_.should_close()) break;
@@ -502,7 +496,7 @@ int DemoApp::run() {
 
 int run_demo(const DemoOptions& options) {
   // Bad input first, before any window: exit 2 even on a machine without a display.
-  sim::Scene scene = sim::load_scene(options.scene);
+  scene::Scene scene = scene::load_scene(options.scene);
   Script script = load_script(options.script);
   if (!options.screenshot.empty()) check_output_path(options.screenshot);
   DemoApp app(options, std::move(scene), std::move(script));

@@ -1,6 +1,6 @@
 #pragma once
 // The windowed demo: a GLFW window with a Vulkan swapchain driven by the one frame loop
-// (gpu/frame_loop.h), an orbit camera, splashes by mouse, the paper's modes at keys, an ImGui
+// (render/frame_loop.h), an orbit camera, splashes by mouse, the paper's modes at keys, an ImGui
 // panel, and scripted input for tests.
 #include <cstdint>
 #include <string>

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "app/demo/scene_modes.h"
-#include "gpu/frame_loop.h"
-#include "sim/scene.h"
+#include "render/frame_loop.h"
+#include "scene/scene.h"
 
 namespace pond::app::demo {
 
@@ -50,7 +50,7 @@ struct DemoSettings {
 struct DemoStats {
   double fps = 0;        // smoothed
   double frame_ms = 0;   // smoothed wall time per frame
-  gpu::FrameStats last;  // the frame loop's split of the last frame
+  render::FrameStats last;  // the frame loop's split of the last frame
   std::int64_t steps_done = 0;
   std::string device, solver, present_mode;
   int width = 0, height = 0;

@@ -16,27 +16,27 @@ bool input_double(const char* label, double& value, double step, const char* for
 }
 
 // The wind tree: the same controls as right drag, keys 1-9 and double-click.
-void draw_tree_section(gpu::TreeDrawable& tree) {
+void draw_tree_section(render::TreeDrawable& tree) {
   if (!ImGui::CollapsingHeader("Wind tree")) return;
   float strength = static_cast<float>(tree.wind().strength);
   if (ImGui::SliderFloat("wind strength (1-9)", &strength, 0.0f, 9.0f, "%.1f")) tree.set_strength(strength);
   float direction = static_cast<float>(tree.wind().direction_deg);
   if (ImGui::SliderFloat("wind direction (right drag)", &direction, -180.0f, 180.0f, "%.0f deg"))
     tree.set_wind_direction(direction * std::numbers::pi / 180.0);
-  int bend = tree.spec().bend == sim::TreeBend::article ? 0 : 1;
+  int bend = tree.spec().bend == tree::TreeBend::article ? 0 : 1;
   ImGui::Text("bend:");
   ImGui::SameLine();
   bool bend_changed = ImGui::RadioButton("article", &bend, 0);
   ImGui::SameLine();
   bend_changed |= ImGui::RadioButton("keep length", &bend, 1);
-  if (bend_changed) tree.set_bend_mode(bend == 0 ? sim::TreeBend::article : sim::TreeBend::keep_length);
-  int draw = tree.spec().draw == sim::TreeDraw::lines ? 0 : 1;
+  if (bend_changed) tree.set_bend_mode(bend == 0 ? tree::TreeBend::article : tree::TreeBend::keep_length);
+  int draw = tree.spec().draw == tree::TreeDraw::lines ? 0 : 1;
   ImGui::Text("draw:");
   ImGui::SameLine();
   bool draw_changed = ImGui::RadioButton("lines", &draw, 0);
   ImGui::SameLine();
   draw_changed |= ImGui::RadioButton("tubes", &draw, 1);
-  if (draw_changed) tree.set_draw_mode(draw == 0 ? sim::TreeDraw::lines : sim::TreeDraw::tubes);
+  if (draw_changed) tree.set_draw_mode(draw == 0 ? tree::TreeDraw::lines : tree::TreeDraw::tubes);
   bool leaves = tree.spec().leaves;
   if (ImGui::Checkbox("leaves", &leaves)) tree.set_leaves(leaves);
   ImGui::SameLine();
@@ -61,7 +61,7 @@ bool edit_sun(std::array<double, 3>& sun) {
 
 }  // namespace
 
-PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, gpu::TreeDrawable* tree) {
+PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, render::TreeDrawable* tree) {
   PanelRequests req;
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);

@@ -2,7 +2,7 @@
 // The ImGui windows of the demo: the control panel (physics with the stability bound, steps per
 // frame, LOD tolerance, splash and rain settings, the wind tree, stats) and the help overlay.
 #include "app/demo/demo_settings.h"
-#include "gpu/tree_drawable.h"
+#include "render/tree_drawable.h"
 
 namespace pond::app::demo {
 
@@ -18,7 +18,7 @@ struct PanelRequests {
 
 // Builds this frame's windows (between ImGui::NewFrame and ImGui::Render). `tree` is the scene's
 // wind tree, or null: its controls act on it directly (they only change what the next frame uses).
-PanelRequests draw_panel(DemoSettings& settings, const DemoStats& stats, gpu::TreeDrawable* tree);
+PanelRequests draw_panel(DemoSettings& settings, const DemoStats& stats, render::TreeDrawable* tree);
 void draw_help_overlay(bool& open);
 
 }  // namespace pond::app::demo

@@ -5,7 +5,7 @@
 #include <cstring>
 #include <span>
 
-#include "gpu/color_format.h"
+#include "render/color_format.h"
 #include "imgui_frag.spv.h"
 #include "imgui_vert.spv.h"
 
@@ -25,13 +25,13 @@ vk::raii::ShaderModule module(const gpu::Context& ctx, std::span<const std::uint
 }  // namespace
 
 ImGuiRenderer::ImGuiRenderer(const gpu::Context& ctx, vk::Format color_format)
-    : ctx_(ctx), srgb_target_(gpu::is_srgb(color_format)) {
+    : ctx_(ctx), srgb_target_(render::is_srgb(color_format)) {
   // The font atlas, uploaded once.
   unsigned char* pixels = nullptr;
   int width = 0, height = 0;
   ImGui::GetIO().Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
   const vk::Extent2D extent{static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)};
-  font_ = gpu::create_image(ctx, extent, vk::Format::eR8G8B8A8Unorm,
+  font_ = render::create_image(ctx, extent, vk::Format::eR8G8B8A8Unorm,
                             vk::ImageUsageFlagBits::eSampled | vk::ImageUsageFlagBits::eTransferDst,
                             vk::ImageAspectFlagBits::eColor, "imgui font atlas");
   const vk::DeviceSize bytes = vk::DeviceSize(width) * vk::DeviceSize(height) * 4;
@@ -133,7 +133,7 @@ ImGuiRenderer::ImGuiRenderer(const gpu::Context& ctx, vk::Format color_format)
   const vk::DynamicState dynamic_states[] = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
   const vk::PipelineDynamicStateCreateInfo dynamic{.dynamicStateCount = 2, .pDynamicStates = dynamic_states};
   const vk::PipelineRenderingCreateInfo rendering{.colorAttachmentCount = 1, .pColorAttachmentFormats = &color_format,
-                                                  .depthAttachmentFormat = gpu::FrameLoop::kDepthFormat};
+                                                  .depthAttachmentFormat = render::FrameLoop::kDepthFormat};
   pipeline_ = vk::raii::Pipeline(ctx.device(), nullptr,
                                  vk::GraphicsPipelineCreateInfo{.pNext = &rendering, .stageCount = 2, .pStages = stages,
                                                                 .pVertexInputState = &vertex_input,
@@ -155,7 +155,7 @@ void ImGuiRenderer::grow(gpu::Buffer& buffer, vk::DeviceSize bytes, vk::BufferUs
   buffer = gpu::create_buffer(ctx_, size, usage, gpu::MemoryUse::upload, name);
 }
 
-void ImGuiRenderer::prepare(const gpu::FrameInfo& frame) {
+void ImGuiRenderer::prepare(const render::FrameInfo& frame) {
   SlotBuffers& slot = slots_[frame.slot];
   slot.ready = false;
   const ImDrawData* data = ImGui::GetDrawData();
@@ -178,7 +178,7 @@ void ImGuiRenderer::prepare(const gpu::FrameInfo& frame) {
   slot.ready = true;  // upload memory is host-coherent: the submit makes the writes visible
 }
 
-void ImGuiRenderer::draw_occluding(const gpu::FrameInfo& frame) {
+void ImGuiRenderer::draw_occluding(const render::FrameInfo& frame) {
   const SlotBuffers& slot = slots_[frame.slot];
   const ImDrawData* data = ImGui::GetDrawData();
   if (!slot.ready || !data) return;

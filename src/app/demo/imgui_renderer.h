@@ -12,19 +12,19 @@
 
 #include "gpu/buffer.h"
 #include "gpu/context.h"
-#include "gpu/frame_loop.h"
-#include "gpu/render_target.h"
+#include "render/frame_loop.h"
+#include "render/render_target.h"
 
 namespace pond::app::demo {
 
-class ImGuiRenderer final : public gpu::PassDrawable {
+class ImGuiRenderer final : public render::PassDrawable {
  public:
   // Needs a current ImGui context (it uploads the context's font atlas).
   ImGuiRenderer(const gpu::Context& ctx, vk::Format color_format);
 
-  void prepare(const gpu::FrameInfo& frame) override;  // copies ImGui::GetDrawData() into the slot
-  void draw(const gpu::FrameInfo&) override {}
-  void draw_occluding(const gpu::FrameInfo& frame) override;
+  void prepare(const render::FrameInfo& frame) override;  // copies ImGui::GetDrawData() into the slot
+  void draw(const render::FrameInfo&) override {}
+  void draw_occluding(const render::FrameInfo& frame) override;
 
  private:
   struct SlotBuffers {
@@ -35,14 +35,14 @@ class ImGuiRenderer final : public gpu::PassDrawable {
 
   const gpu::Context& ctx_;
   bool srgb_target_ = false;
-  gpu::Image font_;
+  render::Image font_;
   vk::raii::Sampler sampler_ = nullptr;
   vk::raii::DescriptorSetLayout set_layout_ = nullptr;
   vk::raii::DescriptorPool pool_ = nullptr;
   vk::raii::DescriptorSet set_ = nullptr;
   vk::raii::PipelineLayout layout_ = nullptr;
   vk::raii::Pipeline pipeline_ = nullptr;
-  std::array<SlotBuffers, gpu::FrameLoop::kFramesInFlight> slots_;
+  std::array<SlotBuffers, render::FrameLoop::kFramesInFlight> slots_;
 };
 
 }  // namespace pond::app::demo

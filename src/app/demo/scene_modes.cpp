@@ -4,14 +4,14 @@
 
 namespace pond::app::demo {
 
-SceneModes modes_of(const sim::Scene& scene) {
+SceneModes modes_of(const scene::Scene& scene) {
   const bool islands = std::any_of(scene.constraints.begin(), scene.constraints.end(),
                                    [](const sim::ConstraintRect& c) { return c.kind == sim::NodeKind::fixed; });
   return SceneModes{.border = scene.border, .all_vertical = false, .islands = islands};
 }
 
-sim::Scene apply_modes(const sim::Scene& base, const SceneModes& modes) {
-  sim::Scene s = base;
+scene::Scene apply_modes(const scene::Scene& base, const SceneModes& modes) {
+  scene::Scene s = base;
   s.border = modes.border;
   const auto is_island = [](const sim::ConstraintRect& c) { return c.kind == sim::NodeKind::fixed; };
   const bool has_islands = std::any_of(base.constraints.begin(), base.constraints.end(), is_island);

@@ -3,7 +3,7 @@
 // kind (fixed / vertical / free), every node vertical-only (waves pass through each other), and
 // islands on or off (the scene's fixed rectangles; a scene without any gets one island in the
 // middle of the pond when they are switched on).
-#include "sim/scene.h"
+#include "scene/scene.h"
 
 namespace pond::app::demo {
 
@@ -13,8 +13,8 @@ struct SceneModes {
   bool islands = true;
 };
 
-SceneModes modes_of(const sim::Scene& scene);                       // what the scene itself says
-sim::Scene apply_modes(const sim::Scene& base, const SceneModes& modes);
+SceneModes modes_of(const scene::Scene& scene);                       // what the scene itself says
+scene::Scene apply_modes(const scene::Scene& base, const SceneModes& modes);
 const char* border_name(sim::NodeKind kind);
 sim::NodeKind next_border(sim::NodeKind kind);  // fixed -> vertical -> free -> fixed
 

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "core/errors.h"
-#include "gpu/png.h"
+#include "core/png.h"
 
 namespace pond::app::demo {
 
@@ -69,7 +69,7 @@ void ScreenshotWriter::save(vk::Image image, vk::Format format, vk::Extent2D ext
   if (bgra)
     for (std::size_t p = 0; p < rgba.size(); p += 4) std::swap(rgba[p], rgba[p + 2]);
   for (std::size_t p = 3; p < rgba.size(); p += 4) rgba[p] = 255;  // the window is opaque
-  gpu::write_png(path, static_cast<int>(extent.width), static_cast<int>(extent.height), rgba);
+  pond::write_png(path, static_cast<int>(extent.width), static_cast<int>(extent.height), rgba);
 }
 
 }  // namespace pond::app::demo

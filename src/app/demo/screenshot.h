@@ -1,7 +1,7 @@
 #pragma once
 // Saving a swapchain frame as PNG. The frame loop leaves the image in eTransferSrcOptimal and
 // signals `drawn`; this copies it to a host buffer, hands the image on to presentation
-// (ePresentSrcKHR, signalling the present semaphore) and writes the PNG atomically (gpu/png.h).
+// (ePresentSrcKHR, signalling the present semaphore) and writes the PNG atomically (core/png.h).
 // Rare (F12, script, --screenshot): it waits for its copy, and the readback buffer is kept for the
 // next shot of the same size.
 #include <filesystem>

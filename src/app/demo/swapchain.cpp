@@ -3,17 +3,17 @@
 #include <algorithm>
 
 #include "core/errors.h"
-#include "gpu/color_format.h"
+#include "render/color_format.h"
 
 namespace pond::app::demo {
 namespace {
 
-// The renderer draws into UNORM images, its shaders encoding sRGB (gpu/color_format.h: much cheaper
+// The renderer draws into UNORM images, its shaders encoding sRGB (render/color_format.h: much cheaper
 // than the format's encoding on llvmpipe), as into its offscreen target; an sRGB format is the
 // fallback, where the shaders output linear colour. (The ImGui shader linearizes its sRGB-authored
 // colours for sRGB targets.)
 vk::SurfaceFormatKHR choose_format(const std::vector<vk::SurfaceFormatKHR>& formats) {
-  for (vk::Format want : {vk::Format::eB8G8R8A8Unorm, gpu::kColorFormat, vk::Format::eB8G8R8A8Srgb,
+  for (vk::Format want : {vk::Format::eB8G8R8A8Unorm, render::kColorFormat, vk::Format::eB8G8R8A8Srgb,
                           vk::Format::eR8G8B8A8Srgb})
     for (const auto& f : formats)
       if (f.format == want && f.colorSpace == vk::ColorSpaceKHR::eSrgbNonlinear) return f;

@@ -1,0 +1,393 @@
+#include "render/frame_loop.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <optional>
+#include <stdexcept>
+
+#include "core/errors.h"
+#include "gpu/buffer.h"
+#include "render/color_format.h"
+#include "view/land_mesh.h"
+#include "render/render_layout.h"
+#include "render/render_target.h"
+#include "view/view_projection.h"
+#include "render/water_pipeline.h"
+#include "render/water_source.h"
+#include "lod/lod_builder.h"
+
+namespace pond::render {
+namespace {
+
+using S = vk::PipelineStageFlagBits2;
+using A = vk::AccessFlagBits2;
+using BU = vk::BufferUsageFlagBits;
+
+// The full mesh, 2 (R-1)(C-1) triangles with one diagonal direction, counter-clockwise from +y.
+std::vector<std::uint32_t> full_mesh_indices(int rows, int cols) {
+  std::vector<std::uint32_t> idx;
+  idx.reserve(static_cast<std::size_t>(rows - 1) * (cols - 1) * 6);
+  for (int i = 0; i + 1 < rows; ++i)
+    for (int j = 0; j + 1 < cols; ++j) {
+      const auto a = static_cast<std::uint32_t>(i * cols + j), b = a + 1, c = a + static_cast<std::uint32_t>(cols), d = c + 1;
+      idx.insert(idx.end(), {a, c, b, b, c, d});
+    }
+  return idx;
+}
+
+vk::ImageMemoryBarrier2 layout_barrier(vk::Image image, vk::ImageAspectFlags aspect, vk::ImageLayout from,
+                                       vk::ImageLayout to, vk::PipelineStageFlags2 src_stage, vk::AccessFlags2 src_access,
+                                       vk::PipelineStageFlags2 dst_stage, vk::AccessFlags2 dst_access) {
+  return {.srcStageMask = src_stage, .srcAccessMask = src_access, .dstStageMask = dst_stage, .dstAccessMask = dst_access,
+          .oldLayout = from, .newLayout = to, .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+          .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .image = image,
+          .subresourceRange = {.aspectMask = aspect, .baseMipLevel = 0, .levelCount = 1, .baseArrayLayer = 0, .layerCount = 1}};
+}
+
+shared::water_render::vec4 v4(const std::array<double, 3>& a, double w = 0) {
+  return {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2]), static_cast<float>(w)};
+}
+
+double ms_since(std::chrono::steady_clock::time_point& t) {
+  const auto now = std::chrono::steady_clock::now();
+  const double ms = std::chrono::duration<double, std::milli>(now - t).count();
+  t = now;
+  return ms;
+}
+
+}  // namespace
+
+// One frame slot: everything a frame in flight owns.
+struct Slot {
+  vk::raii::CommandBuffer cmd = nullptr;
+  vk::raii::Fence done = nullptr;  // signalled when the slot's last draw finished
+  gpu::Buffer uniforms, indices;        // host-visible: WaterFrame, the LOD's indices
+  vk::raii::DescriptorSet set = nullptr;
+  Image depth;
+};
+
+struct FrameLoop::Impl {
+  const gpu::Context& ctx;
+  sim::Session& session;
+  view::LightingSpec lighting;
+  vk::Format color_format;
+  std::unique_ptr<WaterSource> water;
+  std::uint64_t water_generation = 0;  // the session's solver_generation() `water` reads
+  lod::LodBuilder lod;
+  WaterPipelines pipes;
+  gpu::Buffer land, full_indices;
+  std::uint32_t land_vertices = 0, full_index_count = 0;
+  vk::raii::CommandPool pool = nullptr;
+  vk::raii::DescriptorPool descriptor_pool = nullptr;
+  std::vector<Slot> slots;
+  std::uint32_t next = 0;
+  std::vector<PassDrawable*> drawables;
+
+  Impl(const gpu::Context& c, sim::Session& drawn, vk::Format format)
+      : ctx(c), session(drawn), lighting(drawn.scene().lighting), color_format(format),
+        lod(drawn.model().rows, drawn.model().cols), pipes(create_water_pipelines(c, format, kDepthFormat)) {
+    follow_solver();
+    create_static_geometry();
+    session.set_before_change([this] { wait_all(); });
+    pool = vk::raii::CommandPool(ctx.device(), vk::CommandPoolCreateInfo{
+                                                   .flags = vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
+                                                   .queueFamilyIndex = ctx.queue_family()});
+    const vk::DescriptorPoolSize sizes[] = {{.type = vk::DescriptorType::eUniformBuffer, .descriptorCount = kFramesInFlight},
+                                            {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 2 * kFramesInFlight}};
+    descriptor_pool = vk::raii::DescriptorPool(
+        ctx.device(), vk::DescriptorPoolCreateInfo{.flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
+                                                   .maxSets = kFramesInFlight, .poolSizeCount = 2, .pPoolSizes = sizes});
+    vk::raii::CommandBuffers cmds(ctx.device(), vk::CommandBufferAllocateInfo{.commandPool = *pool,
+                                                                              .level = vk::CommandBufferLevel::ePrimary,
+                                                                              .commandBufferCount = kFramesInFlight});
+    for (std::uint32_t k = 0; k < kFramesInFlight; ++k) {
+      Slot s;
+      s.cmd = std::move(cmds[k]);
+      s.done = vk::raii::Fence(ctx.device(), vk::FenceCreateInfo{.flags = vk::FenceCreateFlagBits::eSignaled});
+      s.uniforms = gpu::create_buffer(ctx, sizeof(WaterFrame), BU::eUniformBuffer, gpu::MemoryUse::upload,
+                                 "water frame uniforms, slot " + std::to_string(k));
+      s.indices = gpu::create_buffer(ctx, std::max<std::size_t>(1, lod.max_indices()) * 4, BU::eIndexBuffer,
+                                gpu::MemoryUse::upload, "water LOD indices, slot " + std::to_string(k));
+      const vk::DescriptorSetLayout layout = *pipes.set_layout;
+      s.set = std::move(vk::raii::DescriptorSets(ctx.device(), vk::DescriptorSetAllocateInfo{
+                                                                   .descriptorPool = *descriptor_pool,
+                                                                   .descriptorSetCount = 1, .pSetLayouts = &layout})[0]);
+      slots.push_back(std::move(s));
+    }
+  }
+
+  const sim::WaterModel& model() const { return session.model(); }  // may change with the solver
+
+  // A WaterSource for the session's current solver (a new one after a switch or an edit).
+  void follow_solver() {
+    if (water && water_generation == session.solver_generation()) return;
+    simulated.reset();  // its buffers are the old solver's
+    wait_all();
+    water.reset();
+    water = std::make_unique<WaterSource>(ctx, session.solver(), kFramesInFlight);
+    water_generation = session.solver_generation();
+  }
+
+  void create_static_geometry() {
+    const view::ViewSpec& v = session.scene().view;
+    const std::vector<LandVertex> mesh = view::build_land_mesh(model(), v.floor_depth, v.land_height);
+    land_vertices = static_cast<std::uint32_t>(mesh.size());
+    land = gpu::create_buffer(ctx, mesh.size() * sizeof(LandVertex), BU::eVertexBuffer | BU::eTransferDst, gpu::MemoryUse::device,
+                         "land vertices");
+    gpu::upload(ctx, land, std::as_bytes(std::span(mesh)));
+    const std::vector<std::uint32_t> full = full_mesh_indices(model().rows, model().cols);
+    full_index_count = static_cast<std::uint32_t>(full.size());
+    full_indices = gpu::create_buffer(ctx, std::max<std::size_t>(1, full.size()) * 4, BU::eIndexBuffer | BU::eTransferDst,
+                                 gpu::MemoryUse::device, "water full-mesh indices");
+    gpu::upload(ctx, full_indices, std::as_bytes(std::span(full)));
+  }
+
+  void wait(const Slot& s) const {
+    if (ctx.device().waitForFences(*s.done, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
+      throw RuntimeError("waiting for a frame failed");
+  }
+  void wait_all() const {
+    for (const Slot& s : slots) wait(s);
+  }
+
+  // ---- The frame loop ----
+  // What simulate() left for draw().
+  struct Simulated {
+    std::uint32_t slot = 0;
+    FrameView view;
+    lod::Camera camera;  // view.camera at the size the LOD was built for
+    WaterSource::DrawBuffers bufs;
+    std::size_t index_count = 0;
+    FrameStats stats;
+    std::uint64_t state_revision = 0;  // the session's when simulated
+  };
+  std::optional<Simulated> simulated;
+
+  bool has_simulated() const {
+    return simulated && simulated->state_revision == session.state_revision() &&
+           water_generation == session.solver_generation();
+  }
+
+  FrameStats simulate(const FrameView& view, vk::Extent2D extent) {
+    const std::uint32_t slot = next;
+    Slot& s = slots[slot];
+    wait(s);  // the slot's previous draw is done: its buffers may be rewritten
+    Simulated f;
+    f.slot = slot;
+    f.view = view;
+    f.stats.full_triangles = full_index_count / 3;
+    f.stats.land_triangles = land_vertices / 3;
+    auto t = std::chrono::steady_clock::now();
+    session.advance(view.steps);  // 1. substeps
+    follow_solver();              // (the session replaced its solver: a run past its ripples)
+    f.bufs = water->prepare(slot);  // 2. normals, positions -> CPU
+    f.state_revision = session.state_revision();
+    f.stats.simulate_ms = ms_since(t);
+    build_lod(f, extent);  // 3. LOD into the slot's indices
+    f.stats.lod_ms = ms_since(t);
+    simulated = f;
+    return f.stats;
+  }
+
+  void build_lod(Simulated& f, vk::Extent2D extent) {
+    f.camera = f.view.camera;
+    f.camera.width = static_cast<int>(extent.width);
+    f.camera.height = static_cast<int>(extent.height);
+    Slot& s = slots[f.slot];
+    f.index_count = f.view.lod_tolerance_px <= 0
+                        ? full_index_count
+                        : lod.build(water->positions(), f.camera, f.view.lod_tolerance_px,
+                                    std::span(static_cast<std::uint32_t*>(s.indices.mapped), lod.max_indices()));
+    f.stats.triangles = f.index_count / 3;
+  }
+
+  FrameStats draw(const FrameTarget& target) {
+    if (!has_simulated()) throw std::logic_error("FrameLoop::draw without a simulated frame");
+    Simulated f = *simulated;
+    simulated.reset();
+    Slot& s = slots[f.slot];
+    next = (f.slot + 1) % kFramesInFlight;
+    auto t = std::chrono::steady_clock::now();
+    if (static_cast<std::uint32_t>(f.camera.width) != target.extent.width ||
+        static_cast<std::uint32_t>(f.camera.height) != target.extent.height) {
+      build_lod(f, target.extent);  // the window was resized between the halves
+      f.stats.lod_ms += ms_since(t);
+    }
+    const bool full = f.view.lod_tolerance_px <= 0;
+    const std::array<float, 16> view_proj = view::view_projection(f.camera, model());  // 4. draw
+    write_frame_uniforms(s, f.camera, view_proj, f.bufs.stride, f.bufs.pitch);
+    bind_buffers(s, f.bufs);
+    ensure_depth(s, target.extent);
+    const FrameInfo info{s.cmd, f.slot, view_proj.data(),
+                         {static_cast<float>(f.camera.eye[0]), static_cast<float>(f.camera.eye[1]),
+                          static_cast<float>(f.camera.eye[2])},
+                         target.extent, static_cast<double>(session.steps_done()) * model().physics.dt,
+                         lighting};
+    for (PassDrawable* d : drawables) d->prepare(info);
+    record(s, target, info, full ? full_indices : s.indices, static_cast<std::uint32_t>(f.index_count),
+           f.view.wireframe);
+    submit(s, target);
+    if (f.view.wait) wait(s);
+    f.stats.draw_ms = ms_since(t);
+    return f.stats;
+  }
+
+  void write_frame_uniforms(const Slot& s, const lod::Camera& camera, const std::array<float, 16>& view_proj,
+                            std::uint32_t stride, std::uint32_t pitch) const {
+    const view::LightingSpec& l = lighting;
+    const view::ViewSpec& v = session.scene().view;
+    const double sl = std::sqrt(l.sun[0] * l.sun[0] + l.sun[1] * l.sun[1] + l.sun[2] * l.sun[2]);
+    WaterFrame f;
+    std::memcpy(f.view_proj.m, view_proj.data(), sizeof f.view_proj.m);
+    f.eye = v4(camera.eye, model().spacing);
+    f.sun = v4({l.sun[0] / sl, l.sun[1] / sl, l.sun[2] / sl});
+    f.sky = v4(l.sky);
+    f.water = v4(l.water);
+    f.ground = v4(l.ground);
+    f.pool = {static_cast<float>(v.floor_depth), static_cast<float>(v.land_height), 0, 0};
+    f.wire = {0.02f, 0.05f, 0.08f, 0.55f};
+    f.grid = {static_cast<std::uint32_t>(model().rows), static_cast<std::uint32_t>(model().cols), stride, pitch};
+    std::memcpy(s.uniforms.mapped, &f, sizeof f);
+  }
+
+  // The slot's descriptor set points at this frame's buffers (the GPU solver's current ping-pong
+  // buffer, or the slot's CPU copies); the slot is idle, so updating it is allowed.
+  void bind_buffers(const Slot& s, const WaterSource::DrawBuffers& b) const {
+    const vk::DescriptorBufferInfo infos[] = {s.uniforms.whole(), b.state->whole(), b.normals->whole()};
+    const vk::WriteDescriptorSet writes[] = {
+        {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_FRAME, .descriptorCount = 1,
+         .descriptorType = vk::DescriptorType::eUniformBuffer, .pBufferInfo = &infos[0]},
+        {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_STATE, .descriptorCount = 1,
+         .descriptorType = vk::DescriptorType::eStorageBuffer, .pBufferInfo = &infos[1]},
+        {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_NORMALS, .descriptorCount = 1,
+         .descriptorType = vk::DescriptorType::eStorageBuffer, .pBufferInfo = &infos[2]}};
+    ctx.device().updateDescriptorSets(writes, nullptr);
+  }
+
+  void ensure_depth(Slot& s, vk::Extent2D extent) const {
+    if (*s.depth.image && s.depth.extent == extent) return;
+    s.depth = create_image(ctx, extent, kDepthFormat, vk::ImageUsageFlagBits::eDepthStencilAttachment,
+                           vk::ImageAspectFlagBits::eDepth, "depth");
+  }
+
+  // The sky at the horizon (water_shading.h's sky_color at d.y = 0): the background. A clear value
+  // is stored as given, so for a UNORM target it is sRGB-encoded here, as the shaders encode theirs.
+  std::array<float, 4> horizon_color(vk::Format format) const {
+    const auto& z = lighting.sky;
+    auto c = [&](int k) {
+      const double linear = std::min(z[k] + (1.0 - z[k]) * 0.55, 1.0);
+      if (is_srgb(format)) return static_cast<float>(linear);
+      return static_cast<float>(linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055);
+    };
+    return {c(0), c(1), c(2), 1.0f};
+  }
+
+  void record(const Slot& s, const FrameTarget& target, const FrameInfo& info, const gpu::Buffer& indices,
+              std::uint32_t index_count, bool wireframe) const {
+    const vk::raii::CommandBuffer& cmd = s.cmd;
+    cmd.reset();
+    cmd.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
+    // Compute (substeps, normals) -> vertex shader reads of state and normals. The color barrier
+    // waits at color output, where the swapchain's acquire semaphore is waited.
+    const vk::MemoryBarrier2 compute_to_vertex{.srcStageMask = S::eComputeShader, .srcAccessMask = A::eShaderWrite,
+                                               .dstStageMask = S::eVertexShader, .dstAccessMask = A::eShaderRead};
+    const vk::ImageMemoryBarrier2 begin_images[] = {
+        layout_barrier(target.image, vk::ImageAspectFlagBits::eColor, target.old_layout,
+                       vk::ImageLayout::eColorAttachmentOptimal, S::eColorAttachmentOutput, {},
+                       S::eColorAttachmentOutput, A::eColorAttachmentWrite | A::eColorAttachmentRead),
+        layout_barrier(*s.depth.image, vk::ImageAspectFlagBits::eDepth, vk::ImageLayout::eUndefined,
+                       vk::ImageLayout::eDepthAttachmentOptimal, S::eLateFragmentTests, A::eDepthStencilAttachmentWrite,
+                       S::eEarlyFragmentTests | S::eLateFragmentTests,
+                       A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite)};
+    cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &compute_to_vertex,
+                                            .imageMemoryBarrierCount = 2, .pImageMemoryBarriers = begin_images});
+
+    const vk::RenderingAttachmentInfo color{
+        .imageView = target.view, .imageLayout = vk::ImageLayout::eColorAttachmentOptimal,
+        .loadOp = vk::AttachmentLoadOp::eClear, .storeOp = vk::AttachmentStoreOp::eStore,
+        .clearValue = vk::ClearValue{.color = {.float32 = horizon_color(target.format)}}};
+    const vk::RenderingAttachmentInfo depth{
+        .imageView = *s.depth.view, .imageLayout = vk::ImageLayout::eDepthAttachmentOptimal,
+        .loadOp = vk::AttachmentLoadOp::eClear, .storeOp = vk::AttachmentStoreOp::eDontCare,
+        .clearValue = vk::ClearValue{.depthStencil = {.depth = 1.0f, .stencil = 0}}};
+    cmd.beginRendering(vk::RenderingInfo{.renderArea = {{0, 0}, target.extent}, .layerCount = 1,
+                                         .colorAttachmentCount = 1, .pColorAttachments = &color,
+                                         .pDepthAttachment = &depth});
+    cmd.setViewport(0, vk::Viewport{0, 0, static_cast<float>(target.extent.width),
+                                    static_cast<float>(target.extent.height), 0, 1});
+    cmd.setScissor(0, vk::Rect2D{{0, 0}, target.extent});
+    for (PassDrawable* d : drawables) d->draw_occluding(info);
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *s.set, nullptr);
+    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.land);
+    cmd.bindVertexBuffers(0, *land.buffer, vk::DeviceSize{0});
+    cmd.draw(land_vertices, 1, 0, 0);
+    cmd.bindIndexBuffer(*indices.buffer, 0, vk::IndexType::eUint32);
+    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.water);
+    cmd.drawIndexed(index_count, 1, 0, 0, 0);
+    if (wireframe && *pipes.wire) {
+      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.wire);
+      cmd.drawIndexed(index_count, 1, 0, 0, 0);
+    }
+    for (PassDrawable* d : drawables) d->draw(info);
+    cmd.endRendering();
+
+    // The image to its final layout; and the next frame's substeps must not overwrite the state
+    // or normals while this draw reads them (write-after-read: an execution dependency).
+    const bool present = target.final_layout == vk::ImageLayout::ePresentSrcKHR;
+    const vk::ImageMemoryBarrier2 end_image = layout_barrier(
+        target.image, vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eColorAttachmentOptimal, target.final_layout,
+        S::eColorAttachmentOutput, A::eColorAttachmentWrite, present ? S::eNone : S::eCopy,
+        present ? A::eNone : A::eTransferRead);
+    const vk::MemoryBarrier2 vertex_to_compute{.srcStageMask = S::eVertexShader, .dstStageMask = S::eComputeShader | S::eCopy};
+    cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &vertex_to_compute,
+                                            .imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &end_image});
+    cmd.end();
+  }
+
+  void submit(const Slot& s, const FrameTarget& target) const {
+    ctx.device().resetFences(*s.done);
+    const vk::CommandBufferSubmitInfo cmd_info{.commandBuffer = *s.cmd};
+    const vk::SemaphoreSubmitInfo wait_info{.semaphore = target.wait_semaphore, .stageMask = S::eColorAttachmentOutput};
+    const vk::SemaphoreSubmitInfo signal_info{.semaphore = target.signal_semaphore, .stageMask = S::eAllCommands};
+    ctx.queue().submit2(vk::SubmitInfo2{.waitSemaphoreInfoCount = target.wait_semaphore ? 1u : 0u,
+                                        .pWaitSemaphoreInfos = &wait_info,
+                                        .commandBufferInfoCount = 1, .pCommandBufferInfos = &cmd_info,
+                                        .signalSemaphoreInfoCount = target.signal_semaphore ? 1u : 0u,
+                                        .pSignalSemaphoreInfos = &signal_info},
+                        *s.done);
+  }
+};
+
+FrameLoop::FrameLoop(const gpu::Context& ctx, sim::Session& session, vk::Format color_format)
+    : impl_(std::make_unique<Impl>(ctx, session, color_format)) {}
+
+FrameLoop::~FrameLoop() {
+  if (!impl_) return;
+  impl_->session.set_before_change({});
+  impl_->wait_all();
+}
+
+FrameStats FrameLoop::frame(const FrameTarget& target, const FrameView& view) {
+  impl_->simulate(view, target.extent);
+  return impl_->draw(target);
+}
+FrameStats FrameLoop::simulate(const FrameView& view, vk::Extent2D extent) { return impl_->simulate(view, extent); }
+bool FrameLoop::simulated() const { return impl_->has_simulated(); }
+FrameStats FrameLoop::draw(const FrameTarget& target) { return impl_->draw(target); }
+void FrameLoop::wait_idle() const { impl_->wait_all(); }
+
+void FrameLoop::set_sun(const std::array<double, 3>& toward_sun) { impl_->lighting.sun = toward_sun; }
+void FrameLoop::add_drawable(PassDrawable& drawable) { impl_->drawables.push_back(&drawable); }
+
+const sim::Session& FrameLoop::session() const { return impl_->session; }
+const scene::Scene& FrameLoop::scene() const { return impl_->session.scene(); }
+const sim::WaterModel& FrameLoop::model() const { return impl_->session.model(); }
+vk::Format FrameLoop::color_format() const { return impl_->color_format; }
+
+lod::Camera FrameLoop::default_camera(int width, int height) const {
+  return view::scene_camera(impl_->session.scene().camera, impl_->session.model(), width, height);
+}
+
+}  // namespace pond::render

@@ -1,0 +1,28 @@
+#pragma once
+// The parts every pond graphics pipeline shares: a vertex and a fragment shader from embedded
+// SPIR-V, one viewport and scissor set per frame (dynamic), no multisampling, one color attachment
+// and a depth attachment through dynamic rendering (so the same pipeline draws into an offscreen
+// image or a swapchain image). Each pipeline file describes only what differs.
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include "gpu/context.h"
+
+namespace pond::render {
+
+struct GraphicsPipelineDesc {
+  std::span<const std::uint32_t> vert, frag;  // SPIR-V
+  vk::PipelineVertexInputStateCreateInfo vertex_input;
+  vk::PipelineInputAssemblyStateCreateInfo assembly;
+  vk::PipelineRasterizationStateCreateInfo raster;
+  vk::PipelineDepthStencilStateCreateInfo depth;
+  vk::PipelineColorBlendAttachmentState blend;
+  std::string name;  // debug name
+};
+
+vk::raii::Pipeline create_graphics_pipeline(const gpu::Context& ctx, const vk::raii::PipelineLayout& layout,
+                                            vk::Format color, vk::Format depth,
+                                            const GraphicsPipelineDesc& desc);
+
+}  // namespace pond::render

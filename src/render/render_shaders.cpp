@@ -1,0 +1,18 @@
+#include "render/render_shaders.h"
+
+namespace pond::render {
+namespace {
+#include "land_frag.spv.h"
+#include "land_vert.spv.h"
+#include "water_frag.spv.h"
+#include "water_vert.spv.h"
+#include "water_wire_frag.spv.h"
+}  // namespace
+
+std::span<const std::uint32_t> water_vert_spirv() { return pond_spirv_water_vert; }
+std::span<const std::uint32_t> water_frag_spirv() { return pond_spirv_water_frag; }
+std::span<const std::uint32_t> water_wire_frag_spirv() { return pond_spirv_water_wire_frag; }
+std::span<const std::uint32_t> land_vert_spirv() { return pond_spirv_land_vert; }
+std::span<const std::uint32_t> land_frag_spirv() { return pond_spirv_land_frag; }
+
+}  // namespace pond::render

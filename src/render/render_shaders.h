@@ -1,0 +1,15 @@
+#pragma once
+// The SPIR-V of the water renderer's shaders (shaders/water.*, land.*), compiled at build time,
+// validated with spirv-val and embedded (cmake/Shaders.cmake).
+#include <cstdint>
+#include <span>
+
+namespace pond::render {
+
+std::span<const std::uint32_t> water_vert_spirv();
+std::span<const std::uint32_t> water_frag_spirv();
+std::span<const std::uint32_t> water_wire_frag_spirv();
+std::span<const std::uint32_t> land_vert_spirv();
+std::span<const std::uint32_t> land_frag_spirv();
+
+}  // namespace pond::render

@@ -1,0 +1,310 @@
+#include "render/tree_drawable.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <numbers>
+#include <span>
+#include <string>
+
+#include "gpu/buffer.h"
+#include "tree/tree_lod.h"
+#include "tree/tree_mesh.h"
+#include "render/tree_pipeline.h"
+#include "sim/wind_ripples.h"
+#include "shared/tree_render.h"
+#include "tree/noise.h"
+
+namespace pond::render {
+namespace {
+
+namespace sh = shared::tree_wind;
+using BU = vk::BufferUsageFlagBits;
+
+// Linear colours: dark bark, a summer green, and the article's near-black lines.
+constexpr sh::vec4 kBark{0.16f, 0.1f, 0.06f, 0.0f};
+constexpr sh::vec4 kLeaf{0.09f, 0.24f, 0.045f, 0.0f};
+constexpr sh::vec4 kLine{0.05f, 0.04f, 0.03f, 1.0f};
+
+sh::vec4 v4(const std::array<double, 3>& a) {
+  return {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2]), 0.0f};
+}
+
+struct Instance {
+  sh::vec4 base;  // foot (world) and scale
+  tree::WindState wind;
+  // This frame's (prepare()): the wind pushed to the shader, the thinnest level drawn as tubes and
+  // the leaves' shape.
+  tree::TreeWindFrame frame{};
+  int thinnest_tube = 1;
+  bool diamond_leaves = true;
+  tree::Pruning leaves;              // of the far leaves' triangles (used when not diamonds)
+  std::vector<tree::Pruning> twigs;  // of each twig-line level below thinnest_tube (index: level)
+};
+
+struct SlotResources {
+  gpu::Buffer uniforms;
+  vk::raii::DescriptorSet set = nullptr;
+};
+
+}  // namespace
+
+struct TreeDrawable::Impl {
+  const gpu::Context& ctx;
+  tree::TreeSpec spec;
+  tree::WindSpec wind_spec;
+  tree::UserWind user;
+  tree::NoiseTable noise;
+  TreePipelines pipes;
+  tree::Tree grown;
+  tree::TreeMesh mesh;
+  tree::TreeBounds bounds;
+  gpu::Buffer vertices, indices, skeleton, parents;
+  vk::raii::DescriptorPool pool = nullptr;
+  std::vector<SlotResources> slots;
+  std::vector<Instance> instances;
+  bool level_of_detail = true;
+  bool manual_clock = false;
+  double pending_seconds = 0.0;  // manual clock: advanced since the last frame
+  double last_seconds = 0.0;     // simulated clock: FrameInfo::seconds of the last frame
+
+  Impl(const gpu::Context& c, const FrameLoop& loop, const tree::TreeSpec& t, const tree::WindSpec& w)
+      : ctx(c), spec(t), wind_spec(w), user(sim::scene_user_wind(w)), noise(tree::make_noise_table(w.seed)),
+        pipes(create_tree_pipelines(c, loop.color_format(), FrameLoop::kDepthFormat)) {
+    const vk::DescriptorPoolSize sizes[] = {
+        {.type = vk::DescriptorType::eUniformBuffer, .descriptorCount = FrameLoop::kFramesInFlight},
+        {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 2 * FrameLoop::kFramesInFlight}};
+    pool = vk::raii::DescriptorPool(
+        ctx.device(), vk::DescriptorPoolCreateInfo{.flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
+                                                   .maxSets = FrameLoop::kFramesInFlight, .poolSizeCount = 2,
+                                                   .pPoolSizes = sizes});
+    for (std::uint32_t k = 0; k < FrameLoop::kFramesInFlight; ++k) {
+      SlotResources s;
+      s.uniforms = gpu::create_buffer(ctx, sizeof(sh::TreeRenderFrame), BU::eUniformBuffer, gpu::MemoryUse::upload,
+                                 "tree frame uniforms, slot " + std::to_string(k));
+      const vk::DescriptorSetLayout layout = *pipes.set_layout;
+      s.set = std::move(vk::raii::DescriptorSets(
+          ctx.device(), vk::DescriptorSetAllocateInfo{.descriptorPool = *pool, .descriptorSetCount = 1,
+                                                      .pSetLayouts = &layout})[0]);
+      slots.push_back(std::move(s));
+    }
+    grow();
+    const sim::WaterModel& model = loop.model();
+    const double land = loop.scene().view.land_height;
+    for (std::size_t k = 0; k < spec.positions.size(); ++k) {
+      Instance inst;
+      const auto& rc = spec.positions[k];
+      inst.base = {static_cast<float>(rc[1] * model.spacing), static_cast<float>(land),
+                   static_cast<float>(rc[0] * model.spacing), 0.0f};
+      inst.wind.phase = tree::instance_phase(static_cast<int>(k));
+      instances.push_back(inst);
+    }
+    rescale();
+  }
+
+  // Grows spec's tree at trunk length 1 (tree units; each instance scales it to spec.height) and
+  // uploads its mesh and skeleton.
+  void grow() {
+    grown = tree::grow_tree(tree::TreeParams{.depth = spec.depth, .seed = spec.seed, .trunk_length = 1.0f});
+    mesh = tree::build_tree_mesh(grown);
+    bounds = tree::tree_bounds(grown, mesh);
+    vertices = gpu::create_buffer(ctx, mesh.vertices.size() * sizeof(tree::TreeMeshVertex), BU::eVertexBuffer | BU::eTransferDst,
+                             gpu::MemoryUse::device, "tree mesh vertices");
+    gpu::upload(ctx, vertices, std::as_bytes(std::span(mesh.vertices)));
+    indices = gpu::create_buffer(ctx, mesh.indices.size() * 4, BU::eIndexBuffer | BU::eTransferDst, gpu::MemoryUse::device,
+                            "tree mesh indices");
+    gpu::upload(ctx, indices, std::as_bytes(std::span(mesh.indices)));
+    skeleton = gpu::create_buffer(ctx, grown.size() * sizeof(tree::TreeVertex), BU::eStorageBuffer | BU::eTransferDst,
+                             gpu::MemoryUse::device, "tree skeleton");
+    gpu::upload(ctx, skeleton, std::as_bytes(std::span(grown.vertices)));
+    parents = gpu::create_buffer(ctx, grown.size() * sizeof(std::int32_t), BU::eStorageBuffer | BU::eTransferDst,
+                            gpu::MemoryUse::device, "tree parents");
+    gpu::upload(ctx, parents, std::as_bytes(std::span(grown.parents)));
+    for (const SlotResources& s : slots) {
+      const vk::DescriptorBufferInfo infos[] = {s.uniforms.whole(), skeleton.whole(), parents.whole()};
+      const vk::WriteDescriptorSet writes[] = {
+          {.dstSet = *s.set, .dstBinding = POND_TREE_BINDING_FRAME, .descriptorCount = 1,
+           .descriptorType = vk::DescriptorType::eUniformBuffer, .pBufferInfo = &infos[0]},
+          {.dstSet = *s.set, .dstBinding = POND_TREE_BINDING_SKELETON, .descriptorCount = 1,
+           .descriptorType = vk::DescriptorType::eStorageBuffer, .pBufferInfo = &infos[1]},
+          {.dstSet = *s.set, .dstBinding = POND_TREE_BINDING_PARENTS, .descriptorCount = 1,
+           .descriptorType = vk::DescriptorType::eStorageBuffer, .pBufferInfo = &infos[2]}};
+      ctx.device().updateDescriptorSets(writes, nullptr);
+    }
+  }
+
+  void rescale() {
+    const float scale = static_cast<float>(spec.height) / mesh.rest_height;
+    for (Instance& inst : instances) inst.base.w = scale;
+  }
+
+  tree::BendMode bend_mode() const {
+    return spec.bend == tree::TreeBend::keep_length ? tree::BendMode::keep_length : tree::BendMode::article;
+  }
+
+  void prepare(const FrameInfo& info) {
+    double dt = pending_seconds;
+    if (!manual_clock) dt = info.seconds - last_seconds;
+    last_seconds = info.seconds;
+    pending_seconds = 0.0;
+    const tree::TreeLodCamera lod_camera = tree::tree_lod_camera(info.view_proj, static_cast<int>(info.extent.height));
+    for (Instance& inst : instances) {
+      tree::advance_wind(inst.wind, noise, user, dt);
+      inst.frame = tree::wind_frame(inst.wind, noise, user, bend_mode());
+      const tree::Sphere s = tree::bent_bounds(bounds, inst.frame);
+      const tree::Sphere world{tree::Vec3{inst.base.x, inst.base.y, inst.base.z} + s.centre * inst.base.w, s.radius * inst.base.w};
+      const float pixels = level_of_detail ? tree::nearest_pixels_per_unit(lod_camera, world, inst.base.w)
+                                           : std::numeric_limits<float>::infinity();
+      inst.thinnest_tube = tree::thinnest_tube_level(pixels, grown.depth);
+      inst.diamond_leaves = tree::diamond_leaves(pixels, mesh.longest_leaf);
+      // Without the level of detail `pixels` is infinite: diamonds, every level a tube, no pruning.
+      inst.leaves = tree::prune(mesh.leaf_triangles.count / 3, mesh.mean_leaf_area * pixels * pixels, tree::kPrunedLeafArea);
+      inst.twigs.assign(static_cast<std::size_t>(inst.thinnest_tube), {});  // index: level; 0 unused
+      for (int level = 1; level < inst.thinnest_tube; ++level)
+        inst.twigs[static_cast<std::size_t>(level)] = tree::prune(
+            mesh.lines.level(level).count / 2, 2.0f * tree::tree_tube_radius(grown.depth, level) * pixels, tree::kPrunedTwigPixels);
+    }
+
+    const auto& sun = info.lighting.sun;
+    const double sl = std::sqrt(sun[0] * sun[0] + sun[1] * sun[1] + sun[2] * sun[2]);
+    sh::TreeRenderFrame f;
+    std::memcpy(f.view_proj.m, info.view_proj, sizeof f.view_proj.m);
+    f.eye = {info.eye[0], info.eye[1], info.eye[2], 0.0f};
+    f.sun = v4({sun[0] / sl, sun[1] / sl, sun[2] / sl});
+    f.sky = v4(info.lighting.sky);
+    f.bark = kBark;
+    f.leaf = kLeaf;
+    f.line = kLine;
+    f.lod = {lod_camera.pixels_per_unit, static_cast<float>(info.extent.width), static_cast<float>(info.extent.height), 0.0f};
+    std::memcpy(slots[info.slot].uniforms.mapped, &f, sizeof f);
+  }
+
+  // What one draw of an instance draws: an index range, and the pruning's scales for the shader.
+  struct Part {
+    tree::IndexRange range;
+    float leaf_scale = 1.0f, twig_scale = 1.0f;
+  };
+  // Draws each instance's parts of the mesh, `parts(instance, add)` calling add(Part) for each,
+  // with `vertex_offset`.
+  template <class PartsOf>
+  void draw_instances(const vk::raii::CommandBuffer& cmd, const vk::raii::Pipeline& pipe, PartsOf parts,
+                      std::int32_t vertex_offset = 0) const {
+    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipe);
+    for (const Instance& inst : instances)
+      parts(inst, [&](const Part& part) {
+        if (part.range.count == 0) return;
+        const sh::TreeInstance push{.base = inst.base, .wind = inst.frame,
+                                    .pruning = {part.leaf_scale, part.twig_scale, mesh.longest_leaf, 0.0f}};
+        cmd.pushConstants<sh::TreeInstance>(*pipes.layout, vk::ShaderStageFlagBits::eVertex, 0, push);
+        cmd.drawIndexed(part.range.count, 1, part.range.first, vertex_offset, 0);
+      });
+  }
+
+  void draw(const FrameInfo& info) const {
+    const vk::raii::CommandBuffer& cmd = info.cmd;
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *slots[info.slot].set, nullptr);
+    cmd.bindVertexBuffers(0, *vertices.buffer, vk::DeviceSize{0});
+    cmd.bindIndexBuffer(*indices.buffer, 0, vk::IndexType::eUint32);
+    if (spec.draw == tree::TreeDraw::tubes) {
+      draw_instances(cmd, pipes.tubes, [&](const Instance& i, auto add) { add({mesh.tubes.at_least(i.thinnest_tube)}); });
+      // Each level below the tubes as its (pruned) twig lines: a prefix of the level's shuffled order.
+      draw_instances(
+          cmd, pipes.twigs,
+          [&](const Instance& i, auto add) {
+            for (int level = 1; level < i.thinnest_tube; ++level) {
+              const tree::Pruning& p = i.twigs[static_cast<std::size_t>(level)];
+              add({{mesh.lines.level(level).first, 2 * p.count}, 1.0f, p.scale});
+            }
+          },
+          mesh.twig_vertices);
+    } else {
+      draw_instances(cmd, pipes.lines, [&](const Instance&, auto add) { add({mesh.lines.all}); });
+    }
+    if (spec.leaves)
+      draw_instances(cmd, pipes.leaves, [&](const Instance& i, auto add) {
+        if (i.diamond_leaves)
+          add({mesh.leaves});
+        else  // a prefix of the shuffled triangles, each grown so the sample covers the crown's area
+          add({{mesh.leaf_triangles.first, 3 * i.leaves.count}, std::sqrt(i.leaves.scale), 1.0f});
+      });
+  }
+};
+
+TreeDrawable::TreeDrawable(const gpu::Context& ctx, const FrameLoop& loop, const tree::TreeSpec& tree,
+                           const tree::WindSpec& wind)
+    : impl_(std::make_unique<Impl>(ctx, loop, tree, wind)) {}
+
+// Frames in flight may still read the tree's buffers.
+TreeDrawable::~TreeDrawable() {
+  if (impl_) impl_->ctx.device().waitIdle();
+}
+
+void TreeDrawable::prepare(const FrameInfo& frame) { impl_->prepare(frame); }
+void TreeDrawable::draw(const FrameInfo& frame) { impl_->draw(frame); }
+
+void TreeDrawable::set_wind_direction(double radians) {
+  impl_->user.direction = static_cast<float>(radians);
+  impl_->wind_spec.direction_deg = radians * 180.0 / std::numbers::pi;
+}
+
+void TreeDrawable::set_strength(double strength) {
+  const double s = std::clamp(strength, 0.0, static_cast<double>(tree::kMaxWindStrength));
+  impl_->user.strength = static_cast<float>(s);
+  impl_->wind_spec.strength = s;
+}
+
+void TreeDrawable::regrow(std::uint64_t seed) {
+  impl_->ctx.device().waitIdle();  // the buffers being replaced may still be read by frames in flight
+  impl_->spec.seed = seed;
+  impl_->grow();
+  impl_->rescale();
+}
+
+void TreeDrawable::set_bend_mode(tree::TreeBend mode) { impl_->spec.bend = mode; }
+void TreeDrawable::set_draw_mode(tree::TreeDraw mode) { impl_->spec.draw = mode; }
+void TreeDrawable::set_leaves(bool leaves) { impl_->spec.leaves = leaves; }
+void TreeDrawable::set_level_of_detail(bool on) { impl_->level_of_detail = on; }
+
+void TreeDrawable::set_manual_clock() { impl_->manual_clock = true; }
+void TreeDrawable::advance_clock(double seconds) {
+  if (seconds > 0.0) impl_->pending_seconds += seconds;
+}
+
+const tree::TreeSpec& TreeDrawable::spec() const { return impl_->spec; }
+const tree::WindSpec& TreeDrawable::wind() const { return impl_->wind_spec; }
+const tree::Tree& TreeDrawable::tree() const { return impl_->grown; }
+double TreeDrawable::wind_time() const {
+  return impl_->instances.empty() ? 0.0 : impl_->instances.front().wind.time;
+}
+
+std::vector<bool> TreeDrawable::diamond_leaves() const {
+  std::vector<bool> out;
+  for (const Instance& inst : impl_->instances) out.push_back(inst.diamond_leaves);
+  return out;
+}
+
+std::vector<int> TreeDrawable::thinnest_tube_levels() const {
+  std::vector<int> out;
+  for (const Instance& inst : impl_->instances) out.push_back(inst.thinnest_tube);
+  return out;
+}
+
+std::vector<tree::TreeWindFrame> TreeDrawable::wind_frames() const {
+  std::vector<tree::TreeWindFrame> out;
+  for (const Instance& inst : impl_->instances)
+    out.push_back(tree::wind_frame(inst.wind, impl_->noise, impl_->user, impl_->bend_mode()));
+  return out;
+}
+
+TreeDrawStats TreeDrawable::stats() const {
+  const Impl& m = *impl_;
+  return {.instances = m.instances.size(),
+          .skeleton_vertices = m.grown.size(),
+          .mesh_vertices = m.mesh.vertices.size(),
+          .line_segments = m.mesh.lines.all.count / 2,
+          .tube_triangles = m.mesh.tubes.all.count / 3,
+          .leaf_triangles = m.mesh.leaves.count / 3};
+}
+
+}  // namespace pond::render

@@ -1,0 +1,33 @@
+#pragma once
+// The wind tree's graphics pipelines (dynamic rendering into the frame loop's color format and
+// depth), sharing one descriptor-set layout (shared/tree_render.h bindings) and the TreeInstance
+// push constants:
+//  - lines: the skeleton as a line list, unlit (the article's look);
+//  - twigs: the level of detail's twig lines (tree/tree_lod.h), lit, lighting the pixels their tubes
+//           would (shaders/tree.frag);
+//  - tubes: the branches' tubes as triangles, lit, back faces culled (their rings wind counter-clockwise
+//           seen from outside: tree_mesh.cpp);
+//  - leaves: triangles, lit, no culling (a leaf is seen from both sides).
+#include <cstdint>
+#include <span>
+
+#include "gpu/context.h"
+
+namespace pond::render {
+
+struct TreePipelines {
+  vk::raii::DescriptorSetLayout set_layout = nullptr;
+  vk::raii::PipelineLayout layout = nullptr;
+  vk::raii::Pipeline lines = nullptr;
+  vk::raii::Pipeline twigs = nullptr;
+  vk::raii::Pipeline tubes = nullptr;
+  vk::raii::Pipeline leaves = nullptr;
+};
+
+TreePipelines create_tree_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format);
+
+// SPIR-V of shaders/tree.vert and tree.frag's bark build (embedded at build time).
+std::span<const std::uint32_t> tree_vert_spirv();
+std::span<const std::uint32_t> tree_frag_spirv();
+
+}  // namespace pond::render

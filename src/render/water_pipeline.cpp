@@ -1,0 +1,85 @@
+#include "render/water_pipeline.h"
+
+#include <span>
+
+#include "render/graphics_pipeline.h"
+#include "render/render_layout.h"
+#include "render/render_shaders.h"
+
+namespace pond::render {
+namespace {
+
+struct PipelineSpec {
+  std::span<const std::uint32_t> vert, frag;
+  bool land_vertices = false;  // LandVertex attributes (else vertex pulling, no attributes)
+  bool lines = false;          // polygon mode line, depth bias towards the camera, alpha blending
+  const char* name;
+};
+
+vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayout& layout, vk::Format color,
+                          vk::Format depth, const PipelineSpec& s) {
+  const vk::VertexInputBindingDescription binding{.binding = 0, .stride = sizeof(LandVertex),
+                                                  .inputRate = vk::VertexInputRate::eVertex};
+  const vk::VertexInputAttributeDescription attributes[] = {
+      {.location = 0, .binding = 0, .format = vk::Format::eR32G32B32A32Sfloat, .offset = offsetof(LandVertex, position)},
+      {.location = 1, .binding = 0, .format = vk::Format::eR32G32B32A32Sfloat, .offset = offsetof(LandVertex, normal)}};
+  const vk::PipelineVertexInputStateCreateInfo vertex_input =
+      s.land_vertices ? vk::PipelineVertexInputStateCreateInfo{.vertexBindingDescriptionCount = 1,
+                                                               .pVertexBindingDescriptions = &binding,
+                                                               .vertexAttributeDescriptionCount = 2,
+                                                               .pVertexAttributeDescriptions = attributes}
+                      : vk::PipelineVertexInputStateCreateInfo{};
+  const vk::PipelineInputAssemblyStateCreateInfo assembly{.topology = vk::PrimitiveTopology::eTriangleList};
+  // Lines: pulled towards the camera by a bias proportional to the slope, so they win over the
+  // surface they lie on without showing through waves in front.
+  const vk::PipelineRasterizationStateCreateInfo raster{
+      .polygonMode = s.lines ? vk::PolygonMode::eLine : vk::PolygonMode::eFill,
+      .cullMode = vk::CullModeFlagBits::eNone,
+      .frontFace = vk::FrontFace::eCounterClockwise,
+      .depthBiasEnable = s.lines ? VK_TRUE : VK_FALSE,
+      .depthBiasConstantFactor = s.lines ? -2.0f : 0.0f,
+      .depthBiasSlopeFactor = s.lines ? -1.5f : 0.0f,
+      .lineWidth = 1.0f};
+  const vk::PipelineDepthStencilStateCreateInfo depth_state{
+      .depthTestEnable = VK_TRUE, .depthWriteEnable = s.lines ? VK_FALSE : VK_TRUE,
+      .depthCompareOp = vk::CompareOp::eLessOrEqual};
+  using CC = vk::ColorComponentFlagBits;
+  const vk::PipelineColorBlendAttachmentState blend{
+      .blendEnable = s.lines ? VK_TRUE : VK_FALSE,
+      .srcColorBlendFactor = vk::BlendFactor::eSrcAlpha, .dstColorBlendFactor = vk::BlendFactor::eOneMinusSrcAlpha,
+      .colorBlendOp = vk::BlendOp::eAdd,
+      .srcAlphaBlendFactor = vk::BlendFactor::eZero, .dstAlphaBlendFactor = vk::BlendFactor::eOne,
+      .alphaBlendOp = vk::BlendOp::eAdd,
+      .colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
+  return create_graphics_pipeline(ctx, layout, color, depth,
+                                  {s.vert, s.frag, vertex_input, assembly, raster, depth_state, blend, s.name});
+}
+
+}  // namespace
+
+WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format) {
+  WaterPipelines p;
+  using SS = vk::ShaderStageFlagBits;
+  const vk::DescriptorSetLayoutBinding bindings[] = {
+      {.binding = POND_RENDER_BINDING_FRAME, .descriptorType = vk::DescriptorType::eUniformBuffer,
+       .descriptorCount = 1, .stageFlags = SS::eVertex | SS::eFragment},
+      {.binding = POND_RENDER_BINDING_STATE, .descriptorType = vk::DescriptorType::eStorageBuffer,
+       .descriptorCount = 1, .stageFlags = SS::eVertex},
+      {.binding = POND_RENDER_BINDING_NORMALS, .descriptorType = vk::DescriptorType::eStorageBuffer,
+       .descriptorCount = 1, .stageFlags = SS::eVertex}};
+  p.set_layout = vk::raii::DescriptorSetLayout(
+      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = 3, .pBindings = bindings});
+  const vk::DescriptorSetLayout set_layout = *p.set_layout;
+  p.layout = vk::raii::PipelineLayout(ctx.device(),
+                                      vk::PipelineLayoutCreateInfo{.setLayoutCount = 1, .pSetLayouts = &set_layout});
+  p.land = create(ctx, p.layout, color_format, depth_format,
+                  {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true, .name = "land"});
+  p.water = create(ctx, p.layout, color_format, depth_format,
+                   {.vert = water_vert_spirv(), .frag = water_frag_spirv(), .name = "water"});
+  if (ctx.physical().getFeatures().fillModeNonSolid)
+    p.wire = create(ctx, p.layout, color_format, depth_format,
+                    {.vert = water_vert_spirv(), .frag = water_wire_frag_spirv(), .lines = true, .name = "water LOD wireframe"});
+  return p;
+}
+
+}  // namespace pond::render

@@ -1,0 +1,23 @@
+#pragma once
+// The graphics pipelines of the water renderer, all for dynamic rendering into one color format
+// plus a depth buffer, sharing one descriptor-set layout (shared/water_render.h bindings):
+//  - land:  shore, islands, pool rim (LandVertex buffer);
+//  - water: the surface pulled from the state and normal buffers by node index;
+//  - wire:  the same triangles as lines over the water (the LOD overlay); null when the device
+//           lacks fillModeNonSolid.
+// No culling: large splashes may fold the surface over.
+#include "gpu/context.h"
+
+namespace pond::render {
+
+struct WaterPipelines {
+  vk::raii::DescriptorSetLayout set_layout = nullptr;
+  vk::raii::PipelineLayout layout = nullptr;
+  vk::raii::Pipeline land = nullptr;
+  vk::raii::Pipeline water = nullptr;
+  vk::raii::Pipeline wire = nullptr;
+};
+
+WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format);
+
+}  // namespace pond::render

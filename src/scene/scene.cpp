@@ -1,0 +1,283 @@
+#include "scene/scene.h"
+
+#include <cmath>
+#include <cstdio>
+#include <unistd.h>
+
+#include "core/errors.h"
+#include "core/output_file.h"
+#include "scene/json_fields.h"
+#include "sim/stability.h"
+
+namespace pond::scene {
+
+using sim::ConstraintRect;
+using sim::GridSpec;
+using sim::NodeKind;
+using sim::Perturbation;
+using sim::PerturbMode;
+using sim::PerturbTarget;
+using sim::Physics;
+using tree::TreeBend;
+using tree::TreeDraw;
+using tree::TreeSpec;
+using tree::WindSpec;
+using view::CameraSpec;
+using view::LightingSpec;
+using view::ViewSpec;
+namespace {
+
+#include "default_scene.inc"  // kDefaultSceneJson, generated from scenes/default.json
+
+// Bytes the CPU solver holds per node: two states of 6 floats, normals, the kind byte.
+constexpr double kBytesPerNode = 2 * 6 * 4 + 3 * 4 + 1;
+constexpr int kMaxGridSide = 1 << 16;
+constexpr int kMaxSubsteps = 10000;
+
+NodeKind parse_kind(JsonFields& f, const char* key, bool allow_free) {
+  const std::string s = allow_free ? f.text(key, "fixed", {"fixed", "vertical", "free"})
+                                   : f.text(key, "fixed", {"fixed", "vertical"});
+  if (s == "vertical") return NodeKind::vertical;
+  if (s == "free") return NodeKind::free;
+  return NodeKind::fixed;
+}
+
+double physical_memory_bytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 1e18;
+}
+
+void parse_grid(JsonFields f, GridSpec& g) {
+  g.rows = static_cast<int>(f.integer("rows", g.rows, 2, kMaxGridSide));
+  g.cols = static_cast<int>(f.integer("cols", g.cols, 2, kMaxGridSide));
+  g.spacing = f.number("spacing", g.spacing);
+  if (!(g.spacing > 0.0)) f.fail("spacing", "must be positive");
+  f.finish();
+  const double bytes = static_cast<double>(g.rows) * g.cols * kBytesPerNode;
+  if (bytes > 0.75 * physical_memory_bytes())
+    f.fail("is " + std::to_string(g.rows) + " x " + std::to_string(g.cols) + ": needs " +
+           std::to_string(static_cast<long long>(bytes / (1 << 20))) +
+           " MiB, more than this machine's memory allows");
+}
+
+void parse_physics(JsonFields f, Physics& p) {
+  p.mass = f.number("mass", p.mass);
+  p.stiffness = f.number("stiffness", p.stiffness);
+  p.damping = f.number("damping", p.damping);
+  p.dt = f.number("dt", p.dt);
+  p.substeps = static_cast<int>(f.integer("substeps", p.substeps, 1, kMaxSubsteps));
+  p.rest_ratio = f.number("rest_ratio", p.rest_ratio);
+  if (const std::optional<Problem> problem = physics_problem(p)) f.fail(problem->key.c_str(), problem->what);
+  f.finish();
+}
+
+ConstraintRect parse_constraint(JsonFields f, const GridSpec& g) {
+  ConstraintRect c;
+  if (!f.has("kind")) f.fail("kind", "is missing");
+  c.kind = parse_kind(f, "kind", false);
+  f.index_range("rows", g.rows - 1, c.row0, c.row1);
+  f.index_range("cols", g.cols - 1, c.col0, c.col1);
+  f.finish();
+  return c;
+}
+
+Perturbation parse_perturbation(JsonFields f, const GridSpec& g) {
+  Perturbation p;
+  for (const char* key : {"row", "col", "radius", "amplitude"})
+    if (!f.has(key)) f.fail(key, "is missing");
+  p.step = f.integer("step", 0, 0, INT64_MAX / 2);
+  p.row = f.number("row", 0);
+  if (p.row < 0 || p.row > g.rows - 1)
+    f.fail("row", "is outside the grid's rows [0, " + std::to_string(g.rows - 1) + "]");
+  p.col = f.number("col", 0);
+  if (p.col < 0 || p.col > g.cols - 1)
+    f.fail("col", "is outside the grid's columns [0, " + std::to_string(g.cols - 1) + "]");
+  p.radius = f.number("radius", p.radius);
+  if (!(p.radius > 0.0)) f.fail("radius", "must be positive");
+  p.amplitude = f.number("amplitude", p.amplitude);
+  p.target = f.text("target", "velocity", {"velocity", "position"}) == "position"
+                 ? PerturbTarget::position : PerturbTarget::velocity;
+  p.mode = f.text("mode", "add", {"add", "set"}) == "set" ? PerturbMode::set : PerturbMode::add;
+  f.finish();
+  return p;
+}
+
+// "key": [x, y, z] of finite numbers.
+std::array<double, 3> vec3(JsonFields& f, const char* key, std::array<double, 3> fallback) {
+  if (!f.has(key)) return fallback;
+  const auto& v = f.array(key);
+  if (v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+    f.fail(key, "must be an array of three numbers [x, y, z]");
+  std::array<double, 3> out{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+  for (double d : out)
+    if (!std::isfinite(d)) f.fail(key, "must be finite");
+  return out;
+}
+
+std::array<double, 3> color(JsonFields& f, const char* key, std::array<double, 3> fallback) {
+  const std::array<double, 3> c = vec3(f, key, fallback);
+  for (double d : c)
+    if (d < 0.0 || d > 1.0) f.fail(key, "must be an RGB colour with components in [0, 1]");
+  return c;
+}
+
+CameraSpec parse_camera(JsonFields f) {
+  CameraSpec c;
+  for (const char* key : {"eye", "target"})
+    if (!f.has(key)) f.fail(key, "is missing");
+  c.eye = vec3(f, "eye", c.eye);
+  c.target = vec3(f, "target", c.target);
+  if (c.eye == c.target) f.fail("target", "must differ from camera.eye");
+  c.fovy_degrees = f.number("fovy", c.fovy_degrees);
+  if (!(c.fovy_degrees > 0.0 && c.fovy_degrees < 180.0)) f.fail("fovy", "must be in (0, 180) degrees");
+  f.finish();
+  return c;
+}
+
+void parse_view(JsonFields f, ViewSpec& v) {
+  v.steps_per_frame = f.integer("steps_per_frame", v.steps_per_frame, 0, 1000000);
+  v.lod_tolerance_px = f.number("lod_tolerance", v.lod_tolerance_px);
+  if (v.lod_tolerance_px < 0.0) f.fail("lod_tolerance", "must not be negative (0 = the full mesh)");
+  v.floor_depth = f.number("floor_depth", v.floor_depth);
+  if (!(v.floor_depth > 0.0)) f.fail("floor_depth", "must be positive");
+  v.land_height = f.number("land_height", v.land_height);
+  if (!(v.land_height > 0.0)) f.fail("land_height", "must be positive");
+  f.finish();
+}
+
+void parse_lighting(JsonFields f, LightingSpec& l) {
+  l.sun = vec3(f, "sun", l.sun);
+  if (const std::optional<Problem> problem = sun_problem(l.sun)) f.fail(problem->key.c_str(), problem->what);
+  l.water = color(f, "water", l.water);
+  l.sky = color(f, "sky", l.sky);
+  l.ground = color(f, "ground", l.ground);
+  f.finish();
+}
+
+// "tree": see TreeSpec. Positions must lie on the grid; absent, the tree stands on the island.
+TreeSpec parse_tree(JsonFields f, const Scene& scene) {
+  TreeSpec t;
+  t.depth = static_cast<int>(f.integer("depth", t.depth, 1, 10));
+  t.seed = static_cast<std::uint64_t>(f.integer("seed", static_cast<std::int64_t>(t.seed), 0, INT64_MAX));
+  t.height = f.number("height", t.height);
+  if (!(t.height > 0.0)) f.fail("height", "must be positive");
+  const auto& ps = f.array("positions");
+  if (ps.size() > 64) f.fail("positions", "holds more than 64 trees");
+  const GridSpec& g = scene.grid;
+  for (std::size_t k = 0; k < ps.size(); ++k) {
+    const std::string key = "positions[" + std::to_string(k) + "]";
+    const auto& p = ps[k];
+    if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
+      f.fail(key.c_str(), "must be a grid position [row, col] of two numbers");
+    const double row = p[0].get<double>(), col = p[1].get<double>();
+    if (!(row >= 0 && row <= g.rows - 1 && col >= 0 && col <= g.cols - 1))
+      f.fail(key.c_str(), "is outside the grid [0, " + std::to_string(g.rows - 1) + "] x [0, " +
+                              std::to_string(g.cols - 1) + "]");
+    t.positions.push_back({row, col});
+  }
+  if (ps.empty()) {
+    const ConstraintRect* island = nullptr;
+    for (const ConstraintRect& c : scene.constraints)
+      if (c.kind == NodeKind::fixed && !island) island = &c;
+    if (!island) f.fail("positions", "is missing and the scene has no fixed constraint (island) to stand on");
+    t.positions.push_back({0.5 * (island->row0 + island->row1), 0.5 * (island->col0 + island->col1)});
+  }
+  t.bend = f.text("bend", "article", {"article", "keep-length"}) == "keep-length" ? TreeBend::keep_length
+                                                                                   : TreeBend::article;
+  t.draw = f.text("draw", "tubes", {"lines", "tubes"}) == "lines" ? TreeDraw::lines : TreeDraw::tubes;
+  t.leaves = f.boolean("leaves", t.leaves);
+  f.finish();
+  return t;
+}
+
+void parse_wind(JsonFields f, WindSpec& w) {
+  w.strength = f.number("strength", w.strength);
+  if (!(w.strength >= 0.0 && w.strength <= 9.0)) f.fail("strength", "must be in [0, 9]");
+  w.direction_deg = f.number("direction_deg", w.direction_deg);
+  w.seed = static_cast<std::uint64_t>(f.integer("seed", static_cast<std::int64_t>(w.seed), 0, INT64_MAX));
+  w.ripples = f.boolean("ripples", w.ripples);
+  f.finish();
+}
+
+}  // namespace
+
+std::optional<Problem> physics_problem(const Physics& p) {
+  if (!(p.mass > 0.0)) return Problem{"mass", "must be positive"};
+  if (!(p.stiffness >= 0.0)) return Problem{"stiffness", "must not be negative"};
+  if (!(p.damping >= 0.0)) return Problem{"damping", "must not be negative"};
+  if (!(p.dt > 0.0)) return Problem{"dt", "must be positive"};
+  if (!(p.substeps >= 1 && p.substeps <= kMaxSubsteps))
+    return Problem{"substeps", "must be in [1, " + std::to_string(kMaxSubsteps) + "]"};
+  if (!(p.rest_ratio > 0.0)) return Problem{"rest_ratio", "must be positive"};
+  const double bound = sim::stability_bound(p.mass, p.stiffness, p.damping);
+  const double sub_dt = p.dt / p.substeps;
+  if (!(sub_dt < bound)) {
+    const int needed = static_cast<int>(std::floor(p.dt / bound)) + 1;
+    char msg[256];
+    std::snprintf(msg, sizeof msg,
+                  "%g%s exceeds the explicit-Euler stability bound %.6g for mass %g, "
+                  "stiffness %g, damping %g; use dt < %.6g or physics.substeps >= %d",
+                  p.dt, p.substeps > 1 ? (" / " + std::to_string(p.substeps) + " substeps").c_str() : "",
+                  bound, p.mass, p.stiffness, p.damping, bound, needed);
+    return Problem{"dt", msg};
+  }
+  return std::nullopt;
+}
+
+std::optional<Problem> sun_problem(const std::array<double, 3>& s) {
+  for (double d : s)
+    if (!std::isfinite(d)) return Problem{"sun", "must be finite"};
+  if (s[0] == 0.0 && s[1] == 0.0 && s[2] == 0.0) return Problem{"sun", "must not be zero"};
+  return std::nullopt;
+}
+
+void check_physics(const Physics& physics) {
+  if (const std::optional<Problem> p = physics_problem(physics)) throw InputError("physics." + p->key + " " + p->what);
+}
+
+void check_sun(const std::array<double, 3>& toward_sun) {
+  if (const std::optional<Problem> p = sun_problem(toward_sun)) throw InputError("lighting." + p->key + " " + p->what);
+}
+
+std::string_view default_scene_json() { return kDefaultSceneJson; }
+
+Scene parse_scene(std::string_view json_text, const std::string& source) {
+  nlohmann::json root;
+  try {
+    root = nlohmann::json::parse(json_text);
+  } catch (const nlohmann::json::exception& e) {
+    // nlohmann's message is "[json.exception.parse_error.101] parse error at line 3, column 5: ...";
+    // a number too large for a double ("1e999") is its out_of_range.406, also bad input.
+    std::string what = e.what();
+    const auto p = what.find("] ");
+    throw InputError(source + ": invalid JSON: " + (p == std::string::npos ? what : what.substr(p + 2)));
+  }
+  JsonFields f(root, "", source);
+  Scene s;
+  s.name = f.text("name", "", {});
+  parse_grid(JsonFields(f.object("grid"), "grid", source), s.grid);
+  parse_physics(JsonFields(f.object("physics"), "physics", source), s.physics);
+  s.border = parse_kind(f, "border", true);
+  const auto& cs = f.array("constraints");
+  for (std::size_t i = 0; i < cs.size(); ++i)
+    s.constraints.push_back(parse_constraint(
+        JsonFields(cs[i], "constraints[" + std::to_string(i) + "]", source), s.grid));
+  const auto& ps = f.array("perturbations");
+  for (std::size_t i = 0; i < ps.size(); ++i)
+    s.perturbations.push_back(parse_perturbation(
+        JsonFields(ps[i], "perturbations[" + std::to_string(i) + "]", source), s.grid));
+  if (f.has("camera")) s.camera = parse_camera(JsonFields(f.object("camera"), "camera", source));
+  parse_view(JsonFields(f.object("view"), "view", source), s.view);
+  parse_lighting(JsonFields(f.object("lighting"), "lighting", source), s.lighting);
+  if (f.has("tree")) s.tree = parse_tree(JsonFields(f.object("tree"), "tree", source), s);
+  parse_wind(JsonFields(f.object("wind"), "wind", source), s.wind);
+  f.finish();
+  return s;
+}
+
+Scene load_scene(const std::string& path) {
+  if (path.empty()) return parse_scene(default_scene_json(), "default scene");
+  return parse_scene(read_file(path), path);
+}
+
+}  // namespace pond::scene

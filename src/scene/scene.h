@@ -1,0 +1,44 @@
+#pragma once
+// A scene file (JSON, the contract in README.md): parsed and validated here, and nowhere else.
+// Parsing checks types, unknown keys and ranges and names the key's path in its InputError; the
+// checks that edits made at run time must pass too (the demo's physics and sun) are the same
+// functions the parser calls.
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "sim/water_spec.h"
+#include "tree/tree_spec.h"
+#include "view/view_spec.h"
+
+namespace pond::scene {
+
+// The water (sim::WaterSpec: grid, physics, border, constraints, perturbations) and how it is shown.
+struct Scene : sim::WaterSpec {
+  std::string name;
+  std::optional<view::CameraSpec> camera;
+  view::ViewSpec view;
+  view::LightingSpec lighting;
+  std::optional<tree::TreeSpec> tree;
+  tree::WindSpec wind;
+};
+
+// Parses and validates; `source` names the file in messages. Throws InputError.
+Scene parse_scene(std::string_view json_text, const std::string& source);
+Scene load_scene(const std::string& path);  // "" = the embedded default scene
+std::string_view default_scene_json();
+
+// What is wrong with a value: the key under its object ("dt") and the complaint.
+struct Problem {
+  std::string key;
+  std::string what;
+};
+// The "physics" object's ranges and the explicit-Euler stability bound.
+std::optional<Problem> physics_problem(const sim::Physics& physics);
+// lighting.sun: a direction, finite and not zero.
+std::optional<Problem> sun_problem(const std::array<double, 3>& toward_sun);
+// Throws InputError("physics.<key> <what>") / ("lighting.sun ...") for a run-time edit.
+void check_physics(const sim::Physics& physics);
+void check_sun(const std::array<double, 3>& toward_sun);
+
+}  // namespace pond::scene

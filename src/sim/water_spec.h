@@ -1,0 +1,53 @@
+#pragma once
+// The water as a scene file describes it (world units): the grid, the physics, the constraints and
+// the perturbations of the contract in README.md. Validated by src/scene; WaterModel is built from it.
+#include <cstdint>
+#include <vector>
+
+namespace pond::sim {
+
+enum class NodeKind : std::uint8_t { free = 0, vertical = 1, fixed = 2 };
+enum class PerturbTarget { velocity, position };
+enum class PerturbMode { add, set };
+
+struct GridSpec {
+  int rows = 50;
+  int cols = 50;
+  double spacing = 1.0;  // h
+};
+
+// Table 1 of the paper, plus substeps (each step of dt is integrated as `substeps` steps of
+// dt/substeps) and an optional spring pre-tension (rest length = ratio * h or ratio * h*sqrt(2)).
+struct Physics {
+  double mass = 4.0;
+  double stiffness = 7.0;
+  double damping = 0.05;
+  double dt = 0.4;
+  int substeps = 1;
+  double rest_ratio = 1.0;
+};
+
+struct ConstraintRect {
+  NodeKind kind = NodeKind::fixed;  // fixed or vertical
+  int row0 = 0, row1 = 0;           // inclusive
+  int col0 = 0, col1 = 0;           // inclusive
+};
+
+struct Perturbation {
+  std::int64_t step = 0;  // applied just before integration step number `step` (0-based)
+  double row = 0, col = 0;
+  double radius = 1.0;  // world units
+  double amplitude = 1.0;
+  PerturbTarget target = PerturbTarget::velocity;
+  PerturbMode mode = PerturbMode::add;
+};
+
+struct WaterSpec {
+  GridSpec grid;
+  Physics physics;
+  NodeKind border = NodeKind::fixed;
+  std::vector<ConstraintRect> constraints;
+  std::vector<Perturbation> perturbations;
+};
+
+}  // namespace pond::sim

@@ -1,0 +1,84 @@
+#include "view/land_mesh.h"
+
+#include <algorithm>
+
+namespace pond::view {
+namespace {
+
+using shared::water_render::vec4;
+
+struct P {
+  double x, y, z;
+};
+
+// Two triangles a-b-c, a-c-d, all with the normal n.
+void quad(std::vector<LandVertex>& out, P a, P b, P c, P d, P n) {
+  const vec4 normal{static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z), 0.0f};
+  for (const P& p : {a, b, c, a, c, d})
+    out.push_back({vec4{static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z), 1.0f}, normal});
+}
+
+// A wall quad from the top edge a-b at land height down to the floor, cut at the heights where
+// the wetness ramp bends (shared/water_render.h kLandWetAtRest), so per-vertex lighting is exact.
+void wall(std::vector<LandVertex>& out, P a, P b, double top, double bottom, P n) {
+  std::vector<double> cuts = {top};
+  for (const double y : {shared::water_render::kLandWetAtRest * top, (shared::water_render::kLandWetAtRest - 1.0) * top})
+    if (y < top && y > bottom) cuts.push_back(y);
+  cuts.push_back(bottom);
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const double y0 = cuts[k], y1 = cuts[k + 1];
+    quad(out, {a.x, y0, a.z}, {b.x, y0, b.z}, {b.x, y1, b.z}, {a.x, y1, a.z}, n);
+  }
+}
+
+}  // namespace
+
+std::vector<LandVertex> build_land_mesh(const sim::WaterModel& model, double floor_depth, double land_height) {
+  const int rows = model.rows, cols = model.cols;
+  const double h = model.spacing, top = land_height, bottom = -floor_depth;
+  auto fixed = [&](int i, int j) {
+    return model.kinds[static_cast<std::size_t>(i) * cols + j] == static_cast<std::uint8_t>(sim::NodeKind::fixed);
+  };
+  // land[i][j]: cell (i, j) spans nodes i..i+1, j..j+1.
+  const int cr = rows - 1, cc = cols - 1;
+  std::vector<std::uint8_t> land(static_cast<std::size_t>(cr) * cc);
+  for (int i = 0; i < cr; ++i)
+    for (int j = 0; j < cc; ++j)
+      land[static_cast<std::size_t>(i) * cc + j] = fixed(i, j) && fixed(i, j + 1) && fixed(i + 1, j) && fixed(i + 1, j + 1);
+  auto is_land = [&](int i, int j) { return land[static_cast<std::size_t>(i) * cc + j] != 0; };
+
+  std::vector<LandVertex> out;
+  for (int i = 0; i < cr; ++i) {
+    const double z0 = i * h, z1 = (i + 1) * h;
+    for (int j = 0; j < cc;) {
+      if (!is_land(i, j)) { ++j; continue; }
+      int k = j;
+      while (k < cc && is_land(i, k)) ++k;  // a run of land cells [j, k): one top quad
+      quad(out, {j * h, top, z0}, {j * h, top, z1}, {k * h, top, z1}, {k * h, top, z0}, {0, 1, 0});
+      j = k;
+    }
+    // Walls where land meets water, facing the water.
+    for (int j = 0; j < cc; ++j) {
+      if (!is_land(i, j)) continue;
+      const double x0 = j * h, x1 = (j + 1) * h;
+      if (i > 0 && !is_land(i - 1, j)) wall(out, {x0, top, z0}, {x1, top, z0}, top, bottom, {0, 0, -1});
+      if (i + 1 < cr && !is_land(i + 1, j)) wall(out, {x0, top, z1}, {x1, top, z1}, top, bottom, {0, 0, 1});
+      if (j > 0 && !is_land(i, j - 1)) wall(out, {x0, top, z0}, {x0, top, z1}, top, bottom, {-1, 0, 0});
+      if (j + 1 < cc && !is_land(i, j + 1)) wall(out, {x1, top, z0}, {x1, top, z1}, top, bottom, {1, 0, 0});
+    }
+  }
+
+  // The rim: four inward walls and the land around, out to 4x the pond's size.
+  const double w = cc * h, d = cr * h, m = 4.0 * std::max(w, d);
+  wall(out, {0, top, 0}, {w, top, 0}, top, bottom, {0, 0, 1});
+  wall(out, {0, top, d}, {w, top, d}, top, bottom, {0, 0, -1});
+  wall(out, {0, top, 0}, {0, top, d}, top, bottom, {1, 0, 0});
+  wall(out, {w, top, 0}, {w, top, d}, top, bottom, {-1, 0, 0});
+  quad(out, {-m, top, -m}, {w + m, top, -m}, {w + m, top, 0}, {-m, top, 0}, {0, 1, 0});
+  quad(out, {-m, top, d}, {w + m, top, d}, {w + m, top, d + m}, {-m, top, d + m}, {0, 1, 0});
+  quad(out, {-m, top, 0}, {0, top, 0}, {0, top, d}, {-m, top, d}, {0, 1, 0});
+  quad(out, {w, top, 0}, {w + m, top, 0}, {w + m, top, d}, {w, top, d}, {0, 1, 0});
+  return out;
+}
+
+}  // namespace pond::view

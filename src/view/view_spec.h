@@ -1,0 +1,33 @@
+#pragma once
+// How a scene is looked at (pond render, the demo): the scene file's optional "camera", "view" and
+// "lighting" keys, world units, as src/scene validates them.
+#include <array>
+#include <cstdint>
+
+namespace pond::view {
+
+// "camera": {"eye": [x, y, z], "target": [x, y, z], "fovy": degrees}; absent = a view of the whole
+// pond chosen from the grid size.
+struct CameraSpec {
+  std::array<double, 3> eye{0, 10, 0};
+  std::array<double, 3> target{0, 0, 1};
+  double fovy_degrees = 45.0;
+};
+
+// "view": what a rendered frame advances and how the pond around the water is shaped.
+struct ViewSpec {
+  std::int64_t steps_per_frame = 1;  // simulation steps per rendered frame
+  double lod_tolerance_px = 1.0;     // LOD screen-space error bound; 0 = the full mesh
+  double floor_depth = 3.0;          // the pool floor lies this far below the rest surface
+  double land_height = 1.0;          // shore, islands and pool rim rise this far above it
+};
+
+// "lighting": the sun and the colours the water shader mixes (linear RGB in [0, 1]).
+struct LightingSpec {
+  std::array<double, 3> sun{-0.3, 0.38, -0.87};   // direction toward the sun (normalized on use)
+  std::array<double, 3> water{0.015, 0.11, 0.13};  // deep water (what light through it tends to)
+  std::array<double, 3> sky{0.28, 0.52, 0.9};      // sky at the zenith (the horizon is lighter)
+  std::array<double, 3> ground{0.55, 0.47, 0.33};  // pool floor, shore and islands
+};
+
+}  // namespace pond::view
