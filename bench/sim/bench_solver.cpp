@@ -10,14 +10,14 @@
 #include <vector>
 
 #include "sim/cpu_solver.h"
-#include "scene/scene.h"
+#include "sim/water_spec.h"
 
 namespace {
 using namespace pond::sim;
 
 // A rippled square pond: a fixed shore and several splashes, so every node has a non-trivial state.
 WaterModel rippled_model(int size, MathMode math) {
-  Scene s;
+  WaterSpec s;
   s.grid.rows = s.grid.cols = size;
   for (int k = 0; k < 5; ++k) {
     Perturbation p;

@@ -108,4 +108,17 @@ void InputDispatch::dispatch(const InputEvent& e, bool ui_mouse, bool ui_keyboar
   }
 }
 
+double next_tolerance(double current_px, bool up) {
+  constexpr double kSteps[] = {0, 0.25, 0.5, 1, 2, 4, 8, 16, 32};
+  double next = current_px;
+  if (up) {
+    for (double s : kSteps)
+      if (s > current_px + 1e-9) return s;
+  } else {
+    for (double s : kSteps)
+      if (s < current_px - 1e-9) next = s;
+  }
+  return next;
+}
+
 }  // namespace pond::app::demo

@@ -15,6 +15,9 @@ enum class Action {
   tau_up, tau_down, solver, rain, screenshot, vsync, steps_up, steps_down
 };
 
+// The LOD tolerance one step up or down the table 0, 0.25, 0.5, 1, 2, 4, 8, 16, 32 px (keys ] and [).
+double next_tolerance(double current_px, bool up);
+
 struct KeyBinding {
   int key;              // GLFW_KEY_*
   Action action;

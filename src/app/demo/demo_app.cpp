@@ -12,12 +12,14 @@
 #include <optional>
 #include <random>
 
+#include "app/demo/app_lifetime.h"
 #include "app/demo/controls.h"
 #include "app/demo/demo_settings.h"
 #include "app/demo/imgui_panel.h"
 #include "app/demo/imgui_renderer.h"
 #include "app/demo/orbit_camera.h"
 #include "app/demo/picking.h"
+#include "app/demo/run_totals.h"
 #include "app/demo/scene_modes.h"
 #include "app/demo/screenshot.h"
 #include "app/demo/script.h"
@@ -38,46 +40,6 @@ namespace {
 
 static_assert(Swapchain::kAcquireRing == render::FrameLoop::kFramesInFlight + 1,
               "the acquire-semaphore ring relies on the frame loop's slot fences (swapchain.h)");
-
-constexpr double kTauSteps[] = {0, 0.25, 0.5, 1, 2, 4, 8, 16, 32};
-
-// ImGui's context and its GLFW backend (installed after the window's callbacks, which it chains).
-class ImGuiSession {
- public:
-  explicit ImGuiSession(GLFWwindow* window) {
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;  // nothing written to the working directory
-    io.LogFilename = nullptr;
-    ImGui::StyleColorsDark();
-    ImGuiStyle& style = ImGui::GetStyle();
-    style.AntiAliasedLinesUseTex = false;  // the atlas is sampled nearest (imgui_renderer.cpp)
-    // Opaque windows: the UI is drawn before the scene and hides what is behind it by depth
-    // (imgui_renderer.h), so a see-through window would show the clear colour, not the water.
-    style.Colors[ImGuiCol_WindowBg].w = 1.0f;
-    style.Colors[ImGuiCol_PopupBg].w = 1.0f;
-    ImGui_ImplGlfw_InitForVulkan(window, true);
-  }
-  ~ImGuiSession() {
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
-  }
-  ImGuiSession(const ImGuiSession&) = delete;
-  ImGuiSession& operator=(const ImGuiSession&) = delete;
-};
-
-// Last member of the app: on any exit (also by exception) the GPU is idle before anything it may
-// still use is destroyed.
-struct IdleBeforeTeardown {
-  const gpu::Context& ctx;
-  ~IdleBeforeTeardown() {
-    try {
-      ctx.device().waitIdle();
-    } catch (...) {  // a lost device: nothing more to wait for
-    }
-  }
-};
 
 std::string solver_label(const sim::SolverChoice& s) {
   return s.gpu ? "GPU solver" : std::string("CPU solver (") + sim::backend_name(s.backend) + ")";
@@ -223,21 +185,8 @@ void DemoApp::on_action(Action action) {
       apply_requests({.rebuild_scene = true});
       break;
     case Action::wireframe: settings_.wireframe = !settings_.wireframe; break;
-    case Action::tau_up:
-    case Action::tau_down: {
-      // Next step of the table above or below the current value.
-      const double t = settings_.lod_tolerance_px;
-      double next = t;
-      if (action == Action::tau_up) {
-        for (double s : kTauSteps)
-          if (s > t + 1e-9) { next = s; break; }
-      } else {
-        for (double s : kTauSteps)
-          if (s < t - 1e-9) next = s;
-      }
-      settings_.lod_tolerance_px = next;
-      break;
-    }
+    case Action::tau_up: settings_.lod_tolerance_px = next_tolerance(settings_.lod_tolerance_px, true); break;
+    case Action::tau_down: settings_.lod_tolerance_px = next_tolerance(settings_.lod_tolerance_px, false); break;
     case Action::steps_up: settings_.steps_per_frame = std::min<std::int64_t>(64, settings_.steps_per_frame + 1); break;
     case Action::steps_down: settings_.steps_per_frame = std::max<std::int64_t>(0, settings_.steps_per_frame - 1); break;
     case Action::solver:
@@ -403,9 +352,8 @@ int DemoApp::run() {
   const Clock::time_point start = Clock::now();
   Clock::time_point last = start;
   std::size_t next_event = 0;
-  std::int64_t frame = 0, drawn = 0, minimized_frames = 0;
-  double total_ms = 0, acquire_ms = 0, present_ms = 0;
-  render::FrameStats sum{};
+  std::int64_t frame = 0, minimized_frames = 0;
+  RunTotals totals;
   while (!quit_ && (options_.frames == 0 || frame < options_.frames)) {
     window_.poll();
     if (window_.should_close()) break;
@@ -460,15 +408,9 @@ int DemoApp::run() {
     const Clock::time_point t = Clock::now();
     const double ms = std::chrono::duration<double, std::milli>(t - last).count();
     last = t;
-    stats_.frame_ms = drawn == 0 ? ms : 0.9 * stats_.frame_ms + 0.1 * ms;
+    stats_.frame_ms = totals.drawn == 0 ? ms : 0.9 * stats_.frame_ms + 0.1 * ms;
     stats_.fps = stats_.frame_ms > 0 ? 1000.0 / stats_.frame_ms : 0;
-    if (drawn > 0) {  // the first frame carries pipeline and allocation warm-up
-      total_ms += ms;
-      sum.simulate_ms += stats_.last.simulate_ms, sum.lod_ms += stats_.last.lod_ms, sum.draw_ms += stats_.last.draw_ms;
-      sum.triangles += stats_.last.triangles;
-      acquire_ms += acquire_ms_, present_ms += present_ms_;
-    }
-    ++drawn;
+    totals.add(ms, stats_.last, acquire_ms_, present_ms_);
     ++frame;
   }
   loop_->wait_idle();
@@ -478,15 +420,9 @@ int DemoApp::run() {
                 static_cast<long long>(frame));
   if (!options_.screenshot.empty() && window_.minimized() && options_.frames > 0)
     throw RuntimeError("the window was minimized at the last frame: no screenshot for " + options_.screenshot);
-  if (!options_.quiet && drawn > 1) {
-    const double n = static_cast<double>(drawn - 1);
-    std::printf("pond demo: %lld frames at %ux%u on %s, %s, %s: %.2f ms/frame (%.1f FPS); simulate %.2f, LOD %.2f, "
-                "draw %.2f, acquire %.2f, present %.2f ms; %.0f of %zu triangles\n",
-                static_cast<long long>(drawn), swapchain_.extent().width, swapchain_.extent().height,
-                ctx_.device_name().c_str(), stats_.solver.c_str(), stats_.present_mode.c_str(), total_ms / n,
-                1000.0 * n / total_ms, sum.simulate_ms / n, sum.lod_ms / n, sum.draw_ms / n, acquire_ms / n, present_ms / n,
-                static_cast<double>(sum.triangles) / n, stats_.last.full_triangles);
-  }
+  if (!options_.quiet)
+    totals.print(swapchain_.extent().width, swapchain_.extent().height, ctx_.device_name(), stats_.solver,
+                 stats_.present_mode, stats_.last.full_triangles);
   if (options_.validation && ctx_.validation_log().count() > 0)
     throw RuntimeError(std::to_string(ctx_.validation_log().count()) + " Vulkan validation message(s) were logged (see above)");
   return 0;
