@@ -4,7 +4,7 @@
 // where the walls go down towards the (wet) floor. Per vertex gives the per-pixel result: every
 // face is flat and the wetness is linear between the heights the mesh is cut at (see
 // kLandWetAtRest), so the light is linear across each triangle, and interpolation reproduces it.
-// llvmpipe shades the land's ~40% of the screen with a one-line fragment shader instead.
+// So llvmpipe shades the land, a large part of the screen, with a one-line fragment shader.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/water_render.h"

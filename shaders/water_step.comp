@@ -21,29 +21,20 @@
 //    (4.75 spring evaluations per node instead of 8). In SoA code the column shuffles are free.
 //  - Column path (any grid; the solver uses it only where a test asks for it): one invocation
 //    per column walking the strip with a sliding 3x3 window (9 position fetches per node), the
-//    vertical spring reused as the next row's lower one. Before the row pitch it ran every width
-//    that is not a multiple of 4, at about twice the quad path's cost per node (2000 steps of 2
-//    substeps, medians of alternated runs on a busy 2-core machine: 257^2 7.9 s column path,
-//    4.8 s quad path with padding; 301^2 15.0 s, 7.2 s).
+//    vertical spring reused as the next row's lower one. It costs more per node than the quad
+//    path, which the row pitch lets every grid use.
 //  - Workgroup shape: local_size_x is a specialization constant; the solver makes a workgroup
 //    span the whole row strip (up to POND_STEP_LOCAL_X_MAX = 256 invocations, a 1024-wide grid in
 //    the quad path). With the barrier per row (main_quad) a group then reads and writes each row
-//    as one contiguous run per component, which the hardware prefetcher follows: at 1024^2 this
-//    cut the samples on the fetches from ~24% to ~11% and gained 14-25% per CPU second over 64.
-//  - Where the time goes now (perf on the JIT code, 1024^2 exact): ~38% the 6 vec4 store loops
-//    (per lane: exec test, then per float a spill of the value vector, an extract, a bounds
-//    compare + branch and a 4-byte store; the loop counter lives in the coroutine frame the
-//    barrier makes), ~20% the spring arithmetic (324 vmulps per 8 lanes x 4 columns x 1 row: the
-//    4.75 springs per node, straight-line), ~10% coroutine-frame and stack traffic (the carried
-//    band and rows do not fit the 32 vector registers), ~10% the texel fetches, the rest
-//    llvmpipe's and the kernel's. The stores are the floor with 32-bit types in Mesa 22.3;
+//    as one contiguous run per component, which the hardware prefetcher follows.
+//  - Stores: Mesa 22.3's llvmpipe stores per lane and per scalar component (exec test, bounds
+//    compare and branch, one store each), so with 32-bit types the stores dominate the cost;
 //    a 64-bit store moves 8 bytes per lane step. So where the device has shaderInt64 the solver
 //    uses the POND_STEP_INT64_STORES variant (built as water_step_int64, see store4): two
 //    u64 components per 4 floats, the float bits packed unchanged. The parity suite runs it and,
 //    forced, the vec4 variant.
-//  - Tried and slower: R32F imageStores for the quad outputs (~1.5x worse); no barrier (each
-//    8-lane chunk walks its strip alone; memory-bound, 2x worse, also with 2-row strips); a
-//    barrier every 2 or 4 rows; 32 or 64 rows per strip (32 equal within noise, 64 worse).
+// The measured figures, the profile of the JIT code and the variants tried and dropped are in
+// docs/perf.md.
 //
 // Exact mode (kFastMath false) is bit-identical to the CPU kernel (src/sim/step_kernel.h): every
 // operation `precise` (no FMA contraction), the Newton rsqrt of shared/exact_math.h (only + - *),
@@ -212,8 +203,8 @@ void main_quad() {
   // Whether column j0+k has its right neighbour j0+k+1 in the grid (not padding, not past the
   // row); for k = 3 that is has_r (j0+4 < pitch <=> j0+4 < cols, the pitch being cols rounded
   // up to 4). Only the last group of a padded row can have a false one; without padding they
-  // are constants (kPaddedRows false), which keeps those grids' code as it was (measured: the
-  // three per-lane flags cost 1024^2 a few percent).
+  // are constants (kPaddedRows false), so grids whose width is a multiple of 4 do not pay for
+  // three per-lane flags.
   const bool r0 = !kPaddedRows || j0 + 1u < p.cols, r1 = !kPaddedRows || j0 + 2u < p.cols,
              r2 = !kPaddedRows || j0 + 3u < p.cols;
   const uint q4 = p.stride >> 2u;

@@ -10,7 +10,7 @@
 //     kept(root) = article(root);  kept(c) = keep_length(kept(p), article(p), article(c), rest(c))
 // with the same shared functions in the same order as the CPU, so the result is the CPU's bits.
 // No extra pass and no synchronization: the cost is at most 10 article bends and 2 exact rsqrts per
-// level per mesh vertex (measured in the report and README).
+// level per mesh vertex (the tree's measured draw cost: docs/perf.md).
 //
 // Needs, declared before including: shared/tree_render.h.
 

@@ -43,9 +43,9 @@ struct mat4 {
 // from the uniform block: llvmpipe (Mesa 22.3) reads a uniform (or push constant) in a fragment
 // shader as an 8-lane gather with a bounds check per lane and per float, because a batch of
 // fragments may start with an inactive one and it cannot load once and broadcast; a flat input is
-// read once per triangle. Measured on a 257^2 frame at 1280x720 (callgrind, whole process): 151 ->
-// 121 M instructions. What depends on the frame alone is also computed there, once a vertex
-// rather than once a pixel. Locations of water.vert -> water.frag:
+// read once per triangle (instruction counts: docs/perf.md). What depends on the frame alone is
+// also computed there, once a vertex rather than once a pixel. Locations of water.vert ->
+// water.frag:
 #define POND_WATER_FLAT_EYE 2      // WaterFrame::eye (xyz: camera), w: 1 / its w (the grid spacing)
 #define POND_WATER_FLAT_SUN 3      // xyz: WaterFrame::sun; w: WaterFrame::pool.x (floor depth)
 #define POND_WATER_FLAT_SKY 4      // WaterFrame::sky.rgb (the zenith)

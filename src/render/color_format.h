@@ -1,9 +1,9 @@
 #pragma once
 // Colour formats. pond draws into UNORM images and its shaders encode sRGB themselves (a
 // specialization constant, shared/water_shading.h): on llvmpipe an sRGB format's encoding on
-// every store cost 14% of a 257^2 frame's instructions at 1280x720 (callgrind, whole process:
-// 175 -> 151 M), the shaders' polynomial much less; on a GPU either is free. An sRGB target still works (a surface
-// that offers nothing else): the hardware encodes, the shaders output linear colour.
+// every store costs far more than the shaders' polynomial (docs/perf.md); on a GPU either is
+// free. An sRGB target still works (a surface that offers nothing else): the hardware encodes,
+// the shaders output linear colour.
 #include "gpu/vulkan.h"
 
 namespace pond::render {

@@ -98,7 +98,7 @@ class PassDrawable {
   virtual void draw(const FrameInfo& frame) = 0;
   // Inside the pass, before the scene: opaque screen-space overlays (the demo's panel) that write
   // the nearest depth, so the scene's fragments behind them fail the depth test before they are
-  // shaded (on llvmpipe the water's shading of the pixels under the panel was most of its cost).
+  // shaded (on llvmpipe the water's shading is most of what a pixel under the panel costs).
   virtual void draw_occluding(const FrameInfo& /*frame*/) {}
 };
 

@@ -16,8 +16,8 @@ vk::raii::Pipeline create_graphics_pipeline(const gpu::Context& ctx, const vk::r
                                             const GraphicsPipelineDesc& d) {
   const vk::raii::ShaderModule vs = module(ctx, d.vert), fs = module(ctx, d.frag);
   // The target's encoding is a specialization constant, not a uniform: llvmpipe would otherwise
-  // run the per-pixel pow() of the UNORM branch for every pixel under a mask (measured: a fifth
-  // of a 1280x720 water frame's CPU time). Fragment shaders without the constant ignore it.
+  // run the per-pixel pow() of the UNORM branch for every pixel under a mask, sRGB targets
+  // included (docs/perf.md). Fragment shaders without the constant ignore it.
   const vk::Bool32 encode_srgb = is_srgb(color) ? VK_FALSE : VK_TRUE;
   const vk::SpecializationMapEntry encode_entry{.constantID = POND_SPEC_ENCODE_SRGB, .offset = 0,
                                                 .size = sizeof encode_srgb};

@@ -1,7 +1,7 @@
 #pragma once
 // A small persistent pool that runs one function on `parts` contiguous parts of a job per call, the
-// calling thread taking part 0. Substeps of a 1024^2 grid take a few milliseconds, so waking
-// parked threads (tens of microseconds) is cheap next to them; small grids use fewer parts.
+// calling thread taking part 0. Waking parked threads is cheap next to a large grid's substep;
+// small grids, where it would not be, use fewer parts (cpu_solver.cpp).
 #include <condition_variable>
 #include <functional>
 #include <mutex>

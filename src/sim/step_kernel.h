@@ -328,7 +328,7 @@ float step_rows(const StepView& v, int r0, int r1, float* scratch_base) {
     const int c1 = c0 + kBlockCols < v.cols ? c0 + kBlockCols : v.cols;
     // The spring chunks start at slot 1 (first block) or 0: shift the slots so that it is 64-byte
     // aligned (scratch and kSlots are), making the chunks' stores aligned where they do not
-    // overlap. Unaligned vector stores cost Zen 4 about twice as much.
+    // overlap: unaligned vector stores are markedly slower on Zen 4 (docs/perf.md).
     float* const scratch = scratch_base + (c0 == 0 ? kSlotAlign - 1 : 0);
     int below = 0, above = 1, ahead = 2;  // bands of rows i-1, i, i+1
     int hs = 0;                           // H row of row i (row i+1's is 1 - hs)

@@ -24,9 +24,9 @@ struct StepView {
 // a row holds column index j = c0 + s - 1 of the block starting at c0, so slot 0 is the column
 // left of the block (or the missing column -1); the kernel may shift all slots by up to
 // kSlotAlign - 1 to align its stores.
-// One block spans a 1024-wide row: walking the state arrays straight through is faster than
-// 512-column blocks (measured 1024^2 and 2048^2, one thread: AVX-512 about 20 % faster, scalar 5 %;
-// 256 was slower still), and the scratch (about 140 KB) stays in L2.
+// One block spans a 1024-wide row: a substep walks the state arrays straight through rather than
+// in row pieces, which beats narrower blocks (docs/perf.md), and the scratch (about 140 KB) still
+// stays in L2.
 inline constexpr int kBlockCols = 1024;
 inline constexpr int kSlotAlign = 16;  // floats in 64 bytes
 inline constexpr int kSlots = kBlockCols + 2 * kSlotAlign;  // a multiple of kSlotAlign

@@ -67,8 +67,8 @@ PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, render::TreeDr
   ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
   // Opaque (the style's): the panel hides the scene behind it by depth (imgui_renderer.h). The
   // stats and the physics open, the other sections closed: on lavapipe every pixel of the panel
-  // is a blended, textured fragment (all sections open cover ~240k pixels of 1280x720, 2.5-5 ms of
-  // a frame before the panel occluded the scene); a click opens what is needed.
+  // is a blended, textured fragment, so a fully open panel costs a noticeable part of a frame
+  // (docs/perf.md); a click opens what is needed.
   if (!ImGui::Begin("pond (H: keys)", &s.show_panel)) {
     ImGui::End();
     return req;
