@@ -48,6 +48,27 @@ void write_set(const Context& ctx, const vk::raii::DescriptorSet& set, std::init
   ctx.device().updateDescriptorSets(writes, nullptr);
 }
 
+// The descriptor types of each pipeline's bindings 0..n-1 (water_gpu.h): the layouts, and the
+// descriptor pool counted from them.
+std::vector<vk::DescriptorType> step_bindings() {
+  using DT = vk::DescriptorType;
+  std::vector<DT> b(POND_STEP_BINDINGS);
+  b[POND_STEP_BINDING_SRC1] = b[POND_STEP_BINDING_SRC4] = DT::eUniformTexelBuffer;
+  b[POND_STEP_BINDING_DST1] = DT::eStorageTexelBuffer;
+  b[POND_STEP_BINDING_DST4] = DT::eStorageBuffer;
+  b[POND_STEP_BINDING_KINDS1] = b[POND_STEP_BINDING_KINDS4] = DT::eUniformTexelBuffer;
+  return b;
+}
+std::vector<vk::DescriptorType> perturb_bindings() {
+  return {vk::DescriptorType::eStorageBuffer, vk::DescriptorType::eStorageBuffer};  // state, table
+}
+std::vector<vk::DescriptorType> normals_bindings() {
+  std::vector<vk::DescriptorType> b(POND_NORMALS_BINDINGS);
+  b[POND_NORMALS_BINDING_STATE] = vk::DescriptorType::eUniformTexelBuffer;
+  b[POND_NORMALS_BINDING_NORMALS] = vk::DescriptorType::eStorageBuffer;
+  return b;
+}
+
 }  // namespace
 
 GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores, StepPath path)
@@ -56,6 +77,15 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores, S
       pitch_(row_pitch(static_cast<std::size_t>(model_.cols))),
       stride_(state_stride(static_cast<std::size_t>(model_.rows) * pitch_)),
       submitter_(ctx, "water compute") {
+  create_pipelines(stores, path);
+  create_buffers();
+  map_state_where_host_readable();
+  upload_kinds_and_perturbations();
+  create_descriptor_sets();
+  set_state(sim::rest_state(model_), 0);
+}
+
+void GpuSolver::create_pipelines(Stores stores, StepPath path) {
   const bool fast = model_.math == sim::MathMode::fast;
   // The row pitch keeps every group of 4 columns 16-byte aligned (the stride is a multiple of 16
   // floats), so the step shader can move 4 nodes per texel on every grid.
@@ -73,52 +103,50 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores, S
       {POND_SPEC_QUAD_COLUMNS, quad_columns_ ? 1u : 0u},
       {POND_SPEC_STEP_LOCAL_X, step_local_x_},
       {POND_SPEC_PADDED_ROWS, pitch_ != static_cast<std::size_t>(model_.cols) ? 1u : 0u}};
-  using DT = vk::DescriptorType;
-  std::vector<DT> step_bindings(POND_STEP_BINDINGS);
-  step_bindings[POND_STEP_BINDING_SRC1] = step_bindings[POND_STEP_BINDING_SRC4] = DT::eUniformTexelBuffer;
-  step_bindings[POND_STEP_BINDING_DST1] = DT::eStorageTexelBuffer;
-  step_bindings[POND_STEP_BINDING_DST4] = DT::eStorageBuffer;
-  step_bindings[POND_STEP_BINDING_KINDS1] = step_bindings[POND_STEP_BINDING_KINDS4] = DT::eUniformTexelBuffer;
   const bool int64_stores = stores == Stores::best && ctx_.has_int64();
   step_pipe_ = create_compute_pipeline(ctx_, int64_stores ? water_step_int64_spirv() : water_step_spirv(),
-                                       step_bindings, sizeof(StepPush), step_constants,
+                                       step_bindings(), sizeof(StepPush), step_constants,
                                        std::string(fast ? "water_step (fast" : "water_step (exact") +
                                            (int64_stores ? ", 64-bit stores)" : ")"));
-  perturb_pipe_ = create_compute_pipeline(ctx_, water_perturb_spirv(), 2, sizeof(PerturbPush), {}, "water_perturb");
+  perturb_pipe_ = create_compute_pipeline(ctx_, water_perturb_spirv(), perturb_bindings(), sizeof(PerturbPush), {},
+                                          "water_perturb");
   // The normals: one invocation per column (walking a strip of rows), the row spanned by as few
   // and as evenly filled workgroups as possible, as the step shader's column path.
   const auto cols = static_cast<std::uint32_t>(model_.cols);
   const std::uint32_t normals_groups_x = std::max(1u, group_count(cols, POND_NORMALS_LOCAL_X_MAX));
   normals_local_x_ = std::max(8u, (group_count(cols, normals_groups_x) + 7u) / 8u * 8u);
   const SpecConstant normals_constants[] = {{POND_SPEC_NORMALS_LOCAL_X, normals_local_x_}};
-  std::vector<DT> normals_bindings(POND_NORMALS_BINDINGS);
-  normals_bindings[POND_NORMALS_BINDING_STATE] = DT::eUniformTexelBuffer;
-  normals_bindings[POND_NORMALS_BINDING_NORMALS] = DT::eStorageBuffer;
-  normals_pipe_ = create_compute_pipeline(ctx_, water_normals_spirv(), normals_bindings, sizeof(NormalsPush),
+  normals_pipe_ = create_compute_pipeline(ctx_, water_normals_spirv(), normals_bindings(), sizeof(NormalsPush),
                                           normals_constants, "water_normals");
+}
 
+void GpuSolver::create_buffers() {
   const vk::DeviceSize state_bytes = stride_ * kComponents * sizeof(float);
   const auto state_usage = BU::eStorageBuffer | BU::eUniformTexelBuffer | BU::eStorageTexelBuffer |
                            BU::eTransferSrc | BU::eTransferDst;
   state_[0] = create_buffer(ctx_, state_bytes, state_usage, MemoryUse::device, "water state A");
   state_[1] = create_buffer(ctx_, state_bytes, state_usage, MemoryUse::device, "water state B");
-  // Where every device-local memory type the state could be in is also host-visible, cached and
-  // coherent (lavapipe: the "GPU" memory is the CPU's), the state stays mapped and the renderer
-  // reads the displacements in place instead of copying them each frame (host_state()).
-  {
-    using MP = vk::MemoryPropertyFlagBits;
-    const vk::MemoryPropertyFlags host = MP::eHostVisible | MP::eHostCached | MP::eHostCoherent;
-    const vk::PhysicalDeviceMemoryProperties props = ctx_.physical().getMemoryProperties();
-    const std::uint32_t bits = state_[0].buffer.getMemoryRequirements().memoryTypeBits;
-    bool readable = true;
-    for (std::uint32_t t = 0; t < props.memoryTypeCount; ++t) {
-      const vk::MemoryPropertyFlags flags = props.memoryTypes[t].propertyFlags;
-      if ((bits >> t & 1u) && (flags & MP::eDeviceLocal) && (flags & host) != host) readable = false;
-    }
-    if (readable)
-      for (Buffer& b : state_) b.mapped = b.memory.mapMemory(0, VK_WHOLE_SIZE);
-  }
+  normals_ = create_buffer(ctx_, std::max<std::size_t>(1, model_.nodes()) * 4 * sizeof(float),
+                           BU::eStorageBuffer | BU::eTransferSrc | BU::eVertexBuffer, MemoryUse::device,
+                           "water normals");
+}
 
+// Where every device-local memory type the state could be in is also host-visible, cached and
+// coherent (lavapipe: the "GPU" memory is the CPU's), the state stays mapped and the renderer
+// reads the displacements in place instead of copying them each frame (host_state()).
+void GpuSolver::map_state_where_host_readable() {
+  using MP = vk::MemoryPropertyFlagBits;
+  const vk::MemoryPropertyFlags host = MP::eHostVisible | MP::eHostCached | MP::eHostCoherent;
+  const vk::PhysicalDeviceMemoryProperties props = ctx_.physical().getMemoryProperties();
+  const std::uint32_t bits = state_[0].buffer.getMemoryRequirements().memoryTypeBits;
+  for (std::uint32_t t = 0; t < props.memoryTypeCount; ++t) {
+    const vk::MemoryPropertyFlags flags = props.memoryTypes[t].propertyFlags;
+    if ((bits >> t & 1u) && (flags & MP::eDeviceLocal) && (flags & host) != host) return;
+  }
+  for (Buffer& b : state_) b.mapped = b.memory.mapMemory(0, VK_WHOLE_SIZE);
+}
+
+void GpuSolver::upload_kinds_and_perturbations() {
   const std::vector<std::uint32_t> kinds = pack_kinds(model_, pitch_);
   kinds_ = create_buffer(ctx_, kinds.size() * 4, BU::eUniformTexelBuffer | BU::eTransferDst, MemoryUse::device,
                          "water node kinds");
@@ -137,11 +165,11 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores, S
   table_ = create_buffer(ctx_, std::max<std::size_t>(1, table.size()) * sizeof(PerturbEntry),
                          BU::eStorageBuffer | BU::eTransferDst, MemoryUse::device, "perturbation table");
   upload(ctx_, table_, std::as_bytes(std::span(table)));
+}
 
-  normals_ = create_buffer(ctx_, std::max<std::size_t>(1, model_.nodes()) * 4 * sizeof(float),
-                           BU::eStorageBuffer | BU::eTransferSrc | BU::eVertexBuffer, MemoryUse::device,
-                           "water normals");
-
+// Two sets of each pipeline's layout (one per ping-pong direction), the pool sized from the layouts.
+void GpuSolver::create_descriptor_sets() {
+  using DT = vk::DescriptorType;
   auto view = [&](const Buffer& b, vk::Format format) {
     return vk::raii::BufferView(ctx_.device(), vk::BufferViewCreateInfo{.buffer = *b.buffer, .format = format,
                                                                         .offset = 0, .range = VK_WHOLE_SIZE});
@@ -153,23 +181,32 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores, S
   kinds_r8_ = view(kinds_, vk::Format::eR8Uint);
   kinds_rgba8_ = view(kinds_, vk::Format::eR8G8B8A8Uint);
 
-  const vk::DescriptorPoolSize sizes[] = {{.type = DT::eStorageBuffer, .descriptorCount = 12},
-                                          {.type = DT::eUniformTexelBuffer, .descriptorCount = 10},
-                                          {.type = DT::eStorageTexelBuffer, .descriptorCount = 2}};
-  pool_ = vk::raii::DescriptorPool(ctx_.device(), vk::DescriptorPoolCreateInfo{
-                                                      .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
-                                                      .maxSets = 6, .poolSizeCount = 3, .pPoolSizes = sizes});
+  constexpr std::uint32_t kSetsPerPipeline = 2;
+  const std::vector<DT> layouts[] = {step_bindings(), perturb_bindings(), normals_bindings()};
+  std::vector<vk::DescriptorPoolSize> sizes;
+  for (const std::vector<DT>& bindings : layouts)
+    for (const DT type : bindings) {
+      auto it = std::find_if(sizes.begin(), sizes.end(), [&](const vk::DescriptorPoolSize& p) { return p.type == type; });
+      if (it == sizes.end()) it = sizes.insert(sizes.end(), {.type = type, .descriptorCount = 0});
+      it->descriptorCount += kSetsPerPipeline;
+    }
+  pool_ = vk::raii::DescriptorPool(
+      ctx_.device(), vk::DescriptorPoolCreateInfo{.flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
+                                                  .maxSets = kSetsPerPipeline * std::size(layouts),
+                                                  .poolSizeCount = static_cast<std::uint32_t>(sizes.size()),
+                                                  .pPoolSizes = sizes.data()});
   auto allocate = [&](const ComputePipeline& p) {
-    const vk::DescriptorSetLayout layouts[2] = {*p.set_layout, *p.set_layout};
+    const vk::DescriptorSetLayout set_layouts[kSetsPerPipeline] = {*p.set_layout, *p.set_layout};
     vk::raii::DescriptorSets sets(ctx_.device(), vk::DescriptorSetAllocateInfo{.descriptorPool = *pool_,
-                                                                               .descriptorSetCount = 2,
-                                                                               .pSetLayouts = layouts});
+                                                                               .descriptorSetCount = kSetsPerPipeline,
+                                                                               .pSetLayouts = set_layouts});
     return std::vector<vk::raii::DescriptorSet>(std::make_move_iterator(sets.begin()),
                                                 std::make_move_iterator(sets.end()));
   };
   step_sets_ = allocate(step_pipe_);
   perturb_sets_ = allocate(perturb_pipe_);
   normals_sets_ = allocate(normals_pipe_);
+  const std::vector<DT> step_types = step_bindings();
   for (int c = 0; c < 2; ++c) {
     std::vector<vk::BufferView> views(POND_STEP_BINDINGS);
     views[POND_STEP_BINDING_SRC1] = *state_r32_[c];
@@ -181,12 +218,12 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores, S
     std::vector<vk::WriteDescriptorSet> writes;
     const vk::DescriptorBufferInfo dst_info = state_[1 - c].whole();
     for (std::uint32_t b = 0; b < views.size(); ++b)
-      if (step_bindings[b] == DT::eStorageBuffer)
+      if (step_types[b] == DT::eStorageBuffer)
         writes.push_back({.dstSet = *step_sets_[c], .dstBinding = b, .descriptorCount = 1,
-                          .descriptorType = step_bindings[b], .pBufferInfo = &dst_info});
+                          .descriptorType = step_types[b], .pBufferInfo = &dst_info});
       else
         writes.push_back({.dstSet = *step_sets_[c], .dstBinding = b, .descriptorCount = 1,
-                          .descriptorType = step_bindings[b], .pTexelBufferView = &views[b]});
+                          .descriptorType = step_types[b], .pTexelBufferView = &views[b]});
     ctx_.device().updateDescriptorSets(writes, nullptr);
     write_set(ctx_, perturb_sets_[c], {&state_[c], &table_});
     const vk::DescriptorBufferInfo normals_info = normals_.whole();
@@ -198,7 +235,6 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores, S
          .descriptorType = DT::eStorageBuffer, .pBufferInfo = &normals_info}};
     ctx_.device().updateDescriptorSets(normals_writes, nullptr);
   }
-  set_state(sim::rest_state(model_), 0);
 }
 
 void GpuSolver::set_state(const sim::WaterState& state, std::int64_t steps_done) {

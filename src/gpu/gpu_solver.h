@@ -78,6 +78,13 @@ class GpuSolver final : public sim::Solver {
   static constexpr std::int64_t kMaxDispatchesPerSubmit = 4096;
 
  private:
+  // The constructor's steps, in order.
+  void create_pipelines(Stores stores, StepPath path);
+  void create_buffers();
+  void map_state_where_host_readable();
+  void upload_kinds_and_perturbations();
+  void create_descriptor_sets();
+
   void record_step(const vk::raii::CommandBuffer& cmd);
   void record_normals(const vk::raii::CommandBuffer& cmd) const;
   void record_barrier(const vk::raii::CommandBuffer& cmd) const;

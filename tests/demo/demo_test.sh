@@ -6,7 +6,9 @@
 #    the last frame that show the scene and differ;
 #  - the default command and the demo subcommand take the same flags;
 #  - without a display: exit 1 and one line saying how to render headless;
-#  - a bad script: exit 2 and one line naming the line.
+#  - a bad script: exit 2 and one line naming the line;
+#  - the scene's wind.ripples: a calm pond stays the same picture run to run without them and
+#    shows them with them (the demo drives the same session as `pond render`).
 # Usage: demo_test.sh PATH/TO/pond SCRIPT WORKDIR
 set -u
 pond=$1
@@ -64,6 +66,19 @@ rc=$?
 [ $rc -eq 0 ] || fail "pond --frames 4: exit $rc: $(cat "$work/short.stderr")"
 [ -f "$work/short.png" ] || fail "pond --frames 4 --screenshot: no picture"
 [ -s "$work/short.stdout" ] && fail "--quiet still printed: $(cat "$work/short.stdout")"
+
+# wind.ripples: the same calm pond (no splash, no tree, the panel hidden) with and without them.
+calm='{"grid": {"rows": 40, "cols": 40}, "wind": {"strength": 9, "ripples": RIPPLES}}'
+echo "$calm" | sed 's/RIPPLES/false/' > "$work/calm.json"
+echo "$calm" | sed 's/RIPPLES/true/' > "$work/rippled.json"
+printf 'frame 0 key F2\n' > "$work/no_panel.script"
+for run in calm calm2 rippled; do
+  scene=$work/${run%2}.json
+  (cd "$work" && xvfb-run -a "$pond" --frames 30 --quiet --script no_panel.script --scene "$scene" \
+     --screenshot "$run.png" > "$run.stdout" 2> "$run.stderr") || fail "$run run: $(cat "$work/$run.stderr")"
+done
+cmp -s "$work/calm.png" "$work/calm2.png" || fail "a calm pond without ripples drew two different pictures"
+cmp -s "$work/calm.png" "$work/rippled.png" && fail "wind.ripples: the demo drew no ripples"
 
 [ $failures -eq 0 ] && echo "demo: all checks passed"
 exit $failures
