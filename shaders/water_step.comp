@@ -4,11 +4,10 @@
 // Speed on lavapipe (llvmpipe runs 8 invocations as the lanes of one AVX2 register; what decides
 // the speed is the number of memory operations per node, not the arithmetic):
 //  - An SSBO access with a per-invocation address becomes a loop over the 8 lanes with two
-//    branches per lane (exec mask, bounds); a texel-buffer fetch is a straight-line gather and a
-//    storage-texel store an unrolled masked scatter. So the state is read and written through
-//    texel-buffer views of the same SoA buffers (shared/water_gpu.h; the layout is unchanged),
-//    except the quad path's vec4 stores (below).
-//  - Quad path (kQuadColumns, every grid): one invocation owns 4 consecutive columns of a strip
+//    branches per lane (exec mask, bounds); a texel-buffer fetch is a straight-line gather. So
+//    the state is read through texel-buffer views of the same SoA buffers (shared/water_gpu.h;
+//    the layout is unchanged) and written with vec4 stores (below).
+//  - One algorithm, the quad path (every grid): one invocation owns 4 consecutive columns of a strip
 //    of POND_STEP_ROWS_PER_INVOCATION rows. A node row of the 4 columns is one RGBA32F texel per
 //    component (16-byte aligned because the row pitch and the stride are multiples of 4: rows are
 //    p.pitch = cols rounded up to 4 nodes apart, see "Padding" below),
@@ -19,13 +18,9 @@
 //    the invocation each spring is evaluated once: per row 5 horizontal springs and the band to
 //    the row above (4 vertical, 5 + 5 diagonal), the band kept as the next row's lower band
 //    (4.75 spring evaluations per node instead of 8). In SoA code the column shuffles are free.
-//  - Column path (any grid; the solver uses it only where a test asks for it): one invocation
-//    per column walking the strip with a sliding 3x3 window (9 position fetches per node), the
-//    vertical spring reused as the next row's lower one. It costs more per node than the quad
-//    path, which the row pitch lets every grid use.
 //  - Workgroup shape: local_size_x is a specialization constant; the solver makes a workgroup
-//    span the whole row strip (up to POND_STEP_LOCAL_X_MAX = 256 invocations, a 1024-wide grid in
-//    the quad path). With the barrier per row (main_quad) a group then reads and writes each row
+//    span the whole row strip (up to POND_STEP_LOCAL_X_MAX = 256 invocations, a 1024-wide grid).
+//    With the barrier per row (main_quad) a group then reads and writes each row
 //    as one contiguous run per component, which the hardware prefetcher follows.
 //  - Stores: Mesa 22.3's llvmpipe stores per lane and per scalar component (exec test, bounds
 //    compare and branch, one store each), so with 32-bit types the stores dominate the cost;
@@ -73,14 +68,12 @@ layout(local_size_x = POND_STEP_LOCAL_X, local_size_y = 1, local_size_z = 1) in;
 layout(local_size_x_id = POND_SPEC_STEP_LOCAL_X) in;
 layout(constant_id = POND_SPEC_FAST_MATH) const bool kFastMath = false;
 layout(constant_id = POND_SPEC_RSQRT_STEPS) const int kRsqrtSteps = kRsqrtStepsExact;
-layout(constant_id = POND_SPEC_QUAD_COLUMNS) const bool kQuadColumns = false;
 layout(constant_id = POND_SPEC_PADDED_ROWS) const bool kPaddedRows = true;
 
 // The bindings of shared/water_gpu.h (POND_STEP_BINDING_*): views of the source state, the
 // destination state and the kinds.
 layout(set = 0, binding = POND_STEP_BINDING_SRC1) uniform samplerBuffer src1;  // R32F: float n
 layout(set = 0, binding = POND_STEP_BINDING_SRC4) uniform samplerBuffer src4;  // RGBA32F: floats 4n..4n+3
-layout(set = 0, binding = POND_STEP_BINDING_DST1, r32f) uniform restrict writeonly imageBuffer dst1;
 #ifdef POND_STEP_INT64_STORES
 // 64-bit stores (devices with shaderInt64): llvmpipe stores per lane and per scalar component, so
 // two 64-bit components move a group of 4 floats in half the iterations of a vec4. The float bits
@@ -93,7 +86,6 @@ void store4(uint index, vec4 v) {
 layout(std430, set = 0, binding = POND_STEP_BINDING_DST4) restrict writeonly buffer Dst4 { vec4 dst4[]; };
 void store4(uint index, vec4 v) { dst4[index] = v; }
 #endif
-layout(set = 0, binding = POND_STEP_BINDING_KINDS1) uniform usamplerBuffer kinds1;  // R8UI: node n
 layout(set = 0, binding = POND_STEP_BINDING_KINDS4) uniform usamplerBuffer kinds4;  // RGBA8UI: nodes 4n..4n+3
 layout(push_constant) uniform Push { StepPush p; };
 
@@ -102,7 +94,6 @@ vec4 load4(uint q) { return texelFetch(src4, int(q)); }
 
 // Displacement u of node n from its rest position (sim/state.h: positions are stored as
 // displacements, so a float keeps full precision however large the grid).
-vec3 load_u(uint n) { return vec3(load1(n), load1(p.stride + n), load1(2u * p.stride + n)); }
 
 // The spring vector from node a to its neighbour b at column offset dj and row offset di (each
 // -1, 0 or 1; constants after inlining): d = (u_b - u_a) + (dj, 0, di), where "+ 0" is not
@@ -277,64 +268,4 @@ void main_quad() {
   }
 }
 
-// ---- Column path: one column per invocation (any grid). ----
-
-void main_column() {
-  const uint j = gl_GlobalInvocationID.x;
-  const uint i0 = gl_GlobalInvocationID.y * POND_STEP_ROWS_PER_INVOCATION;
-  if (j >= p.cols || i0 >= p.rows) return;
-  const uint i1 = min(i0 + POND_STEP_ROWS_PER_INVOCATION, p.rows);
-  const uint C = p.cols, P = p.pitch;  // columns; nodes between rows
-  const bool has_left = j > 0u, has_right = j + 1u < C;
-  const uint jl = has_left ? j - 1u : j, jr = has_right ? j + 1u : j;
-
-  // The window: displacements at columns (j-1, j, j+1) of rows i-1 (below), i (mid), i+1
-  // (above); missing neighbours load the node itself (never used, but always in bounds).
-  uint row = (i0 > 0u ? i0 - 1u : i0) * P;
-  vec3 below_l = load_u(row + jl), below_m = load_u(row + j), below_r = load_u(row + jr);
-  row = i0 * P;
-  vec3 mid_l = load_u(row + jl), mid_m = load_u(row + j), mid_r = load_u(row + jr);
-  vec3 carry = vec3(0.0);  // term of (i, j) on (i-1, j), from the previous row of the strip
-
-  for (uint i = i0; i < i1; ++i) {
-    const bool has_below = i > 0u, has_above = i + 1u < p.rows;
-    row = (has_above ? i + 1u : i) * P;
-    const vec3 above_l = load_u(row + jl), above_m = load_u(row + j), above_r = load_u(row + jr);
-
-    // The spring to row i-1 is evaluated from its lower end, as the CPU does, and negated.
-    const vec3 t_below = neg((i == i0) ? term(below_m, mid_m, 0, 1, p.rest_edge) : carry);
-    const vec3 t_above = term(mid_m, above_m, 0, 1, p.rest_edge);
-    precise vec3 g = vec3(-0.0);
-    g = accumulate(g, term(mid_m, mid_l, -1, 0, p.rest_edge), has_left);                 // (i, j-1)
-    g = accumulate(g, term(mid_m, mid_r, 1, 0, p.rest_edge), has_right);                 // (i, j+1)
-    g = accumulate(g, t_below, has_below);                                               // (i-1, j)
-    g = accumulate(g, t_above, has_above);                                               // (i+1, j)
-    g = accumulate(g, term(mid_m, below_l, -1, -1, p.rest_diag), has_below && has_left);  // (i-1, j-1)
-    g = accumulate(g, term(mid_m, above_r, 1, 1, p.rest_diag), has_above && has_right);   // (i+1, j+1)
-    g = accumulate(g, term(mid_m, below_r, 1, -1, p.rest_diag), has_below && has_right);  // (i-1, j+1)
-    g = accumulate(g, term(mid_m, above_l, -1, 1, p.rest_diag), has_above && has_left);   // (i+1, j-1)
-    carry = t_above;
-
-    const uint n = i * P + j;
-    const uint s = p.stride;
-    vec3 u1, v1;
-    integrate(mid_m, vec3(load1(3u * s + n), load1(4u * s + n), load1(5u * s + n)), g,
-              texelFetch(kinds1, int(n)).x, u1, v1);
-    imageStore(dst1, int(n), vec4(u1.x));
-    imageStore(dst1, int(s + n), vec4(u1.y));
-    imageStore(dst1, int(2u * s + n), vec4(u1.z));
-    imageStore(dst1, int(3u * s + n), vec4(v1.x));
-    imageStore(dst1, int(4u * s + n), vec4(v1.y));
-    imageStore(dst1, int(5u * s + n), vec4(v1.z));
-
-    below_l = mid_l; below_m = mid_m; below_r = mid_r;
-    mid_l = above_l; mid_m = above_m; mid_r = above_r;
-  }
-}
-
-void main() {
-  if (kQuadColumns)
-    main_quad();
-  else
-    main_column();
-}
+void main() { main_quad(); }

@@ -33,7 +33,6 @@
 #define POND_NORMALS_ROWS_PER_INVOCATION 16  // each invocation of water_normals.comp walks this many rows
 #define POND_SPEC_FAST_MATH 0      // specialization constant: bool, true = fast math
 #define POND_SPEC_RSQRT_STEPS 1    // specialization constant: int, Newton steps of exact rsqrt
-#define POND_SPEC_QUAD_COLUMNS 2   // specialization constant: bool, 4 columns per invocation
 #define POND_SPEC_STEP_LOCAL_X 3   // specialization constant: water_step.comp's local_size_x
 #define POND_SPEC_NORMALS_LOCAL_X 4  // specialization constant: water_normals.comp's local_size_x
 #define POND_SPEC_PADDED_ROWS 5    // specialization constant: bool, the state's rows end in padding (pitch > cols)
@@ -42,11 +41,9 @@
 // above; the buffers are the same, only the views differ).
 #define POND_STEP_BINDING_SRC1 0    // uniform texel buffer, R32_SFLOAT view of the source state
 #define POND_STEP_BINDING_SRC4 1    // uniform texel buffer, R32G32B32A32_SFLOAT view of the source state
-#define POND_STEP_BINDING_DST1 2    // storage texel buffer, R32_SFLOAT view of the destination state
-#define POND_STEP_BINDING_DST4 3    // storage buffer: the destination state as vec4[] (4 floats per element)
-#define POND_STEP_BINDING_KINDS1 4  // uniform texel buffer, R8_UINT view of the kinds (node n = texel n)
-#define POND_STEP_BINDING_KINDS4 5  // uniform texel buffer, R8G8B8A8_UINT view (nodes 4t..4t+3 = texel t)
-#define POND_STEP_BINDINGS 6
+#define POND_STEP_BINDING_DST4 2    // storage buffer: the destination state as vec4[] (4 floats per element)
+#define POND_STEP_BINDING_KINDS4 3  // uniform texel buffer, R8G8B8A8_UINT view (nodes 4t..4t+3 = texel t)
+#define POND_STEP_BINDINGS 4
 
 // Bindings of water_normals.comp.
 #define POND_NORMALS_BINDING_STATE 0    // uniform texel buffer, R32_SFLOAT view of the state

@@ -110,9 +110,9 @@ Context::Context(const ContextOptions& options, const WindowSurface& window)
   vk::PhysicalDeviceVulkan13Features features13{.synchronization2 = VK_TRUE, .dynamicRendering = VK_TRUE,
                                                 .maintenance4 = VK_TRUE};
   const vk::PhysicalDeviceFeatures supported = physical_.getFeatures();
+  int64_ = options.int64 && supported.shaderInt64 == VK_TRUE;
   const vk::PhysicalDeviceFeatures core_features{.fillModeNonSolid = supported.fillModeNonSolid,
-                                                 .shaderInt64 = supported.shaderInt64};
-  int64_ = supported.shaderInt64 == VK_TRUE;
+                                                 .shaderInt64 = int64_ ? VK_TRUE : VK_FALSE};
   const vk::DeviceCreateInfo device_info{.pNext = &features13, .queueCreateInfoCount = 1,
                                          .pQueueCreateInfos = &queue_info,
                                          .enabledExtensionCount = static_cast<std::uint32_t>(device_extensions.size()),

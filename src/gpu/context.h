@@ -21,6 +21,7 @@ namespace pond::gpu {
 struct ContextOptions {
   std::string device;       // substring of the device name; empty = the most capable
   bool validation = false;  // VK_LAYER_KHRONOS_validation + synchronization validation + messenger
+  bool int64 = true;        // enable shaderInt64 where the device has it; false: act as a device without it
 };
 
 // A window to present to (the demo): the instance extensions its surface needs
@@ -47,7 +48,8 @@ class Context {
   // The window's surface (null without a WindowSurface); the queue can present to it.
   const vk::raii::SurfaceKHR& surface() const { return surface_; }
   const std::string& device_name() const { return device_name_; }
-  // shaderInt64 is enabled (where the device has it): the step shader's 64-bit-store variant.
+  // shaderInt64 is enabled (where the device has it and the options allow): the step shader's
+  // 64-bit-store variant.
   bool has_int64() const { return int64_; }
   // Validation messages so far (empty without validation).
   const ValidationLog& validation_log() const { return *log_; }

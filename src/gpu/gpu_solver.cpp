@@ -54,9 +54,8 @@ std::vector<vk::DescriptorType> step_bindings() {
   using DT = vk::DescriptorType;
   std::vector<DT> b(POND_STEP_BINDINGS);
   b[POND_STEP_BINDING_SRC1] = b[POND_STEP_BINDING_SRC4] = DT::eUniformTexelBuffer;
-  b[POND_STEP_BINDING_DST1] = DT::eStorageTexelBuffer;
   b[POND_STEP_BINDING_DST4] = DT::eStorageBuffer;
-  b[POND_STEP_BINDING_KINDS1] = b[POND_STEP_BINDING_KINDS4] = DT::eUniformTexelBuffer;
+  b[POND_STEP_BINDING_KINDS4] = DT::eUniformTexelBuffer;
   return b;
 }
 std::vector<vk::DescriptorType> perturb_bindings() {
@@ -71,13 +70,13 @@ std::vector<vk::DescriptorType> normals_bindings() {
 
 }  // namespace
 
-GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores, StepPath path)
+GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model)
     : ctx_(ctx),
       model_(std::move(model)),
       pitch_(row_pitch(static_cast<std::size_t>(model_.cols))),
       stride_(state_stride(static_cast<std::size_t>(model_.rows) * pitch_)),
       submitter_(ctx, "water compute") {
-  create_pipelines(stores, path);
+  create_pipelines();
   create_buffers();
   map_state_where_host_readable();
   upload_kinds_and_perturbations();
@@ -85,25 +84,22 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores, S
   set_state(sim::rest_state(model_), 0);
 }
 
-void GpuSolver::create_pipelines(Stores stores, StepPath path) {
+void GpuSolver::create_pipelines() {
   const bool fast = model_.math == sim::MathMode::fast;
   // The row pitch keeps every group of 4 columns 16-byte aligned (the stride is a multiple of 16
   // floats), so the step shader can move 4 nodes per texel on every grid.
-  quad_columns_ = path == StepPath::quad;
-  // Quad path: one invocation per 4 columns; column path: one per column. The workgroup spans
-  // the row strip in as few groups as possible (at most POND_STEP_LOCAL_X_MAX invocations, a
+  // One invocation per 4 columns. The workgroup spans the row strip in as few groups as possible (at most POND_STEP_LOCAL_X_MAX invocations, a
   // multiple of 8 = llvmpipe's lanes) and as evenly as possible: the shader's barrier per row then
   // makes a group read and write whole rows, contiguous runs the hardware prefetcher follows.
-  step_threads_x_ = static_cast<std::uint32_t>(quad_columns_ ? pitch_ / 4 : model_.cols);
+  step_threads_x_ = static_cast<std::uint32_t>(pitch_ / 4);
   const std::uint32_t groups_x = std::max(1u, group_count(step_threads_x_, POND_STEP_LOCAL_X_MAX));
   step_local_x_ = std::max(8u, (group_count(step_threads_x_, groups_x) + 7u) / 8u * 8u);
   const SpecConstant step_constants[] = {
       {POND_SPEC_FAST_MATH, fast ? 1u : 0u},
       {POND_SPEC_RSQRT_STEPS, static_cast<std::uint32_t>(model_.constants.rsqrt_steps)},
-      {POND_SPEC_QUAD_COLUMNS, quad_columns_ ? 1u : 0u},
       {POND_SPEC_STEP_LOCAL_X, step_local_x_},
       {POND_SPEC_PADDED_ROWS, pitch_ != static_cast<std::size_t>(model_.cols) ? 1u : 0u}};
-  const bool int64_stores = stores == Stores::best && ctx_.has_int64();
+  const bool int64_stores = ctx_.has_int64();
   step_pipe_ = create_compute_pipeline(ctx_, int64_stores ? water_step_int64_spirv() : water_step_spirv(),
                                        step_bindings(), sizeof(StepPush), step_constants,
                                        std::string(fast ? "water_step (fast" : "water_step (exact") +
@@ -111,7 +107,7 @@ void GpuSolver::create_pipelines(Stores stores, StepPath path) {
   perturb_pipe_ = create_compute_pipeline(ctx_, water_perturb_spirv(), perturb_bindings(), sizeof(PerturbPush), {},
                                           "water_perturb");
   // The normals: one invocation per column (walking a strip of rows), the row spanned by as few
-  // and as evenly filled workgroups as possible, as the step shader's column path.
+  // and as evenly filled workgroups as possible, as the step shader.
   const auto cols = static_cast<std::uint32_t>(model_.cols);
   const std::uint32_t normals_groups_x = std::max(1u, group_count(cols, POND_NORMALS_LOCAL_X_MAX));
   normals_local_x_ = std::max(8u, (group_count(cols, normals_groups_x) + 7u) / 8u * 8u);
@@ -122,8 +118,7 @@ void GpuSolver::create_pipelines(Stores stores, StepPath path) {
 
 void GpuSolver::create_buffers() {
   const vk::DeviceSize state_bytes = stride_ * kComponents * sizeof(float);
-  const auto state_usage = BU::eStorageBuffer | BU::eUniformTexelBuffer | BU::eStorageTexelBuffer |
-                           BU::eTransferSrc | BU::eTransferDst;
+  const auto state_usage = BU::eStorageBuffer | BU::eUniformTexelBuffer | BU::eTransferSrc | BU::eTransferDst;
   state_[0] = create_buffer(ctx_, state_bytes, state_usage, MemoryUse::device, "water state A");
   state_[1] = create_buffer(ctx_, state_bytes, state_usage, MemoryUse::device, "water state B");
   normals_ = create_buffer(ctx_, std::max<std::size_t>(1, model_.nodes()) * 4 * sizeof(float),
@@ -178,7 +173,6 @@ void GpuSolver::create_descriptor_sets() {
     state_r32_[c] = view(state_[c], vk::Format::eR32Sfloat);
     state_rgba32_[c] = view(state_[c], vk::Format::eR32G32B32A32Sfloat);
   }
-  kinds_r8_ = view(kinds_, vk::Format::eR8Uint);
   kinds_rgba8_ = view(kinds_, vk::Format::eR8G8B8A8Uint);
 
   constexpr std::uint32_t kSetsPerPipeline = 2;
@@ -211,9 +205,7 @@ void GpuSolver::create_descriptor_sets() {
     std::vector<vk::BufferView> views(POND_STEP_BINDINGS);
     views[POND_STEP_BINDING_SRC1] = *state_r32_[c];
     views[POND_STEP_BINDING_SRC4] = *state_rgba32_[c];
-    views[POND_STEP_BINDING_DST1] = *state_r32_[1 - c];
     views[POND_STEP_BINDING_DST4] = *state_rgba32_[1 - c];
-    views[POND_STEP_BINDING_KINDS1] = *kinds_r8_;
     views[POND_STEP_BINDING_KINDS4] = *kinds_rgba8_;
     std::vector<vk::WriteDescriptorSet> writes;
     const vk::DescriptorBufferInfo dst_info = state_[1 - c].whole();
@@ -242,8 +234,7 @@ void GpuSolver::set_state(const sim::WaterState& state, std::int64_t steps_done)
   const std::vector<float> words = to_soa_words(state, static_cast<std::size_t>(model_.rows),
                                                 static_cast<std::size_t>(model_.cols), pitch_, stride_);
   cur_ = 0;
-  // Into both buffers: the padding of either is then +0, also where the column path never
-  // writes it (the quad path keeps it +0, water_step.comp).
+  // Into both buffers: the padding of either is then +0 (the step shader keeps it so).
   for (const Buffer& b : state_) upload(ctx_, b, std::as_bytes(std::span(words)));
   step_ = steps_done;
   next_perturbation_ = 0;

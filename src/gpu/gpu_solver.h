@@ -26,15 +26,9 @@ namespace pond::gpu {
 
 class GpuSolver final : public sim::Solver {
  public:
-  // How the step shader stores: 64-bit stores where the device has shaderInt64 (faster on
-  // llvmpipe, the same bits), or vec4 stores; tests force the second to cover both.
-  enum class Stores { best, vec4 };
-  // The step shader's path (water_step.comp): 4 columns per invocation (every grid, thanks to the
-  // row pitch: the faster), or one column per invocation (kept proven by the parity suite).
-  enum class StepPath { quad, column };
-  // Starts from rest. The context must outlive the solver.
-  GpuSolver(const Context& ctx, sim::WaterModel model, Stores stores = Stores::best,
-            StepPath path = StepPath::quad);
+  // Starts from rest. The context must outlive the solver. The step shader stores 64 bits at a time where the context enabled shaderInt64 (faster on
+  // llvmpipe, the same bits), else vec4s.
+  GpuSolver(const Context& ctx, sim::WaterModel model);
 
   const sim::WaterModel& model() const override { return model_; }
   std::int64_t steps_done() const override { return step_; }
@@ -66,7 +60,6 @@ class GpuSolver final : public sim::Solver {
   std::size_t stride() const { return stride_; }
   // Nodes between two rows of the state buffers: cols rounded up to 4 (gpu/water_layout.h).
   std::size_t pitch() const { return pitch_; }
-  StepPath step_path() const { return quad_columns_ ? StepPath::quad : StepPath::column; }
   // compute_normals() and read them back, as sim::Normals.
   sim::Normals read_normals();
   // normals_buffer() read back as it is (what the last compute_normals() or advance_for_frame()
@@ -79,7 +72,7 @@ class GpuSolver final : public sim::Solver {
 
  private:
   // The constructor's steps, in order.
-  void create_pipelines(Stores stores, StepPath path);
+  void create_pipelines();
   void create_buffers();
   void map_state_where_host_readable();
   void upload_kinds_and_perturbations();
@@ -97,10 +90,9 @@ class GpuSolver final : public sim::Solver {
   ComputePipeline step_pipe_, perturb_pipe_, normals_pipe_;
   Buffer state_[2], kinds_, table_, normals_;
   // Texel-buffer views the step shader reads and writes the state through (water_gpu.h,
-  // POND_STEP_BINDING_*): state c as R32F and RGBA32F, kinds as R8UI and RGBA8UI.
+  // POND_STEP_BINDING_*): state c as R32F and RGBA32F, kinds as RGBA8UI.
   vk::raii::BufferView state_r32_[2] = {nullptr, nullptr}, state_rgba32_[2] = {nullptr, nullptr};
-  vk::raii::BufferView kinds_r8_ = nullptr, kinds_rgba8_ = nullptr;
-  bool quad_columns_ = false;  // the step shader's 4-columns-per-invocation path (StepPath::quad)
+  vk::raii::BufferView kinds_rgba8_ = nullptr;
   std::uint32_t step_threads_x_ = 0;  // invocations per row strip of the step shader
   std::uint32_t step_local_x_ = 0;    // its workgroup width (specialization constant)
   std::uint32_t normals_local_x_ = 0; // the normals shader's (one invocation per column)

@@ -62,12 +62,11 @@ std::string describe(const Difference& d, const sim::WaterModel& m) {
 
 std::optional<Difference> run_parity(const gpu::Context& ctx, const sim::WaterModel& model, std::int64_t steps,
                                      std::int64_t checkpoint, const std::string& tag,
-                                     const sim::WaterModel* gpu_model, gpu::GpuSolver::Stores stores,
-                                     gpu::GpuSolver::StepPath path) {
+                                     const sim::WaterModel* gpu_model) {
   if (const char* every = std::getenv("POND_PARITY_EVERY_STEP"); every && std::strcmp(every, "1") == 0) checkpoint = 1;
   ParityLog log;
   sim::CpuSolver cpu(model, sim::Backend::scalar, 1);
-  gpu::GpuSolver gpu(ctx, gpu_model ? *gpu_model : model, stores, path);
+  gpu::GpuSolver gpu(ctx, gpu_model ? *gpu_model : model);
   sim::WaterState last_equal = cpu.state();
   std::int64_t last_equal_step = 0;
   while (cpu.steps_done() < steps) {

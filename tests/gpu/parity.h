@@ -33,12 +33,9 @@ std::string describe(const Difference& d, const sim::WaterModel& model);
 
 // Runs `steps` steps on both solvers; nullopt when the states are equal after every checkpoint.
 // `gpu_model` (default: `model`) lets a test give the GPU a deliberately different model to prove
-// that the bisection finds the step; `stores` picks the step shader's store variant, `path` its
-// path (4 columns or one per invocation).
+// that the bisection finds the step.
 std::optional<Difference> run_parity(const gpu::Context& ctx, const sim::WaterModel& model, std::int64_t steps,
                                      std::int64_t checkpoint, const std::string& tag,
-                                     const sim::WaterModel* gpu_model = nullptr,
-                                     gpu::GpuSolver::Stores stores = gpu::GpuSolver::Stores::best,
-                                     gpu::GpuSolver::StepPath path = gpu::GpuSolver::StepPath::quad);
+                                     const sim::WaterModel* gpu_model = nullptr);
 
 }  // namespace pond::test

@@ -152,14 +152,13 @@ TEST_P(ParityTest, GpuExactEqualsCpuScalarBitForBit) {
 INSTANTIATE_TEST_SUITE_P(Scenes, ParityTest, ::testing::ValuesIn(kCases),
                          [](const ::testing::TestParamInfo<ParityCase>& p) { return std::string(p.param.name); });
 
-// The GPU state's rows are padded to a multiple of 4 nodes, so the step shader's quad path (4
+// The GPU state's rows are padded to a multiple of 4 nodes, so the step shader's one algorithm (4
 // columns per invocation) runs every grid, odd widths too.
-TEST_F(GpuTest, QuadPathRunsEveryWidth) {
+TEST_F(GpuTest, RowsArePaddedToQuadsOnEveryWidth) {
   for (const ParityCase& c : kCases) {
     const sim::WaterModel model = model_of(c);
     const gpu::GpuSolver solver(ctx(), model);
     const auto cols = static_cast<std::size_t>(model.cols);
-    EXPECT_EQ(solver.step_path(), gpu::GpuSolver::StepPath::quad) << c.name;
     EXPECT_EQ(solver.pitch() % 4, 0u) << c.name;
     EXPECT_TRUE(solver.pitch() >= cols && solver.pitch() < cols + 4) << c.name << ": pitch " << solver.pitch();
   }
@@ -174,30 +173,25 @@ bool small_case(const ParityCase& c) { return model_of(c).nodes() < 20000; }
 // above. (Under ASan in CI the two tests took 90 s each at full length.)
 constexpr std::int64_t kForcedVariantSteps = 2000;
 
-// The step shader has two store variants in the quad path (64-bit stores where the device has
-// shaderInt64, which lavapipe has, and vec4 stores): the cases above run the first; this runs the
-// second.
-TEST_F(GpuTest, Vec4StoreVariantEqualsCpuScalarBitForBit) {
-  EXPECT_TRUE(ctx().has_int64()) << "lavapipe has shaderInt64: the cases above ran the 64-bit stores";
-  for (const ParityCase& c : kCases) {
-    if (!small_case(c)) continue;
-    const sim::WaterModel model = model_of(c);
-    const auto diff = run_parity(ctx(), model, scaled_steps(std::min(c.steps, kForcedVariantSteps)), 1000, c.name, nullptr,
-                                 gpu::GpuSolver::Stores::vec4);
-    EXPECT_FALSE(diff.has_value()) << c.name << ": " << describe(*diff, model);
+// The step shader has two store variants: 64-bit stores where the context enabled shaderInt64,
+// and vec4 stores. The cases above run whichever the device gives; this runs both, the second on a
+// context that leaves shaderInt64 off as a device without it would.
+TEST_F(GpuTest, BothStoreVariantsEqualCpuScalarBitForBit) {
+  gpu::ContextOptions options = gpu::headless_options("", true);
+  options.int64 = false;
+  const gpu::Context no_int64(options);
+  EXPECT_FALSE(no_int64.has_int64());
+  for (const gpu::Context* context : {&ctx(), &no_int64}) {
+    for (const ParityCase& c : kCases) {
+      if (!small_case(c)) continue;
+      const sim::WaterModel model = model_of(c);
+      const auto diff = run_parity(*context, model, scaled_steps(std::min(c.steps, kForcedVariantSteps)), 1000, c.name);
+      EXPECT_FALSE(diff.has_value()) << c.name << (context->has_int64() ? " (64-bit stores)" : " (vec4 stores)") << ": "
+                                     << describe(*diff, model);
+    }
   }
-}
-
-// The column path (one column per invocation, no padding of its own: it stops at cols) is kept
-// proven on the rows-with-a-pitch layout.
-TEST_F(GpuTest, ColumnPathEqualsCpuScalarBitForBit) {
-  for (const ParityCase& c : kCases) {
-    if (!small_case(c)) continue;
-    const sim::WaterModel model = model_of(c);
-    const auto diff = run_parity(ctx(), model, scaled_steps(std::min(c.steps, kForcedVariantSteps)), 1000, c.name, nullptr,
-                                 gpu::GpuSolver::Stores::best, gpu::GpuSolver::StepPath::column);
-    EXPECT_FALSE(diff.has_value()) << c.name << ": " << describe(*diff, model);
-  }
+  no_int64.device().waitIdle();
+  EXPECT_EQ(no_int64.validation_log().count(), 0u) << "validation messages on the context without shaderInt64";
 }
 
 // The bisect mode finds the first differing step: the GPU gets one extra, tiny perturbation just
