@@ -11,6 +11,9 @@
 #include "shared/water_gpu.h"
 
 spirv_execution_mode(capabilities = [4466], 4461, 32);  // SignedZeroInfNanPreserve, 32-bit floats
+#ifdef POND_DENORM_PRESERVE  // the variant for devices with shaderDenormPreserveFloat32 (float_policy.h)
+spirv_execution_mode(capabilities = [4464], 4459, 32);  // DenormPreserve, 32-bit floats
+#endif
 
 layout(local_size_x = POND_PERTURB_LOCAL_X, local_size_y = 1, local_size_z = 1) in;
 

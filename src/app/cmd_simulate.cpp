@@ -83,7 +83,9 @@ int run_simulate(const SimulateOptions& o) {
               seconds > 0 ? node_steps / seconds * 1e-6 : 0.0);
   std::printf("energy %.6g (kinetic %.6g, spring %.6g), max displacement %.6g\n", d.total(),
               d.kinetic, d.spring, d.max_displacement);
-  std::printf("state hash %016" PRIx64 "\nwrote %s\n", sim::state_hash(world), o.out.c_str());
+  std::printf("state hash %016" PRIx64 "\n", sim::state_hash(world));
+  if (const std::string identity = session.solver().identity(); !identity.empty()) std::printf("%s\n", identity.c_str());
+  std::printf("wrote %s\n", o.out.c_str());
   return 0;
 }
 

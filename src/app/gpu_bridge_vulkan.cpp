@@ -20,6 +20,7 @@ class HeadlessGpuSolver final : public sim::Solver {
   sim::WaterState read_state() const override { return solver_.read_state(); }
   void set_state(const sim::WaterState& state, std::int64_t steps) override { solver_.set_state(state, steps); }
   std::string engine() const override { return solver_.engine(); }
+  std::string identity() const override { return solver_.identity(); }
 
  private:
   std::shared_ptr<const gpu::Context> ctx_;  // declared first: outlives the solver

@@ -34,7 +34,10 @@ Buffer create_buffer(const Context& ctx, vk::DeviceSize size, vk::BufferUsageFla
   vk::MemoryPropertyFlags required, preferred;
   switch (use) {
     case MemoryUse::device: required = MP::eDeviceLocal; break;
-    case MemoryUse::upload: required = MP::eHostVisible | MP::eHostCoherent; break;
+    case MemoryUse::upload:
+      required = MP::eHostVisible;
+      preferred = MP::eHostCoherent;
+      break;
     case MemoryUse::readback:
       required = MP::eHostVisible;
       preferred = MP::eHostCached | MP::eHostCoherent;
@@ -44,6 +47,7 @@ Buffer create_buffer(const Context& ctx, vk::DeviceSize size, vk::BufferUsageFla
   const std::uint32_t type = choose_memory_type(props, req.memoryTypeBits, required, preferred);
   b.memory = vk::raii::DeviceMemory(ctx.device(), vk::MemoryAllocateInfo{.allocationSize = req.size,
                                                                          .memoryTypeIndex = type});
+  b.memory_size = req.size;
   b.buffer.bindMemory(*b.memory, 0);
   if (use != MemoryUse::device) {
     b.mapped = b.memory.mapMemory(0, VK_WHOLE_SIZE);
@@ -60,11 +64,22 @@ void Buffer::invalidate(const Context& ctx) const {
       vk::MappedMemoryRange{.memory = *memory, .offset = 0, .size = VK_WHOLE_SIZE});
 }
 
+void Buffer::flush(const Context& ctx, vk::DeviceSize bytes) const {
+  if (coherent || !mapped || bytes == 0) return;
+  // Whole atoms, or the whole mapping where the rounded range would pass its end.
+  const vk::DeviceSize atom = ctx.non_coherent_atom();
+  const vk::DeviceSize rounded = bytes == VK_WHOLE_SIZE ? VK_WHOLE_SIZE : (bytes + atom - 1) / atom * atom;
+  const vk::DeviceSize allocated = memory_size;
+  ctx.device().flushMappedMemoryRanges(vk::MappedMemoryRange{
+      .memory = *memory, .offset = 0, .size = rounded >= allocated ? VK_WHOLE_SIZE : rounded});
+}
+
 void upload(const Context& ctx, const Buffer& dst, std::span<const std::byte> bytes) {
   if (bytes.empty()) return;
   const Buffer staging = create_buffer(ctx, bytes.size(), vk::BufferUsageFlagBits::eTransferSrc,
                                        MemoryUse::upload, "upload staging");
   std::memcpy(staging.mapped, bytes.data(), bytes.size());
+  staging.flush(ctx);
   ctx.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
     cmd.copyBuffer(*staging.buffer, *dst.buffer, vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = bytes.size()});
   });

@@ -1,11 +1,12 @@
 #pragma once
 // Buffers with an explicit memory-type choice. Three uses, three choices:
 //  - device:   DEVICE_LOCAL required; the GPU's own memory (state, mask, tables, normals).
-//  - upload:   HOST_VISIBLE | HOST_COHERENT required; written by the CPU, copied from by the GPU.
+//  - upload:   HOST_VISIBLE required, HOST_COHERENT preferred; written by the CPU, read by the
+//              GPU. Where it is not coherent, the writer flushes what it wrote (flush()).
 //  - readback: HOST_VISIBLE required, HOST_CACHED preferred (the CPU reads it), HOST_COHERENT
-//              preferred (otherwise the range is invalidated before reading).
-// On lavapipe every type has every flag, so the choice only matters on real GPUs; it is still made
-// the same way everywhere.
+//              preferred (otherwise the range is invalidated before reading: invalidate()).
+// On lavapipe every type has every flag; a discrete GPU (or the test layer in layers/, which
+// presents lavapipe as one) has neither a host-visible device-local type nor coherent ones.
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -21,12 +22,16 @@ struct Buffer {
   vk::raii::Buffer buffer = nullptr;
   vk::raii::DeviceMemory memory = nullptr;
   vk::DeviceSize size = 0;
+  vk::DeviceSize memory_size = 0;  // of its allocation (at least `size`)
   void* mapped = nullptr;  // upload and readback buffers stay mapped
   bool coherent = true;
 
   vk::DescriptorBufferInfo whole() const { return {.buffer = *buffer, .offset = 0, .range = VK_WHOLE_SIZE}; }
   // Makes GPU writes visible to the host (no-op for coherent memory); call after the fence.
   void invalidate(const Context& ctx) const;
+  // Makes the host's writes to the first `bytes` (whole atoms; default: all) visible to the GPU
+  // (no-op for coherent memory); call before the submission that reads them.
+  void flush(const Context& ctx, vk::DeviceSize bytes = VK_WHOLE_SIZE) const;
 };
 
 // The index of the memory type for `type_bits` with all `required` flags and as many `preferred`

@@ -111,6 +111,14 @@ Context::Context(const ContextOptions& options, const WindowSurface& window)
                                                 .maintenance4 = VK_TRUE};
   const vk::PhysicalDeviceFeatures supported = physical_.getFeatures();
   int64_ = options.int64 && supported.shaderInt64 == VK_TRUE;
+  const auto properties = physical_.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceVulkan12Properties>();
+  const auto& v12 = properties.get<vk::PhysicalDeviceVulkan12Properties>();
+  denorm_preserve_ = v12.shaderDenormPreserveFloat32 == VK_TRUE;
+  signed_zero_preserve_ = v12.shaderSignedZeroInfNanPreserveFloat32 == VK_TRUE;
+  driver_id_ = v12.driverID;
+  driver_ = std::string(v12.driverName.data()) + " " + v12.driverInfo.data();
+  api_version_ = properties.get<vk::PhysicalDeviceProperties2>().properties.apiVersion;
+  non_coherent_atom_ = std::max<vk::DeviceSize>(1, properties.get<vk::PhysicalDeviceProperties2>().properties.limits.nonCoherentAtomSize);
   const vk::PhysicalDeviceFeatures core_features{.fillModeNonSolid = supported.fillModeNonSolid,
                                                  .shaderInt64 = int64_ ? VK_TRUE : VK_FALSE};
   const vk::DeviceCreateInfo device_info{.pNext = &features13, .queueCreateInfoCount = 1,

@@ -51,6 +51,18 @@ class Context {
   // shaderInt64 is enabled (where the device has it and the options allow): the step shader's
   // 64-bit-store variant.
   bool has_int64() const { return int64_; }
+  // The device's float controls for 32-bit floats (VkPhysicalDeviceVulkan12Properties): whether a
+  // shader may declare DenormPreserve and SignedZeroInfNanPreserve, which the exact path needs for
+  // bit-identity to be guaranteed rather than observed (gpu/float_policy.h).
+  bool denorm_preserve() const { return denorm_preserve_; }
+  bool signed_zero_preserve() const { return signed_zero_preserve_; }
+  // The driver as it names itself ("llvmpipe", "NVIDIA", ...: driverID, driverName, driverInfo) and
+  // the device's Vulkan version, for reports.
+  vk::DriverId driver_id() const { return driver_id_; }
+  const std::string& driver() const { return driver_; }
+  std::uint32_t api_version() const { return api_version_; }
+  // Host writes to non-coherent memory are flushed, and device writes invalidated, in whole atoms.
+  vk::DeviceSize non_coherent_atom() const { return non_coherent_atom_; }
   // Validation messages so far (empty without validation).
   const ValidationLog& validation_log() const { return *log_; }
 
@@ -70,6 +82,11 @@ class Context {
   std::unique_ptr<ValidationLog> log_;  // first: the messenger's user data outlives the messenger
   bool debug_utils_ = false;
   bool int64_ = false;
+  bool denorm_preserve_ = false, signed_zero_preserve_ = false;
+  vk::DriverId driver_id_{};
+  std::string driver_;
+  std::uint32_t api_version_ = 0;
+  vk::DeviceSize non_coherent_atom_ = 1;
   vk::raii::Context loader_;
   vk::raii::Instance instance_ = nullptr;
   std::optional<vk::raii::DebugUtilsMessengerEXT> messenger_;

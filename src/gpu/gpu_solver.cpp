@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "gpu/float_policy.h"
 #include "gpu/shaders.h"
 #include "gpu/water_layout.h"
 
@@ -100,11 +101,14 @@ void GpuSolver::create_pipelines() {
       {POND_SPEC_STEP_LOCAL_X, step_local_x_},
       {POND_SPEC_PADDED_ROWS, pitch_ != static_cast<std::size_t>(model_.cols) ? 1u : 0u}};
   const bool int64_stores = ctx_.has_int64();
-  step_pipe_ = create_compute_pipeline(ctx_, int64_stores ? water_step_int64_spirv() : water_step_spirv(),
+  // Exact math declares DenormPreserve where the device allows it; fast math leaves denormals to
+  // the device.
+  const bool denorm = !fast && ctx_.denorm_preserve();
+  step_pipe_ = create_compute_pipeline(ctx_, water_step_spirv(int64_stores, denorm),
                                        step_bindings(), sizeof(StepPush), step_constants,
                                        std::string(fast ? "water_step (fast" : "water_step (exact") +
-                                           (int64_stores ? ", 64-bit stores)" : ")"));
-  perturb_pipe_ = create_compute_pipeline(ctx_, water_perturb_spirv(), perturb_bindings(), sizeof(PerturbPush), {},
+                                           (int64_stores ? ", 64-bit stores" : "") + (denorm ? ", denormals kept)" : ")"));
+  perturb_pipe_ = create_compute_pipeline(ctx_, water_perturb_spirv(denorm), perturb_bindings(), sizeof(PerturbPush), {},
                                           "water_perturb");
   // The normals: one invocation per column (walking a strip of rows), the row spanned by as few
   // and as evenly filled workgroups as possible, as the step shader.
@@ -112,7 +116,7 @@ void GpuSolver::create_pipelines() {
   const std::uint32_t normals_groups_x = std::max(1u, group_count(cols, POND_NORMALS_LOCAL_X_MAX));
   normals_local_x_ = std::max(8u, (group_count(cols, normals_groups_x) + 7u) / 8u * 8u);
   const SpecConstant normals_constants[] = {{POND_SPEC_NORMALS_LOCAL_X, normals_local_x_}};
-  normals_pipe_ = create_compute_pipeline(ctx_, water_normals_spirv(), normals_bindings(), sizeof(NormalsPush),
+  normals_pipe_ = create_compute_pipeline(ctx_, water_normals_spirv(denorm), normals_bindings(), sizeof(NormalsPush),
                                           normals_constants, "water_normals");
 }
 
@@ -407,6 +411,10 @@ sim::Normals GpuSolver::normals() const {
     n.z.push_back(v[4 * k + 2]);
   }
   return n;
+}
+
+std::string GpuSolver::identity() const {
+  return model_.math == sim::MathMode::exact ? identity_line(ctx_) : std::string();
 }
 
 sim::GpuSolverFactory gpu_solver_factory(const Context& ctx) {

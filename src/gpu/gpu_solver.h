@@ -33,6 +33,7 @@ class GpuSolver final : public sim::Solver {
   const sim::WaterModel& model() const override { return model_; }
   std::int64_t steps_done() const override { return step_; }
   std::string engine() const override { return "gpu"; }
+  std::string identity() const override;  // exact math: gpu/float_policy.h's identity_line
 
   // Advances `steps` steps (recorded in command buffers of at most kMaxDispatchesPerSubmit
   // dispatches, each submitted and waited for).

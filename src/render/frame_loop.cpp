@@ -200,6 +200,7 @@ struct FrameLoop::Impl {
                         ? full_index_count
                         : lod.build(water->positions(), f.camera, f.view.lod_tolerance_px,
                                     std::span(static_cast<std::uint32_t*>(s.indices.mapped), lod.max_indices()));
+    if (f.view.lod_tolerance_px > 0) s.indices.flush(ctx, f.index_count * sizeof(std::uint32_t));
     f.stats.triangles = f.index_count / 3;
   }
 
@@ -250,6 +251,7 @@ struct FrameLoop::Impl {
     f.wire = {0.02f, 0.05f, 0.08f, 0.55f};
     f.grid = {static_cast<std::uint32_t>(model().rows), static_cast<std::uint32_t>(model().cols), stride, pitch};
     std::memcpy(s.uniforms.mapped, &f, sizeof f);
+    s.uniforms.flush(ctx);
   }
 
   // The slot's descriptor set points at this frame's buffers (the GPU solver's current ping-pong

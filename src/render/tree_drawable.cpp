@@ -178,6 +178,7 @@ struct TreeDrawable::Impl {
     f.line = kLine;
     f.lod = {lod_camera.pixels_per_unit, static_cast<float>(info.extent.width), static_cast<float>(info.extent.height), 0.0f};
     std::memcpy(slots[info.slot].uniforms.mapped, &f, sizeof f);
+    slots[info.slot].uniforms.flush(ctx);
   }
 
   // What one draw of an instance draws: an index range, and the pruning's scales for the shader.

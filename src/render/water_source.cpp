@@ -62,6 +62,8 @@ WaterSource::DrawBuffers WaterSource::prepare(std::uint32_t slot) {
     v[4 * k + 2] = n.z[k];
     v[4 * k + 3] = 0.0f;
   }
+  slot_state_[slot].flush(ctx_);
+  slot_normals_[slot].flush(ctx_);
   displacements_ = {s.ux.data(), s.uy.data(), s.uz.data()};
   displacements_pitch_ = static_cast<std::size_t>(model_.cols);
   return {&slot_state_[slot], &slot_normals_[slot], static_cast<std::uint32_t>(stride),

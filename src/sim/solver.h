@@ -24,6 +24,9 @@ class Solver {
   virtual void set_state(const WaterState& state, std::int64_t steps_done) = 0;
   // What runs the steps, for messages: "avx2 x 2 threads", "gpu".
   virtual std::string engine() const = 0;
+  // For a solver whose bit-identity with the CPU reference depends on the device: one line saying
+  // whether it is guaranteed or only observed (empty: nothing to say, as for every CPU backend).
+  virtual std::string identity() const { return {}; }
 };
 
 // Which solver advances the water. Switching at run time carries the state over.

@@ -86,23 +86,29 @@ void expect_exact(const Findings& f, const char* what) {
 }
 
 TEST(SpirvTest, ExactStepUsesOnlyCorrectlyRoundedUncontractedOps) {
-  expect_exact(inspect(disassemble(gpu::water_step_spirv(), "water_step_exact", true, false)), "water_step (exact)");
-  expect_exact(inspect(disassemble(gpu::water_step_int64_spirv(), "water_step_int64_exact", true, false)),
-               "water_step (exact, 64-bit stores)");
+  for (const bool int64 : {false, true})
+    for (const bool denorm : {false, true}) {
+      const std::string name = std::string("water_step_exact") + (int64 ? "_int64" : "") + (denorm ? "_denorm" : "");
+      const std::string text = disassemble(gpu::water_step_spirv(int64, denorm), name.c_str(), true, false);
+      expect_exact(inspect(text), name.c_str());
+      EXPECT_EQ(text.find("DenormPreserve 32") != std::string::npos, denorm) << name;
+    }
 }
 
 TEST(SpirvTest, FastStepReallyUsesHardwareInverseSqrt) {
   // The check above is meaningful only if specialization really selects the variants.
-  const Findings f = inspect(disassemble(gpu::water_step_spirv(), "water_step_fast", true, true));
+  const Findings f = inspect(disassemble(gpu::water_step_spirv(false, false), "water_step_fast", true, true));
   EXPECT_TRUE(f.forbidden.count("InverseSqrt"));
 }
 
 TEST(SpirvTest, PerturbAndNormalsAreExact) {
-  const Findings perturb = inspect(disassemble(gpu::water_perturb_spirv(), "water_perturb", false, false));
-  EXPECT_TRUE(perturb.forbidden.empty());
-  EXPECT_TRUE(perturb.contracted.empty());
-  EXPECT_TRUE(perturb.signed_zero_preserve);
-  expect_exact(inspect(disassemble(gpu::water_normals_spirv(), "water_normals", false, false)), "water_normals");
+  for (const bool denorm : {false, true}) {
+    const Findings perturb = inspect(disassemble(gpu::water_perturb_spirv(denorm), "water_perturb", false, false));
+    EXPECT_TRUE(perturb.forbidden.empty());
+    EXPECT_TRUE(perturb.contracted.empty());
+    EXPECT_TRUE(perturb.signed_zero_preserve);
+    expect_exact(inspect(disassemble(gpu::water_normals_spirv(denorm), "water_normals", false, false)), "water_normals");
+  }
 }
 
 }  // namespace

@@ -38,6 +38,7 @@ ImGuiRenderer::ImGuiRenderer(const gpu::Context& ctx, vk::Format color_format)
   const gpu::Buffer staging = gpu::create_buffer(ctx, bytes, vk::BufferUsageFlagBits::eTransferSrc,
                                                  gpu::MemoryUse::upload, "imgui font staging");
   std::memcpy(staging.mapped, pixels, bytes);
+  staging.flush(ctx);
   ctx.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
     const vk::ImageSubresourceRange range{vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1};
     vk::ImageMemoryBarrier2 to_dst{.srcStageMask = vk::PipelineStageFlagBits2::eNone,
@@ -175,7 +176,9 @@ void ImGuiRenderer::prepare(const render::FrameInfo& frame) {
     vertices += list->VtxBuffer.Size;
     indices += list->IdxBuffer.Size;
   }
-  slot.ready = true;  // upload memory is host-coherent: the submit makes the writes visible
+  slot.vertices.flush(ctx_, vk::DeviceSize(data->TotalVtxCount) * sizeof(ImDrawVert));
+  slot.indices.flush(ctx_, vk::DeviceSize(data->TotalIdxCount) * sizeof(ImDrawIdx));
+  slot.ready = true;  // flushed where not host-coherent: the submit makes the writes visible
 }
 
 void ImGuiRenderer::draw_occluding(const render::FrameInfo& frame) {
