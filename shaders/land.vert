@@ -21,7 +21,8 @@ void main() {
   const float top = smoothstep(0.7, 0.95, n.y);
   const vec3 grass = vec3(0.12, 0.2, 0.07);
   vec3 albedo = mix(f.ground.rgb, grass, top);
-  const float wet = clamp(kLandWetAtRest - in_position.y / max(f.pool.y, 1e-3), 0.0, 1.0);
+  const float wet =
+      clamp(kLandWetAtRest - in_position.y / max(POND_FRAME_LAND_HEIGHT(f), 1e-3), 0.0, 1.0);
   albedo *= 1.0 - 0.45 * wet * (1.0 - top);
   const vec3 ambient = f.sky.rgb * (0.25 + 0.15 * n.y);
   out_color = albedo * (ambient + 0.85 * diffuse * vec3(1.0, 0.96, 0.9));

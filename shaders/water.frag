@@ -15,8 +15,8 @@
 layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;
 // The frame's constants (water.vert; not the uniform block, see shared/water_render.h).
-layout(location = POND_WATER_FLAT_EYE) flat in vec4 in_eye;      // xyz: camera; w: 1 / grid spacing
-layout(location = POND_WATER_FLAT_SUN) flat in vec4 in_sun;      // xyz: toward the sun; w: floor depth
+layout(location = POND_WATER_FLAT_EYE) flat in vec4 in_eye;  // xyz: camera; w: POND_FLAT_INV_SPACING
+layout(location = POND_WATER_FLAT_SUN) flat in vec4 in_sun;  // xyz: to the sun; w: POND_FLAT_FLOOR_DEPTH
 layout(location = POND_WATER_FLAT_SKY) flat in vec3 in_sky;
 layout(location = POND_WATER_FLAT_WATER) flat in vec3 in_water;
 layout(location = POND_WATER_FLAT_GROUND) flat in vec3 in_ground;  // lit by the sun
@@ -28,7 +28,7 @@ layout(location = 0) out vec4 out_color;
 // Triangle waves instead of sines: llvmpipe evaluates every transcendental per pixel in software.
 float tri(float x) { return abs(fract(x) - 0.5) * 4.0 - 1.0; }
 vec3 floor_color(vec2 xz) {
-  const vec2 p = xz * in_eye.w;
+  const vec2 p = xz * POND_FLAT_INV_SPACING(in_eye);  // world -> grid units
   const float ripple = tri(p.x * 0.21 + 0.27 * tri(p.y * 0.07)) * tri(p.y * 0.17 + 0.21 * tri(p.x * 0.06));
   return in_ground * (0.85 + 0.15 * ripple);
 }
@@ -59,7 +59,7 @@ void main() {
 
   // Seen through the water: the refracted ray to the floor (air -> water, 1 / 1.33).
   const vec3 t = refract(-v, n, 1.0 / 1.33);
-  const float depth_here = in_world.y + in_sun.w;  // water column under this point
+  const float depth_here = in_world.y + POND_FLAT_FLOOR_DEPTH(in_sun);  // water column under it
   const float path = max(depth_here, 0.0) / max(-t.y, 0.08);
   const vec3 floor_hit = in_world + t * path;
   const vec3 transmit = exp_neg(in_absorb * path);

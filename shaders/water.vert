@@ -25,20 +25,22 @@ layout(location = POND_WATER_FLAT_ABSORB) flat out vec3 out_absorb;
 
 void main() {
   const uint n = uint(gl_VertexIndex);  // compact: row * cols + col
-  const uint cols = f.grid.y, stride = f.grid.z, pitch = f.grid.w;
+  const uint cols = POND_FRAME_COLS(f), stride = POND_FRAME_STATE_STRIDE(f),
+             pitch = POND_FRAME_STATE_PITCH(f);
   const uint col = n % cols, row = n / cols;
   const vec3 rest = vec3(float(col), 0.0, float(row));
   const uint m = row * pitch + col;  // the state's rows are `pitch` nodes apart
   const vec3 u = vec3(state[m], state[stride + m], state[2u * stride + m]);
-  const vec3 world = (rest + u) * f.eye.w;  // grid units -> world
+  const vec3 world = (rest + u) * POND_FRAME_GRID_SPACING(f);  // grid units -> world
   out_world = world;
   out_normal = normals[n].xyz;
   gl_Position = f.view_proj * vec4(world, 1.0);
-  out_eye = vec4(f.eye.xyz, 1.0 / f.eye.w);  // water.frag multiplies by the reciprocal
-  out_sun = vec4(f.sun.xyz, f.pool.x);
+  // w: POND_FLAT_INV_SPACING, the reciprocal: water.frag multiplies by it.
+  out_eye = vec4(f.eye.xyz, 1.0 / POND_FRAME_GRID_SPACING(f));
+  out_sun = vec4(f.sun.xyz, POND_FRAME_FLOOR_DEPTH(f));  // w: POND_FLAT_FLOOR_DEPTH
   out_sky = f.sky.rgb;
   out_water = f.water.rgb;
   out_ground = f.ground.rgb * (0.45 + 0.55 * max(f.sun.y, 0.0));
   out_horizon = sky_horizon(f.sky.rgb);
-  out_absorb = (vec3(1.0) - f.water.rgb) * (0.45 / f.eye.w);
+  out_absorb = (vec3(1.0) - f.water.rgb) * (0.45 / POND_FRAME_GRID_SPACING(f));
 }

@@ -46,31 +46,49 @@ struct mat4 {
 // read once per triangle (instruction counts: docs/perf.md). What depends on the frame alone is
 // also computed there, once a vertex rather than once a pixel. Locations of water.vert ->
 // water.frag:
-#define POND_WATER_FLAT_EYE 2      // WaterFrame::eye (xyz: camera), w: 1 / its w (the grid spacing)
-#define POND_WATER_FLAT_SUN 3      // xyz: WaterFrame::sun; w: WaterFrame::pool.x (floor depth)
+#define POND_WATER_FLAT_EYE 2      // xyz: the camera; w: POND_FLAT_INV_SPACING
+#define POND_WATER_FLAT_SUN 3      // xyz: WaterFrame::sun; w: POND_FLAT_FLOOR_DEPTH
 #define POND_WATER_FLAT_SKY 4      // WaterFrame::sky.rgb (the zenith)
 #define POND_WATER_FLAT_WATER 5    // WaterFrame::water.rgb
 #define POND_WATER_FLAT_GROUND 6   // WaterFrame::ground.rgb lit by the sun (the pool floor's light)
 #define POND_WATER_FLAT_HORIZON 7  // the sky's colour at the horizon
 #define POND_WATER_FLAT_ABSORB 8   // the water's absorption per world unit (rgb)
+// The w lanes of the EYE and SUN varyings by name (each macro is the lane itself: no extra varying,
+// no extra instruction):
+#define POND_FLAT_INV_SPACING(eye) ((eye).w)  // 1 / the grid spacing (grid units per world unit)
+#define POND_FLAT_FLOOR_DEPTH(sun) ((sun).w)  // the pool floor's depth (POND_FRAME_FLOOR_DEPTH)
 
 // Fragment-shader specialization constant (bool), set by render/graphics_pipeline.cpp from the colour
 // format: true when the target is UNORM and the shader must encode sRGB itself.
 #define POND_SPEC_ENCODE_SRGB 0
 
-// Everything a frame's shaders need, one uniform block (std140), written per frame slot.
+// Everything a frame's shaders need, one uniform block (std140), written per frame slot. Every
+// member is a vec4 (or mat4), so the layout is the same in both languages; the lanes that hold
+// something other than the member's name says are read and written through the POND_FRAME_*
+// accessors below.
 struct WaterFrame {
   mat4 view_proj;  // world -> clip, Vulkan conventions (y down, depth 0..1)
-  vec4 eye;        // xyz: camera position (world); w: grid spacing h
+  vec4 eye;        // xyz: camera position (world); w: POND_FRAME_GRID_SPACING
   vec4 sun;        // xyz: unit direction toward the sun; w: unused
   vec4 sky;        // rgb: sky colour at the zenith (linear); w: unused
   vec4 water;      // rgb: deep water colour (linear); w: unused
   vec4 ground;     // rgb: pool floor, shore and island colour (linear); w: unused
-  vec4 pool;       // x: floor depth below the rest surface; y: land height above it (world); zw: 0
+  vec4 pool;       // x: POND_FRAME_FLOOR_DEPTH; y: POND_FRAME_LAND_HEIGHT; zw: 0
   vec4 wire;       // rgb: LOD wireframe colour; a: its opacity
-  uvec4 grid;      // x: rows; y: cols; z: stride of the state arrays (floats); w: row pitch of
-                   // the state (nodes; cols where the state is compact)
+  uvec4 grid;      // x, y, z, w: POND_FRAME_ROWS, _COLS, _STATE_STRIDE, _STATE_PITCH
 };
+
+// The packed lanes of a WaterFrame by name. Macros, so that one spelling serves both languages
+// (GLSL has no member functions or references): each is the lane itself, an lvalue the C++ writer
+// assigns and the shaders read, so the shaders compile to the same code as with the bare lane.
+#define POND_FRAME_GRID_SPACING(frame) ((frame).eye.w)  // h: world units between nodes
+#define POND_FRAME_FLOOR_DEPTH(frame) ((frame).pool.x)  // pool floor below the rest surface (world)
+#define POND_FRAME_LAND_HEIGHT(frame) ((frame).pool.y)  // land above the rest surface (world)
+#define POND_FRAME_ROWS(frame) ((frame).grid.x)         // nodes
+#define POND_FRAME_COLS(frame) ((frame).grid.y)         // nodes
+#define POND_FRAME_STATE_STRIDE(frame) ((frame).grid.z)  // floats between the state's arrays
+#define POND_FRAME_STATE_PITCH(frame) ((frame).grid.w)   // nodes between the state's rows (cols
+                                                         // where the state is compact)
 
 // One vertex of the land mesh: position (world, w = 1) and normal (w = 0).
 struct LandVertex {

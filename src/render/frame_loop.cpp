@@ -46,8 +46,9 @@ vk::ImageMemoryBarrier2 layout_barrier(vk::Image image, vk::ImageAspectFlags asp
           .subresourceRange = {.aspectMask = aspect, .baseMipLevel = 0, .levelCount = 1, .baseArrayLayer = 0, .layerCount = 1}};
 }
 
-shared::water_render::vec4 v4(const std::array<double, 3>& a, double w = 0) {
-  return {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2]), static_cast<float>(w)};
+// xyz (or rgb) of a uniform vec4; w = 0 (a packed w lane is set by its name: POND_FRAME_*).
+shared::water_render::vec4 v4(const std::array<double, 3>& a) {
+  return {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2]), 0.0f};
 }
 
 double ms_since(std::chrono::steady_clock::time_point& t) {
@@ -242,14 +243,19 @@ struct FrameLoop::Impl {
     const double sl = std::sqrt(l.sun[0] * l.sun[0] + l.sun[1] * l.sun[1] + l.sun[2] * l.sun[2]);
     WaterFrame f;
     std::memcpy(f.view_proj.m, view_proj.data(), sizeof f.view_proj.m);
-    f.eye = v4(camera.eye, model().spacing);
+    f.eye = v4(camera.eye);
+    POND_FRAME_GRID_SPACING(f) = model().spacing;
     f.sun = v4({l.sun[0] / sl, l.sun[1] / sl, l.sun[2] / sl});
     f.sky = v4(l.sky);
     f.water = v4(l.water);
     f.ground = v4(l.ground);
-    f.pool = {static_cast<float>(v.floor_depth), static_cast<float>(v.land_height), 0, 0};
+    POND_FRAME_FLOOR_DEPTH(f) = static_cast<float>(v.floor_depth);
+    POND_FRAME_LAND_HEIGHT(f) = static_cast<float>(v.land_height);
     f.wire = {0.02f, 0.05f, 0.08f, 0.55f};
-    f.grid = {static_cast<std::uint32_t>(model().rows), static_cast<std::uint32_t>(model().cols), stride, pitch};
+    POND_FRAME_ROWS(f) = static_cast<std::uint32_t>(model().rows);
+    POND_FRAME_COLS(f) = static_cast<std::uint32_t>(model().cols);
+    POND_FRAME_STATE_STRIDE(f) = stride;
+    POND_FRAME_STATE_PITCH(f) = pitch;
     std::memcpy(s.uniforms.mapped, &f, sizeof f);
     s.uniforms.flush(ctx);
   }

@@ -42,7 +42,7 @@ inline namespace POND_ISA {
 
 // Offsets of the spring rows in the scratch (see step_view.h): two rows of H springs (x, y, z
 // each; row i's and row i+1's) and three bands of S, D1, D2 (x, y, z each; rows i-1, i, i+1).
-POND_KERNEL_INLINE constexpr int h_row(int h) { return 3 * h; }
+POND_KERNEL_INLINE constexpr int h_row(int h_index) { return 3 * h_index; }
 POND_KERNEL_INLINE constexpr int band_row(int band) { return 6 + 9 * band; }
 inline constexpr int kBandS = 0, kBandD1 = 3, kBandD2 = 6;
 
@@ -55,16 +55,16 @@ inline constexpr int kBandS = 0, kBandD1 = 3, kBandD2 = 6;
 // A range narrower than W is done with W::Half, or one column at a time with the scalar backend.
 template <class W, class Fn>
 POND_KERNEL_INLINE void for_chunks(int begin, int end, Fn&& fn) {
-  using H = typename W::Half;
+  using Half = typename W::Half;
   if (end - begin >= W::width) {
     int j = begin;
     for (; end - j > W::width; j += W::width) fn.template operator()<W, false>(j);
-    if constexpr (H::width < W::width) {
-      if (end - j <= H::width) {
-        if (end - j < H::width)
-          fn.template operator()<H, true>(end - H::width);
+    if constexpr (Half::width < W::width) {
+      if (end - j <= Half::width) {
+        if (end - j < Half::width)
+          fn.template operator()<Half, true>(end - Half::width);
         else
-          fn.template operator()<H, false>(j);
+          fn.template operator()<Half, false>(j);
         return;
       }
     }
@@ -72,8 +72,8 @@ POND_KERNEL_INLINE void for_chunks(int begin, int end, Fn&& fn) {
       fn.template operator()<W, true>(end - W::width);
     else
       fn.template operator()<W, false>(j);
-  } else if constexpr (H::width < W::width) {
-    for_chunks<H>(begin, end, fn);
+  } else if constexpr (Half::width < W::width) {
+    for_chunks<Half>(begin, end, fn);
   } else {
     for (int j = begin; j < end; ++j) fn.template operator()<WideScalar, false>(j);
   }
@@ -88,8 +88,8 @@ struct StepKernel {
   struct Node {
     F x, y, z;
   };
-  POND_KERNEL_INLINE static Node load(const StepView& v, std::size_t n) {
-    return {W::load(v.ux + n), W::load(v.uy + n), W::load(v.uz + n)};
+  POND_KERNEL_INLINE static Node load(const StepView& view, std::size_t n) {
+    return {W::load(view.ux + n), W::load(view.uy + n), W::load(view.uz + n)};
   }
 
   // A spring a->b: its vector (b at column offset DJ and row offset DI from a), rest length and
@@ -100,7 +100,8 @@ struct StepKernel {
     float* out;
   };
   template <int DJ, int DI>
-  POND_KERNEL_INLINE static Spring vec(const Node& a, const Node& b, float rest, float* out) {
+  POND_KERNEL_INLINE static Spring make_spring(const Node& a, const Node& b, float rest,
+                                               float* out) {
     F dx = W::sub(b.x, a.x);
     const F dy = W::sub(b.y, a.y);
     F dz = W::sub(b.z, a.z);
@@ -134,110 +135,127 @@ struct StepKernel {
   // The terms d * (1 - L * rsqrt(l2)), l2 = (dx*dx + dy*dy) + dz*dz, of K springs, each stage for
   // all K before the next (see rsqrt_n).
   template <int K>
-  POND_KERNEL_INLINE static void springs(const Spring (&s)[K]) {
-    F l2[K], y[K];
+  POND_KERNEL_INLINE static void spring_terms(const Spring (&springs)[K]) {
+    F l2[K], inv_len[K];
     for (int k = 0; k < K; ++k)
-      l2[k] = W::add(W::add(W::mul(s[k].dx, s[k].dx), W::mul(s[k].dy, s[k].dy)),
-                     W::mul(s[k].dz, s[k].dz));
-    rsqrt_n(l2, y);
+      l2[k] =
+          W::add(W::add(W::mul(springs[k].dx, springs[k].dx), W::mul(springs[k].dy, springs[k].dy)),
+                 W::mul(springs[k].dz, springs[k].dz));
+    rsqrt_n(l2, inv_len);
     for (int k = 0; k < K; ++k) {
-      const F f = W::sub(W::set1(1.0f), W::mul(W::set1(s[k].rest), y[k]));
-      W::store(s[k].out, W::mul(s[k].dx, f));
-      W::store(s[k].out + kSlots, W::mul(s[k].dy, f));
-      W::store(s[k].out + 2 * kSlots, W::mul(s[k].dz, f));
+      const F scale = W::sub(W::set1(1.0f), W::mul(W::set1(springs[k].rest), inv_len[k]));
+      W::store(springs[k].out, W::mul(springs[k].dx, scale));
+      W::store(springs[k].out + kSlots, W::mul(springs[k].dy, scale));
+      W::store(springs[k].out + 2 * kSlots, W::mul(springs[k].dz, scale));
     }
   }
 
   // The term of spring a->b on node a, b at column offset DJ and row offset DI from a, stored in
   // the three spring rows at `out` (x, y, z).
   template <int DJ, int DI>
-  POND_KERNEL_INLINE static void spring(const Node& a, const Node& b, float rest, float* out) {
-    const Spring one[1] = {vec<DJ, DI>(a, b, rest, out)};
-    springs<1>(one);
+  POND_KERNEL_INLINE static void spring_term(const Node& a, const Node& b, float rest, float* out) {
+    const Spring one[1] = {make_spring<DJ, DI>(a, b, rest, out)};
+    spring_terms<1>(one);
   }
 };
 
-// Fills slots [0, slots] of a band with a signed zero: +0 where the band is subtracted (below the
-// row), -0 where it is added (above): either way the exact identity.
-POND_KERNEL_INLINE void fill_band(float* scratch, int band, int slots, float zero) {
-  float* b = scratch + band_row(band) * kSlots;
-  for (int k = 0; k < 9; ++k)
-    for (int s = 0; s <= slots; ++s) b[k * kSlots + s] = zero;
+// Fills slots [0, last_slot] of a band with a signed zero: +0 where the band is subtracted (below
+// the row), -0 where it is added (above): either way the exact identity.
+POND_KERNEL_INLINE void fill_band(float* scratch, int band, int last_slot, float zero) {
+  float* band_springs = scratch + band_row(band) * kSlots;
+  for (int spring_row = 0; spring_row < 9; ++spring_row)
+    for (int slot = 0; slot <= last_slot; ++slot) band_springs[spring_row * kSlots + slot] = zero;
 }
 
-// The springs of row i that block [c0, c1) needs: H, D1, D2 at column indices
-// [lo, hi] = [max(c0-1, 0), min(c1-1, C-2)] into H row `hs` and band `cur`, S at [c0, c1) into
-// band `cur`; without a row below, band `cur` becomes -0. Missing indices -1 and C-1 get the signed
-// zero that makes their use an identity: for_chunks over [lo, hi] with this object, then finish().
+// The springs of row i that the block of columns [block_begin, block_end) needs: H, D1, D2 at
+// column indices [first_spring, last_spring] = [max(block_begin-1, 0), min(block_end-1, cols-2)]
+// into H row `h_index` and band `band`, S at [block_begin, block_end) into band `band`; without a
+// row i+1, band `band` becomes -0. Missing indices -1 and cols-1 get the signed zero that makes
+// their use an identity: for_chunks over [first_spring, last_spring] with this object, then
+// finish().
 template <class W, int Steps>
 struct RowSprings {
-  const StepView& v;
-  int C, c0, c1, lo, hi, slot0;
-  bool band;
-  std::size_t row;
-  float *h, *b;
-  float re, rd;
-  bool s_last = false;
+  const StepView& view;
+  int cols, block_begin, block_end, first_spring, last_spring;
+  int slot_offset;  // the slot of column index j is j + slot_offset
+  bool has_next_row;
+  std::size_t row_start;  // node (i, 0)
+  float* h_springs;       // slot 0 of H row `h_index` (its x row; y, z follow)
+  float* band_springs;    // slot 0 of band `band` (its S x row; the other eight follow)
+  float rest_edge, rest_diag;
+  bool last_s_done = false;  // a shifted last chunk computed S(last_spring + 1)
 
-  POND_KERNEL_INLINE RowSprings(const StepView& view, int i, int block0, int block1, float* scratch,
-                                int hs, int cur)
-      : v(view), C(view.cols), c0(block0), c1(block1), lo(block0 > 0 ? block0 - 1 : 0),
-        hi(block1 - 1 < view.cols - 2 ? block1 - 1 : view.cols - 2), slot0(1 - block0),
-        band(i + 1 < view.rows), row(static_cast<std::size_t>(i) * view.cols),
-        h(scratch + h_row(hs) * kSlots), b(scratch + band_row(cur) * kSlots), re(view.k.rest_edge),
-        rd(view.k.rest_diag) {
-    if (!band) fill_band(scratch, cur, c1 - c0, -0.0f);
+  POND_KERNEL_INLINE RowSprings(const StepView& step_view, int i, int begin_col, int end_col,
+                                float* scratch, int h_index, int band)
+      : view(step_view), cols(step_view.cols), block_begin(begin_col), block_end(end_col),
+        first_spring(begin_col > 0 ? begin_col - 1 : 0),
+        last_spring(end_col - 1 < step_view.cols - 2 ? end_col - 1 : step_view.cols - 2),
+        slot_offset(1 - begin_col), has_next_row(i + 1 < step_view.rows),
+        row_start(static_cast<std::size_t>(i) * step_view.cols),
+        h_springs(scratch + h_row(h_index) * kSlots),
+        band_springs(scratch + band_row(band) * kSlots), rest_edge(step_view.k.rest_edge),
+        rest_diag(step_view.k.rest_diag) {
+    if (!has_next_row) fill_band(scratch, band, block_end - block_begin, -0.0f);
   }
 
   // The four springs of a cell corner from the cell's four nodes, each loaded once. S is also
-  // evaluated at index c0-1 (slot 0, never read). S(C-1), the one spring without a right
-  // neighbour, comes from the last chunk's right column pair when that chunk overlaps the one
-  // before it (S(j+1) from e and ue instead of S(j) from a and u: the same spring, the same
-  // inputs), else on its own in finish(). (S(c1) of an inner block, also computed then, is never
-  // read.) Without a row below, only H.
+  // evaluated at index block_begin-1 (slot 0, never read). S(cols-1), the one spring without a
+  // right neighbour, comes from the last chunk's right column pair when that chunk overlaps the
+  // one before it (S(j+1) from `right` and `up_right` instead of S(j) from `here` and `up`: the
+  // same spring, the same inputs), else on its own in finish(). (S(block_end) of an inner block,
+  // also computed then, is never read.) Without a row i+1, only H.
   template <class V, bool Shifted>
   POND_KERNEL_INLINE void operator()(int j) {
-    using K = StepKernel<V, Steps>;
-    const std::size_t n = row + j;
-    const int s = j + slot0;
-    if (band) {
-      const auto a = K::load(v, n), e = K::load(v, n + 1), u = K::load(v, n + C),
-                 ue = K::load(v, n + C + 1);
-      const typename K::Spring sp[4] = {
-          K::template vec<1, 0>(a, e, re, h + s),  // H:  (i,j) -> (i,j+1)
+    using Kernel = StepKernel<V, Steps>;
+    const std::size_t n = row_start + j;
+    const int slot = j + slot_offset;
+    if (has_next_row) {  // the cell's nodes (i,j), (i,j+1), (i+1,j), (i+1,j+1)
+      const auto here = Kernel::load(view, n), right = Kernel::load(view, n + 1),
+                 up = Kernel::load(view, n + cols), up_right = Kernel::load(view, n + cols + 1);
+      const typename Kernel::Spring cell[4] = {
+          // H:  (i,j) -> (i,j+1)
+          Kernel::template make_spring<1, 0>(here, right, rest_edge, h_springs + slot),
           // S:  (i,j) -> (i+1,j), or S(j+1) in a shifted last chunk
-          Shifted ? K::template vec<0, 1>(e, ue, re, b + kBandS * kSlots + s + 1)
-                  : K::template vec<0, 1>(a, u, re, b + kBandS * kSlots + s),
-          K::template vec<1, 1>(a, ue, rd, b + kBandD1 * kSlots + s),   // D1: (i,j) -> (i+1,j+1)
-          K::template vec<-1, 1>(e, u, rd, b + kBandD2 * kSlots + s)};  // D2: (i,j+1) -> (i+1,j)
-      K::springs(sp);
-      if constexpr (Shifted) s_last = true;
+          Shifted ? Kernel::template make_spring<0, 1>(right, up_right, rest_edge,
+                                                       band_springs + kBandS * kSlots + slot + 1)
+                  : Kernel::template make_spring<0, 1>(here, up, rest_edge,
+                                                       band_springs + kBandS * kSlots + slot),
+          // D1: (i,j) -> (i+1,j+1)
+          Kernel::template make_spring<1, 1>(here, up_right, rest_diag,
+                                             band_springs + kBandD1 * kSlots + slot),
+          // D2: (i,j+1) -> (i+1,j)
+          Kernel::template make_spring<-1, 1>(right, up, rest_diag,
+                                              band_springs + kBandD2 * kSlots + slot)};
+      Kernel::spring_terms(cell);
+      if constexpr (Shifted) last_s_done = true;
     } else {
-      K::template spring<1, 0>(K::load(v, n), K::load(v, n + 1), re, h + s);
+      Kernel::template spring_term<1, 0>(Kernel::load(view, n), Kernel::load(view, n + 1),
+                                         rest_edge, h_springs + slot);
     }
   }
 
   POND_KERNEL_INLINE void finish() {
-    if (band && c1 == C && !s_last) {
-      using K = StepKernel<WideScalar, Steps>;
-      const std::size_t n = row + C - 1;
-      K::template spring<0, 1>(K::load(v, n), K::load(v, n + C), re,
-                               b + kBandS * kSlots + C - 1 + slot0);
+    if (has_next_row && block_end == cols && !last_s_done) {
+      using Kernel = StepKernel<WideScalar, Steps>;
+      const std::size_t n = row_start + cols - 1;
+      Kernel::template spring_term<0, 1>(Kernel::load(view, n), Kernel::load(view, n + cols),
+                                         rest_edge,
+                                         band_springs + kBandS * kSlots + cols - 1 + slot_offset);
     }
-    for (int c = 0; c < 3; ++c) {
-      if (c0 == 0) {  // index -1 is slot 0
-        h[c * kSlots] = +0.0f;  // only subtracted (by node 0)
-        if (band) {
-          b[(kBandD1 + c) * kSlots] = +0.0f;  // only subtracted (as the lower band)
-          b[(kBandD2 + c) * kSlots] = -0.0f;  // only added (as the upper band)
+    for (int axis = 0; axis < 3; ++axis) {
+      if (block_begin == 0) {  // index -1 is slot 0
+        h_springs[axis * kSlots] = +0.0f;  // only subtracted (by node 0)
+        if (has_next_row) {
+          band_springs[(kBandD1 + axis) * kSlots] = +0.0f;  // only subtracted (as the lower band)
+          band_springs[(kBandD2 + axis) * kSlots] = -0.0f;  // only added (as the upper band)
         }
       }
-      if (c1 == C) {
-        const int s = C - 1 + slot0;
-        h[c * kSlots + s] = -0.0f;  // index C-1: only added (by node C-1)
-        if (band) {
-          b[(kBandD1 + c) * kSlots + s] = -0.0f;  // only added (as the upper band)
-          b[(kBandD2 + c) * kSlots + s] = +0.0f;  // only subtracted (as the lower band)
+      if (block_end == cols) {
+        const int slot = cols - 1 + slot_offset;
+        h_springs[axis * kSlots + slot] = -0.0f;  // index cols-1: only added (by node cols-1)
+        if (has_next_row) {
+          band_springs[(kBandD1 + axis) * kSlots + slot] = -0.0f;  // only added (upper band)
+          band_springs[(kBandD2 + axis) * kSlots + slot] = +0.0f;  // only subtracted (lower band)
         }
       }
     }
@@ -245,48 +263,51 @@ struct RowSprings {
 };
 
 template <class W, int Steps>
-POND_KERNEL_INLINE void block_springs(const StepView& v, int i, int c0, int c1, float* scratch,
-                                      int hs, int cur) {
-  RowSprings<W, Steps> sp(v, i, c0, c1, scratch, hs, cur);
-  for_chunks<W>(sp.lo, sp.hi + 1, sp);
-  sp.finish();
+POND_KERNEL_INLINE void block_springs(const StepView& view, int i, int block_begin, int block_end,
+                                      float* scratch, int h_index, int band) {
+  RowSprings<W, Steps> row_springs(view, i, block_begin, block_end, scratch, h_index, band);
+  for_chunks<W>(row_springs.first_spring, row_springs.last_spring + 1, row_springs);
+  row_springs.finish();
 }
 
 // Sums the spring terms of nodes [j, j + width) of row i in canonical order and integrates them.
 // Returns `check` plus the new velocity components (non-finite iff the step blew up).
 template <class W>
-POND_KERNEL_INLINE typename W::F integrate_at(const StepView& v, int i, int j, int c0,
-                                              const float* scratch, int hs, int below, int above,
-                                              typename W::F check) {
+POND_KERNEL_INLINE typename W::F integrate_at(const StepView& view, int i, int j, int block_begin,
+                                              const float* scratch, int h_index, int below,
+                                              int above, typename W::F check) {
   using F = typename W::F;
-  const std::size_t n = static_cast<std::size_t>(i) * v.cols + j;
-  const int s = j - c0 + 1;  // slot of column j
-  const float* h = scratch + h_row(hs) * kSlots + s;
-  const float* lo = scratch + band_row(below) * kSlots + s;
-  const float* up = scratch + band_row(above) * kSlots + s;
-  const F kc = W::set1(v.k.kc), kd = W::set1(v.k.kd), dt = W::set1(v.k.dt);
-  const typename W::M free_h = W::kind_below(v.kinds + n, 1);  // free nodes move horizontally
-  const typename W::M free_v = W::kind_below(v.kinds + n, 2);  // free and vertical nodes move in y
-  const float* const pos[3] = {v.ux, v.uy, v.uz};
-  const float* const vel[3] = {v.vx, v.vy, v.vz};
-  float* const opos[3] = {v.oux, v.ouy, v.ouz};
-  float* const ovel[3] = {v.ovx, v.ovy, v.ovz};
-  for (int c = 0; c < 3; ++c) {
-    const int o = c * kSlots;
-    F g = W::neg(W::load(h + o - 1));                          // (i, j-1)
-    g = W::add(g, W::load(h + o));                             // (i, j+1)
-    g = W::sub(g, W::load(lo + kBandS * kSlots + o));          // (i-1, j)
-    g = W::add(g, W::load(up + kBandS * kSlots + o));          // (i+1, j)
-    g = W::sub(g, W::load(lo + kBandD1 * kSlots + o - 1));     // (i-1, j-1)
-    g = W::add(g, W::load(up + kBandD1 * kSlots + o));         // (i+1, j+1)
-    g = W::sub(g, W::load(lo + kBandD2 * kSlots + o));         // (i-1, j+1)
-    g = W::add(g, W::load(up + kBandD2 * kSlots + o - 1));     // (i+1, j-1)
-    const F vel0 = W::load(vel[c] + n);
-    F v1 = W::add(vel0, W::sub(W::mul(g, kc), W::mul(vel0, kd)));
-    v1 = W::keep(c == 1 ? free_v : free_h, v1);
-    W::store(ovel[c] + n, v1);
-    W::store(opos[c] + n, W::add(W::load(pos[c] + n), W::mul(v1, dt)));
-    check = W::add(check, v1);
+  const std::size_t n = static_cast<std::size_t>(i) * view.cols + j;
+  const int slot = j - block_begin + 1;  // slot of column j
+  // Column j's slot in the H row and in the bands of rows i-1 (below) and i (above).
+  const float* h_springs = scratch + h_row(h_index) * kSlots + slot;
+  const float* band_below = scratch + band_row(below) * kSlots + slot;
+  const float* band_above = scratch + band_row(above) * kSlots + slot;
+  const F kc = W::set1(view.k.kc), kd = W::set1(view.k.kd), dt = W::set1(view.k.dt);
+  // Free nodes move horizontally; free and vertical nodes move in y.
+  const typename W::M free_h = W::kind_below(view.kinds + n, 1);
+  const typename W::M free_v = W::kind_below(view.kinds + n, 2);
+  const float* const pos[3] = {view.ux, view.uy, view.uz};
+  const float* const vel[3] = {view.vx, view.vy, view.vz};
+  float* const out_pos[3] = {view.oux, view.ouy, view.ouz};
+  float* const out_vel[3] = {view.ovx, view.ovy, view.ovz};
+  for (int axis = 0; axis < 3; ++axis) {
+    const int axis_row = axis * kSlots;  // the axis's row in the H row and in S, D1, D2
+    F sum = W::neg(W::load(h_springs + axis_row - 1));                         // (i, j-1)
+    sum = W::add(sum, W::load(h_springs + axis_row));                          // (i, j+1)
+    sum = W::sub(sum, W::load(band_below + kBandS * kSlots + axis_row));       // (i-1, j)
+    sum = W::add(sum, W::load(band_above + kBandS * kSlots + axis_row));       // (i+1, j)
+    sum = W::sub(sum, W::load(band_below + kBandD1 * kSlots + axis_row - 1));  // (i-1, j-1)
+    sum = W::add(sum, W::load(band_above + kBandD1 * kSlots + axis_row));      // (i+1, j+1)
+    sum = W::sub(sum, W::load(band_below + kBandD2 * kSlots + axis_row));      // (i-1, j+1)
+    sum = W::add(sum, W::load(band_above + kBandD2 * kSlots + axis_row - 1));  // (i+1, j-1)
+    const F old_v = W::load(vel[axis] + n);
+    // v' = v + (G*kc - v*kd), G = sum; +0 where constrained
+    F new_v = W::add(old_v, W::sub(W::mul(sum, kc), W::mul(old_v, kd)));
+    new_v = W::keep(axis == 1 ? free_v : free_h, new_v);
+    W::store(out_vel[axis] + n, new_v);
+    W::store(out_pos[axis] + n, W::add(W::load(pos[axis] + n), W::mul(new_v, dt)));
+    check = W::add(check, new_v);
   }
   return check;
 }
@@ -294,67 +315,73 @@ POND_KERNEL_INLINE typename W::F integrate_at(const StepView& v, int i, int j, i
 // The integration of row i of a block, chunk by chunk, with its blow-up check per chunk width.
 template <class W>
 struct RowIntegrate {
-  using H = typename W::Half;
-  const StepView& v;
-  int i = 0, c0 = 0, hs = 0, below = 0, above = 0;
+  using Half = typename W::Half;
+  const StepView& view;
+  int i = 0, block_begin = 0, h_index = 0, below = 0, above = 0;
   const float* scratch = nullptr;
   typename W::F check = W::set1(0.0f);
-  typename H::F half_check = H::set1(0.0f);
+  typename Half::F half_check = Half::set1(0.0f);
   float tail_check = 0.0f;
 
-  explicit RowIntegrate(const StepView& view) : v(view) {}
+  explicit RowIntegrate(const StepView& step_view) : view(step_view) {}
   template <class V, bool>
   POND_KERNEL_INLINE void operator()(int j) {
     if constexpr (V::width == W::width && W::width > 1)
-      check = integrate_at<W>(v, i, j, c0, scratch, hs, below, above, check);
-    else if constexpr (V::width == H::width && H::width > 1)
-      half_check = integrate_at<H>(v, i, j, c0, scratch, hs, below, above, half_check);
+      check = integrate_at<W>(view, i, j, block_begin, scratch, h_index, below, above, check);
+    else if constexpr (V::width == Half::width && Half::width > 1)
+      half_check =
+          integrate_at<Half>(view, i, j, block_begin, scratch, h_index, below, above, half_check);
     else
-      tail_check = integrate_at<WideScalar>(v, i, j, c0, scratch, hs, below, above, tail_check);
+      tail_check = integrate_at<WideScalar>(view, i, j, block_begin, scratch, h_index, below, above,
+                                            tail_check);
   }
-  float sum() const { return W::sum_lanes(check) + H::sum_lanes(half_check) + tail_check; }
+  float sum() const { return W::sum_lanes(check) + Half::sum_lanes(half_check) + tail_check; }
 };
 
-// One substep for rows [r0, r1), block by block. Returns the sum of the new velocity components
-// of those rows (non-finite iff some velocity is non-finite or astronomically large).
+// One substep for rows [row_begin, row_end), block by block. Returns the sum of the new velocity
+// components of those rows (non-finite iff some velocity is non-finite or astronomically large).
 //
 // The springs run one row ahead of the integration, so the spring rows row i reads were stored a
 // whole row earlier (a load that straddles two stores still in flight, as the j-1 terms do, cannot
 // be forwarded from them and waits).
 template <class W, int Steps>
-float step_rows(const StepView& v, int r0, int r1, float* scratch_base) {
-  RowIntegrate<W> in(v);
-  for (int c0 = 0; c0 < v.cols; c0 += kBlockCols) {
-    const int c1 = c0 + kBlockCols < v.cols ? c0 + kBlockCols : v.cols;
+float step_rows(const StepView& view, int row_begin, int row_end, float* scratch_base) {
+  RowIntegrate<W> integrate(view);
+  for (int block_begin = 0; block_begin < view.cols; block_begin += kBlockCols) {
+    const int block_end =
+        block_begin + kBlockCols < view.cols ? block_begin + kBlockCols : view.cols;
     // The spring chunks start at slot 1 (first block) or 0: shift the slots so that it is 64-byte
     // aligned (scratch and kSlots are), making the chunks' stores aligned where they do not
     // overlap: unaligned vector stores are markedly slower on Zen 4 (docs/perf.md).
-    float* const scratch = scratch_base + (c0 == 0 ? kSlotAlign - 1 : 0);
+    float* const scratch = scratch_base + (block_begin == 0 ? kSlotAlign - 1 : 0);
     int below = 0, above = 1, ahead = 2;  // bands of rows i-1, i, i+1
-    int hs = 0;                           // H row of row i (row i+1's is 1 - hs)
-    if (r0 == 0) {
-      fill_band(scratch, below, c1 - c0, +0.0f);  // no row -1: lower-band terms subtract +0
+    int h_index = 0;                      // H row of row i (row i+1's is 1 - h_index)
+    if (row_begin == 0) {
+      // No row -1: the lower-band terms subtract +0.
+      fill_band(scratch, below, block_end - block_begin, +0.0f);
     } else {
-      block_springs<W, Steps>(v, r0 - 1, c0, c1, scratch, 1 - hs, below);  // its H is not used
+      block_springs<W, Steps>(view, row_begin - 1, block_begin, block_end, scratch, 1 - h_index,
+                              below);  // its H is not used
     }
-    block_springs<W, Steps>(v, r0, c0, c1, scratch, hs, above);
-    in.c0 = c0;
-    in.scratch = scratch;
-    for (int i = r0; i < r1; ++i) {
-      in.i = i;
-      in.hs = hs;
-      in.below = below;
-      in.above = above;
-      if (i + 1 < r1) block_springs<W, Steps>(v, i + 1, c0, c1, scratch, 1 - hs, ahead);
-      for_chunks<W>(c0, c1, in);
-      const int done = below;
+    block_springs<W, Steps>(view, row_begin, block_begin, block_end, scratch, h_index, above);
+    integrate.block_begin = block_begin;
+    integrate.scratch = scratch;
+    for (int i = row_begin; i < row_end; ++i) {
+      integrate.i = i;
+      integrate.h_index = h_index;
+      integrate.below = below;
+      integrate.above = above;
+      if (i + 1 < row_end)
+        block_springs<W, Steps>(view, i + 1, block_begin, block_end, scratch, 1 - h_index, ahead);
+      for_chunks<W>(block_begin, block_end, integrate);
+      const int recycled = below;
       below = above;
       above = ahead;
-      ahead = done;
-      hs = 1 - hs;
+      ahead = recycled;
+      h_index = 1 - h_index;
     }
   }
-  return in.sum();
+  return integrate.sum();
 }
 
 }  // namespace POND_ISA
