@@ -1,3 +1,8 @@
+# The Vulkan device the GPU tests run on, by name substring: POND_DEVICE in their environment (the
+# variable every pond command reads when --device is not given). lavapipe by default, so runs are
+# the same everywhere; scripts/test.sh passes $POND_DEVICE, so `POND_DEVICE=radeon scripts/test.sh`
+# tests a real GPU.
+set(POND_TEST_DEVICE "llvmpipe" CACHE STRING "Vulkan device (name substring) for the GPU tests")
 # pond_add_test(NAME SOURCES ... LIBS ... LABELS ...): one GoogleTest executable registered with
 # CTest, every test case of it a CTest test (gtest_discover_tests) carrying the labels.
 include(GoogleTest)

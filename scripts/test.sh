@@ -14,7 +14,7 @@ stage() { echo "== scripts/test.sh: $1 ($SECONDS s)"; }
 export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-$(mktemp -d)}
 
 stage "release build"
-cmake --preset release -DPOND_REQUIRE_IA32=ON
+cmake --preset release -DPOND_REQUIRE_IA32=ON -DPOND_TEST_DEVICE="${POND_DEVICE:-llvmpipe}"
 cmake --build --preset release -j "$jobs"
 
 stage "ASan + UBSan build (CPU tests, fuzzers) and CPU tests"
@@ -29,7 +29,7 @@ FUZZ_SECONDS=${FUZZ_SECONDS:-20} FUZZ_JOBS=$jobs scripts/fuzz.sh
 # The GPU solver's tests under ASan + UBSan too (lavapipe itself is not instrumented; leak checks
 # off, since the driver is unloaded before LeakSanitizer could name its allocations).
 stage "ASan + UBSan build and GPU solver tests"
-cmake --preset sanitize-gpu
+cmake --preset sanitize-gpu -DPOND_TEST_DEVICE="${POND_DEVICE:-llvmpipe}"
 cmake --build --preset sanitize-gpu -j "$jobs"
 ctest --preset sanitize-gpu -j "$jobs"
 

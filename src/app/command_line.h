@@ -16,7 +16,7 @@ class CommandLine {
   CommandLine() {
     app_.require_subcommand(0, 1);
     commands_ = {add_demo_command(app_), add_simulate_command(app_), add_render_command(app_),
-                 add_lod_command(app_), add_tree_command(app_)};
+                 add_lod_command(app_), add_tree_command(app_), add_check_command(app_)};
   }
   CommandLine(const CommandLine&) = delete;
   CommandLine& operator=(const CommandLine&) = delete;

@@ -18,5 +18,6 @@ Command add_simulate_command(CLI::App& app);
 Command add_render_command(CLI::App& app);
 Command add_lod_command(CLI::App& app);
 Command add_tree_command(CLI::App& app);
+Command add_check_command(CLI::App& app);  // the parity suite on the chosen device
 
 }  // namespace pond::app

@@ -1,6 +1,7 @@
 #include "gpu/context.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -89,7 +90,9 @@ Context::Context(const ContextOptions& options, const WindowSurface& window)
   if (options.validation) messenger_.emplace(instance_, messenger_info);
   if (window.make_surface) surface_ = vk::raii::SurfaceKHR(instance_, window.make_surface(*instance_));
 
-  DeviceChoice choice = choose_device(instance_, options.device);
+  // No name given: POND_DEVICE, the one variable that steers every command and the test suite.
+  const char* env_device = std::getenv("POND_DEVICE");
+  DeviceChoice choice = choose_device(instance_, !options.device.empty() ? options.device : env_device ? env_device : "");
   physical_ = std::move(choice.physical);
   family_ = choice.compute_family;
   device_name_ = std::move(choice.name);

@@ -19,7 +19,7 @@
 namespace pond::gpu {
 
 struct ContextOptions {
-  std::string device;       // substring of the device name; empty = the most capable
+  std::string device;       // substring of the device name; empty = $POND_DEVICE, else the most capable
   bool validation = false;  // VK_LAYER_KHRONOS_validation + synchronization validation + messenger
   bool int64 = true;        // enable shaderInt64 where the device has it; false: act as a device without it
 };

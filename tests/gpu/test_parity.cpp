@@ -20,7 +20,7 @@
 #include "gpu/gpu_solver.h"
 #include "gpu/water_layout.h"
 #include "gpu_fixture.h"
-#include "parity.h"
+#include "gpu/parity_check.h"
 #include "sim/cpu_solver.h"
 #include "sim/diagnostics.h"
 #include "sim/normals.h"
@@ -28,6 +28,9 @@
 
 namespace pond::test {
 namespace {
+
+using gpu::describe;
+using gpu::run_parity;
 
 struct ParityCase {
   const char* name;

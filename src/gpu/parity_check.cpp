@@ -1,4 +1,4 @@
-#include "parity.h"
+#include "gpu/parity_check.h"
 
 #include <bit>
 #include <cinttypes>
@@ -10,7 +10,7 @@
 #include "sim/cpu_solver.h"
 #include "sim/diagnostics.h"
 
-namespace pond::test {
+namespace pond::gpu {
 namespace {
 
 const float* component(const sim::WaterState& s, int c) {
@@ -60,13 +60,13 @@ std::string describe(const Difference& d, const sim::WaterModel& m) {
   return text;
 }
 
-std::optional<Difference> run_parity(const gpu::Context& ctx, const sim::WaterModel& model, std::int64_t steps,
+std::optional<Difference> run_parity(const Context& ctx, const sim::WaterModel& model, std::int64_t steps,
                                      std::int64_t checkpoint, const std::string& tag,
                                      const sim::WaterModel* gpu_model) {
   if (const char* every = std::getenv("POND_PARITY_EVERY_STEP"); every && std::strcmp(every, "1") == 0) checkpoint = 1;
   ParityLog log;
   sim::CpuSolver cpu(model, sim::Backend::scalar, 1);
-  gpu::GpuSolver gpu(ctx, gpu_model ? *gpu_model : model);
+  GpuSolver gpu(ctx, gpu_model ? *gpu_model : model);
   sim::WaterState last_equal = cpu.state();
   std::int64_t last_equal_step = 0;
   while (cpu.steps_done() < steps) {
@@ -97,4 +97,4 @@ std::optional<Difference> run_parity(const gpu::Context& ctx, const sim::WaterMo
   return std::nullopt;
 }
 
-}  // namespace pond::test
+}  // namespace pond::gpu

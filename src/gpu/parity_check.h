@@ -1,5 +1,5 @@
 #pragma once
-// The lockstep comparison of the parity suite: the CPU scalar solver (one thread, the reference)
+// The lockstep comparison of the parity suite and `pond check`: the CPU scalar solver (one thread, the reference)
 // and the GPU solver run the same model from rest; every `checkpoint` steps their states are
 // compared bit for bit. On a difference the run bisects: both solvers restart from the last equal
 // checkpoint and advance one step at a time to the first differing step, and the report names it,
@@ -17,7 +17,7 @@
 #include "sim/model.h"
 #include "sim/state.h"
 
-namespace pond::test {
+namespace pond::gpu {
 
 struct Difference {
   std::int64_t step = 0;  // the state after this many steps differs
@@ -34,8 +34,8 @@ std::string describe(const Difference& d, const sim::WaterModel& model);
 // Runs `steps` steps on both solvers; nullopt when the states are equal after every checkpoint.
 // `gpu_model` (default: `model`) lets a test give the GPU a deliberately different model to prove
 // that the bisection finds the step.
-std::optional<Difference> run_parity(const gpu::Context& ctx, const sim::WaterModel& model, std::int64_t steps,
+std::optional<Difference> run_parity(const Context& ctx, const sim::WaterModel& model, std::int64_t steps,
                                      std::int64_t checkpoint, const std::string& tag,
                                      const sim::WaterModel* gpu_model = nullptr);
 
-}  // namespace pond::test
+}  // namespace pond::gpu

@@ -1,0 +1,65 @@
+// `pond check`'s built-in cases are what they say they are (on the CPU: no GPU needed): every one
+// parses and runs; the denormal case's waves do pass through the denormal range, so a device that
+// flushes denormals gives other bits (the CPU with FTZ and DAZ set stands in for one); the odd
+// width is not a multiple of 4.
+#include <gtest/gtest.h>
+#include <xmmintrin.h>
+
+#include <cmath>
+#include <string>
+
+#include "app/check_cases.h"
+#include "scene/scene.h"
+#include "sim/cpu_solver.h"
+#include "sim/diagnostics.h"
+
+namespace pond::app {
+namespace {
+
+sim::WaterModel model_of(const CheckCase& c) {
+  return sim::build_model(*c.json ? scene::parse_scene(c.json, c.name) : scene::load_scene(""));
+}
+
+const CheckCase& find(const std::string& name) {
+  for (const CheckCase& c : check_cases())
+    if (name == c.name) return c;
+  throw std::runtime_error("no check case " + name);
+}
+
+std::size_t denormals(const sim::WaterState& s) {
+  std::size_t n = 0;
+  for (const auto* a : {&s.ux, &s.uy, &s.uz, &s.vx, &s.vy, &s.vz})
+    for (float x : *a) n += std::fpclassify(x) == FP_SUBNORMAL;
+  return n;
+}
+
+TEST(CheckCases, EveryCaseRunsItsLength) {
+  for (const CheckCase& c : check_cases()) {
+    sim::CpuSolver solver(model_of(c), sim::Backend::scalar, 1);
+    EXPECT_NO_THROW(solver.advance(c.steps)) << c.name;
+    EXPECT_FALSE(sim::first_blown_up_node(solver.state())) << c.name;
+  }
+}
+
+TEST(CheckCases, TheDenormalCaseDecaysThroughTheDenormalsAndFlushingChangesIt) {
+  const CheckCase& c = find("denormal_decay");
+  sim::CpuSolver solver(model_of(c), sim::Backend::scalar, 1);
+  std::size_t most = 0;
+  for (std::int64_t done = 0; done < c.steps; done += 100) {
+    solver.advance(100);
+    most = std::max(most, denormals(solver.state()));
+  }
+  EXPECT_GT(most, 100u) << "the waves never reached the denormal range";
+
+  const unsigned csr = _mm_getcsr();
+  _mm_setcsr(csr | 0x8040u);  // FTZ | DAZ: a device that flushes denormals
+  sim::CpuSolver flushing(model_of(c), sim::Backend::scalar, 1);
+  flushing.advance(c.steps);
+  _mm_setcsr(csr);
+  EXPECT_NE(sim::state_hash(flushing.state(), flushing.model()), sim::state_hash(solver.state(), solver.model()));
+}
+
+TEST(CheckCases, TheOddWidthIsPadded) { EXPECT_NE(model_of(find("odd_width_17x33")).cols % 4, 0); }
+
+}  // namespace
+}  // namespace pond::app
