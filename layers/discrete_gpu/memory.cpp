@@ -41,8 +41,8 @@ void translate_bits(const MemoryModel& model, VkMemoryRequirements& r) {
   r.memoryTypeBits = presented_type_bits(model, r.memoryTypeBits);
 }
 
-// A flush or invalidate range, checked against the mapping and the atom: [begin, end) in bytes
-// from the start of the allocation. Null (with a line on stderr) when the range is refused.
+// A flush or invalidate range that passed check_range: [begin, end) in bytes from the start of
+// the allocation. check_range refuses a range with a line on stderr and returns false.
 struct Span {
   Allocation* allocation;
   VkDeviceSize begin, end;
