@@ -3,7 +3,8 @@
 # layer, the IA-32 golden hash, CLI, faults); the sanitize build (clang: ASan + UBSan and libFuzzer
 # coverage) with the CPU tests and each libFuzzer target for a short time on its committed corpus
 # (FUZZ_SECONDS, default 20 here; scripts/fuzz.sh); the GPU solver's tests (context, float policy,
-# SPIR-V checks, a tenth of the parity suite's steps) under ASan + UBSan too; then the release tests.
+# SPIR-V checks, a tenth of the parity suite's steps) under ASan + UBSan too; the GPU tests under
+# the discrete-GPU test layer (both denormal settings); then the release tests.
 # The soak (label soak, ~12 min) is left out: scripts/soak.sh runs it. Exits non-zero on the first
 # failure.
 set -euo pipefail
@@ -32,6 +33,19 @@ stage "ASan + UBSan build and GPU solver tests"
 cmake --preset sanitize-gpu -DPOND_TEST_DEVICE="${POND_DEVICE:-llvmpipe}"
 cmake --build --preset sanitize-gpu -j "$jobs"
 ctest --preset sanitize-gpu -j "$jobs"
+
+# The GPU suite again under the discrete-GPU test layer (layers/, built by the release preset):
+# staging, flush/invalidate of non-coherent memory, no shaderInt64, with and without
+# shaderDenormPreserveFloat32, the validation layer above it (README: the test layer). The parity
+# runs at 0.3 of their length here; the plain run below keeps the full length.
+stage "GPU tests under the discrete-GPU layer"
+validation_json=$(dpkg -L vulkan-validationlayers | grep -m1 'VkLayer_khronos_validation.json$')
+for denorm in 1 0; do
+  VK_LAYER_PATH="$(dirname "$validation_json"):$PWD/build/layers" \
+  VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation:VK_LAYER_POND_discrete_gpu \
+  POND_DISCRETE_GPU_DENORM_PRESERVE=$denorm POND_PARITY_STEP_SCALE=0.3 \
+    ctest --preset release -j "$jobs" -L gpu -LE "soak|layer"
+done
 
 # Last, so its summary closes the output.
 stage "release tests"

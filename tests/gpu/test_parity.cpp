@@ -277,7 +277,8 @@ TEST_F(GpuTest, AdvanceForFrameEqualsAdvanceThenNormals) {
     const gpu::Buffer readback = gpu::create_buffer(ctx(), 3 * stride * sizeof(float),
                                                     vk::BufferUsageFlagBits::eTransferDst, gpu::MemoryUse::readback,
                                                     "test readback");
-    EXPECT_NE(framed.host_state(), nullptr) << "lavapipe's memory is host-visible, cached and coherent";
+    // Where the state's memory is host-readable (lavapipe) the frames alternate between reading it
+    // in place and the copy; elsewhere (a discrete GPU, the test layer) every frame copies.
     int frame = 0;
     for (const std::int64_t steps : {1, 5, 0, 3, 2, 1}) {
       const bool in_place = framed.host_state() && frame++ % 2 == 1;
