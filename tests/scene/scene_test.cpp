@@ -15,6 +15,9 @@ using sim::PerturbMode;
 using sim::PerturbTarget;
 using tree::TreeBend;
 using tree::TreeDraw;
+using tree::TreeSpec;
+using tree::WindSpec;
+using view::ViewSpec;
 
 // Parses `json` expecting an InputError whose message contains `needle`.
 std::string error_of(const std::string& json) {
