@@ -14,7 +14,7 @@
 #include <string>
 
 #include "sim/model.h"
-#include "sim/scene.h"
+#include "scene/scene.h"
 #include "tree/bend.h"
 #include "tree/noise.h"
 #include "tree/tree_lod.h"
@@ -227,15 +227,15 @@ TEST(TreeLod, BentBoundsHoldEveryDrawnVertex) {
 }
 
 struct DemoView {
-  sim::Scene scene;
+  scene::Scene scene;
   sim::WaterModel model;
   tree::Tree tree;
   tree::TreeBounds bounds;
   float scale = 0;
   Vec3 foot;
 
-  DemoView() : scene(sim::load_scene(kDemoScene)), model(sim::build_model(scene)) {
-    const sim::TreeSpec& spec = *scene.tree;
+  DemoView() : scene(scene::load_scene(kDemoScene)), model(sim::build_model(scene)) {
+    const tree::TreeSpec& spec = *scene.tree;
     tree = tree::grow_tree({.depth = spec.depth, .seed = spec.seed});
     const tree::TreeMesh mesh = tree::build_tree_mesh(tree);
     bounds = tree::tree_bounds(tree, mesh);
@@ -260,14 +260,14 @@ struct DemoView {
 TEST(TreeLod, DemoCameraDrawsThinLevelsAsLines) {
   const DemoView d;
   ASSERT_EQ(d.scene.tree->positions.size(), 1u);
-  const int level = d.thinnest_tube(view::scene_camera(d.scene, d.model, 1280, 720));
+  const int level = d.thinnest_tube(view::scene_camera(d.scene.camera, d.model, 1280, 720));
   // At least the two thinnest levels (8 of 9 segments) are lines, and the trunk stays a tube.
   EXPECT_GE(level, 3);
   EXPECT_LE(level, d.tree.depth);
   // Smaller viewports see the same tree in fewer pixels: never more tubes.
-  EXPECT_GE(d.thinnest_tube(view::scene_camera(d.scene, d.model, 640, 360)), level);
+  EXPECT_GE(d.thinnest_tube(view::scene_camera(d.scene.camera, d.model, 640, 360)), level);
   // Its leaves are a few pixels long: one triangle each.
-  EXPECT_FALSE(d.diamonds(view::scene_camera(d.scene, d.model, 1280, 720)));
+  EXPECT_FALSE(d.diamonds(view::scene_camera(d.scene.camera, d.model, 1280, 720)));
 }
 
 TEST(TreeLod, NearCameraDrawsEveryLevelAsTubes) {

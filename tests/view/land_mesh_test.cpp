@@ -11,7 +11,7 @@
 #include "sim/model.h"
 #include "scene/scene.h"
 
-namespace pond::gpu {
+namespace pond::view {
 namespace {
 
 sim::WaterModel island_model() {
@@ -69,4 +69,4 @@ TEST(LandMesh, WallsReachFromTheLandDownToTheFloorWithFlatFaces) {
 }
 
 }  // namespace
-}  // namespace pond::gpu
+}  // namespace pond::view
