@@ -17,7 +17,7 @@ using namespace pond::sim;
 
 // A rippled square pond: a fixed shore and several splashes, so every node has a non-trivial state.
 WaterModel rippled_model(int size, MathMode math) {
-  Scene s;
+  pond::scene::Scene s;
   s.grid.rows = s.grid.cols = size;
   for (int k = 0; k < 5; ++k) {
     Perturbation p;
