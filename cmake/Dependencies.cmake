@@ -2,7 +2,7 @@
 find_package(Threads REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(CLI11 REQUIRED CONFIG)
-if(POND_BUILD_TESTS)
+if(POND_BUILD_TESTS AND NOT POND_IA32)  # IA-32 builds its own 32-bit GoogleTest (Ia32Tests.cmake)
   find_package(GTest REQUIRED)
 endif()
 if(POND_BUILD_BENCH AND NOT POND_IA32)

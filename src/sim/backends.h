@@ -19,7 +19,8 @@ StepRowsFn step_rows_sse2(int rsqrt_steps);
 StepRowsFn step_rows_avx2(int rsqrt_steps);    // nullptr in builds without AVX2 (IA-32)
 StepRowsFn step_rows_avx512(int rsqrt_steps);  // nullptr in builds without AVX-512 (IA-32)
 
-bool cpu_supports(Backend b);        // compiled in and supported by this CPU
+// Tests hide CPU features with POND_CPU_FEATURES_MASK=avx2 (sse2|avx2|avx512f,...; wider ones go too).
+bool cpu_supports(Backend b);        // compiled in, supported by this CPU and not masked (line above)
 Backend best_backend();              // the widest supported
 const char* backend_name(Backend b);  // "scalar", "sse", "avx2", "avx512"
 std::optional<Backend> parse_backend(std::string_view name);

@@ -69,8 +69,18 @@ expect_bad "radius" --steps 5 --scene "$work/radius.json" $out
 expect_bad "mode" --steps 5 --scene "$work/mode.json" $out
 expect_bad "blew up" --steps 50 --scene "$work/blowup.json" $out
 expect_bad "output folder" --steps 5 --scene "$work/ok.json" --out "$work/no/such/dir/state.npy"
+# A backend this CPU lacks, on any CPU: AVX2 masked out (src/sim/backends.h), or absent (IA-32).
+export POND_CPU_FEATURES_MASK=avx2
+expect_bad "solver avx2" --steps 5 --solver avx2 $out
+POND_CPU_FEATURES_MASK=avx2,mmx
+expect_bad "POND_CPU_FEATURES_MASK" --steps 5 $out
+unset POND_CPU_FEATURES_MASK
 }
 [ ! -e "$work/no" ] || fail "a missing output folder was created"
+# ... while auto falls back to the widest backend left: sse.
+POND_CPU_FEATURES_MASK=avx2 "$pond" simulate --steps 5 --scene "$work/ok.json" --out "$work/masked.npy" \
+  > "$work/stdout" 2> "$work/stderr" || fail "auto with AVX2 masked: $(cat "$work/stderr")"
+grep -q " on sse x " "$work/stdout" || fail "auto with AVX2 masked did not run sse: $(cat "$work/stdout")"
 
 # The same scene on every backend and thread count gives the same bytes.
 for solver in scalar sse avx2; do

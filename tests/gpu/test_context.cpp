@@ -1,15 +1,31 @@
 // The Vulkan context: explicit device choice, the validation messenger really reports, the test
 // environment stays inside the build tree.
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "core/errors.h"
 #include "gpu/buffer.h"
+#include "gpu/gpu_solver.h"
 #include "gpu/headless.h"
 #include "gpu_fixture.h"
+#include "scene/scene.h"
+
+extern char** environ;
 
 namespace pond::test {
 namespace {
+
+namespace fs = std::filesystem;
 
 using ContextTest = GpuTest;
 
@@ -48,9 +64,119 @@ TEST(ContextValidation, MessengerReportsMisuse) {
   EXPECT_GE(bad.validation_log().count(), 1u);
 }
 
-TEST_F(ContextTest, EnvironmentPointsIntoTheBuildTree) {
-  EXPECT_STREQ(std::getenv("MESA_SHADER_CACHE_DIR"), POND_TEST_MESA_CACHE_DIR);
-  EXPECT_STREQ(std::getenv("XDG_RUNTIME_DIR"), POND_TEST_XDG_RUNTIME_DIR);
+// Every file this process has open (/proc/self/fd) or mapped (/proc/self/maps).
+std::vector<std::string> open_and_mapped_files() {
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (const fs::directory_entry& fd : fs::directory_iterator("/proc/self/fd", ec)) {
+    const fs::path target = fs::read_symlink(fd.path(), ec);
+    if (!ec && target.is_absolute()) files.push_back(target.string());
+  }
+  std::ifstream maps("/proc/self/maps");
+  for (std::string line; std::getline(maps, line);)
+    if (const std::size_t slash = line.find('/'); slash != std::string::npos) files.push_back(line.substr(slash));
+  return files;
+}
+
+bool inside(const std::string& file, const fs::path& dir) {
+  const std::string prefix = fs::weakly_canonical(dir).string() + "/";
+  return file.compare(0, prefix.size(), prefix) == 0;
+}
+
+bool mesa_driver(const gpu::Context& ctx) {
+  using D = vk::DriverId;
+  const D id = ctx.physical()
+                   .getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceDriverProperties>()
+                   .get<vk::PhysicalDeviceDriverProperties>()
+                   .driverID;
+  for (D mesa : {D::eMesaLlvmpipe, D::eMesaRadv, D::eIntelOpenSourceMESA, D::eMesaTurnip, D::eMesaV3Dv,
+                 D::eMesaPanvk, D::eMesaVenus, D::eMesaDozen, D::eMesaNvk, D::eImaginationOpenSourceMESA})
+    if (id == mesa) return true;
+  return false;
+}
+
+bool env_true(const char* name) {
+  const char* v = std::getenv(name);
+  return v && (std::string_view(v) == "1" || std::string_view(v) == "true");
+}
+
+// A compute run with the fixture's environment: the GPU solver's pipelines compiled and
+// dispatched. Then no file under $HOME/.cache is open or mapped, and on a Mesa driver (vk::DriverId:
+// the check is about Mesa's disk cache, which other drivers do not have) the cache Mesa opened is
+// the build tree's, which is what MESA_SHADER_CACHE_DIR is for. WritesNothingUnderHomeOrTmp runs
+// this test again in a fresh $HOME.
+using ContextEnvironment = GpuTest;
+
+TEST_F(ContextEnvironment, ComputeKeepsItsFilesInTheBuildTree) {
+  gpu::GpuSolver solver(ctx(), sim::build_model(scene::load_scene("")));
+  solver.advance(3);
+  EXPECT_EQ(solver.read_state().nodes(), solver.model().nodes());
+  const std::vector<std::string> files = open_and_mapped_files();
+  if (const char* home = std::getenv("HOME")) {
+    for (const std::string& f : files)
+      EXPECT_FALSE(inside(f, fs::path(home) / ".cache")) << f << " is under $HOME/.cache";
+  }
+  if (!mesa_driver(ctx())) {
+    std::printf("not a Mesa driver: no Mesa shader cache to look for\n");
+  } else if (env_true("MESA_SHADER_CACHE_DISABLE") || env_true("MESA_GLSL_CACHE_DISABLE")) {
+    std::printf("Mesa's shader cache is disabled in this environment: not looked for\n");
+  } else {
+    const auto in_cache = [](const std::string& f) { return inside(f, POND_TEST_MESA_CACHE_DIR); };
+    EXPECT_TRUE(std::any_of(files.begin(), files.end(), in_cache))
+        << "Mesa has no cache file open or mapped in " << POND_TEST_MESA_CACHE_DIR;
+  }
+}
+
+// The fixture's promise, checked where it can fail: the test above in a child process whose $HOME
+// (with an empty .cache, as a real one has) and $TMPDIR are fresh folders, and whose environment
+// lacks every variable the fixture sets (so only the fixture can set them). Afterwards both
+// folders are still empty: neither Mesa nor the loader nor the validation layer wrote there.
+TEST(ContextIsolation, WritesNothingUnderHomeOrTmp) {
+  const std::string tag = "fresh-home-" + std::to_string(::getpid());
+  const fs::path root = fs::path(POND_TEST_TMP_DIR) / tag;
+  const fs::path home = root / "home", tmp = root / "tmp";
+  const fs::path report = fs::path(POND_TEST_TMP_DIR) / (tag + ".xml");  // the child's gtest report
+  fs::remove_all(root);
+  fs::remove(report);
+  fs::create_directories(home / ".cache");
+  fs::create_directories(tmp);
+  std::vector<std::string> env;
+  for (char** e = environ; *e; ++e) {
+    const std::string_view var(*e);
+    const std::string_view name = var.substr(0, var.find('='));
+    if (name != "HOME" && name != "TMPDIR" && name != "MESA_SHADER_CACHE_DIR" && name != "XDG_CACHE_HOME" &&
+        name != "XDG_RUNTIME_DIR" && !name.starts_with("GTEST_"))
+      env.emplace_back(var);
+  }
+  env.push_back("HOME=" + home.string());
+  env.push_back("TMPDIR=" + tmp.string());
+  const std::string exe = fs::read_symlink("/proc/self/exe").string();
+  std::vector<std::string> args = {exe, "--gtest_filter=ContextEnvironment.ComputeKeepsItsFilesInTheBuildTree",
+                                   "--gtest_output=xml:" + report.string()};
+  std::vector<char*> argv, envp;
+  for (std::string& a : args) argv.push_back(a.data());
+  for (std::string& e : env) envp.push_back(e.data());
+  argv.push_back(nullptr);
+  envp.push_back(nullptr);
+  std::fflush(stdout);
+  pid_t pid = 0;
+  ASSERT_EQ(::posix_spawn(&pid, exe.c_str(), nullptr, nullptr, argv.data(), envp.data()), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the child run failed (its output is above)";
+  std::ifstream in(report);
+  const std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_NE(xml.find("<testsuites tests=\"1\" failures=\"0\""), std::string::npos)
+      << "the child did not run exactly the one test: " << xml;
+  std::vector<std::string> written;
+  for (const fs::directory_entry& e : fs::recursive_directory_iterator(root))
+    if (e.path() != home && e.path() != home / ".cache" && e.path() != tmp) written.push_back(e.path().string());
+  EXPECT_TRUE(written.empty()) << written.size() << " file(s) written outside the build tree, the first: "
+                               << written.front();
+  if (written.empty()) {
+    fs::remove_all(root);
+    fs::remove(report);
+  }
 }
 
 TEST(MemoryTypeChoice, RequiredFlagsAndPreferences) {

@@ -5,9 +5,14 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <optional>
+#include <string>
 
 #include "core/errors.h"
+#include "shared/exact_math.h"
+#include "sim/backends.h"
 #include "sim/diagnostics.h"
 #include "test_util.h"
 
@@ -171,9 +176,72 @@ TEST(Backends, FastMathStaysCloseToExact) {
   EXPECT_LT(worst, 1e-3 * peak);
 }
 
-TEST(Backends, ForcingAMissingBackendFailsClearly) {
-  if (cpu_supports(Backend::avx2)) GTEST_SKIP() << "this CPU has AVX2";
-  EXPECT_THROW(CpuSolver(build_model(test::grid_scene(4, 4)), Backend::avx2, 1), InputError);
+// POND_CPU_FEATURES_MASK set for one scope (backends.h), the previous value restored after.
+class CpuFeaturesMask {
+ public:
+  explicit CpuFeaturesMask(const char* mask) {
+    if (const char* old = std::getenv(kName)) old_ = old;
+    ::setenv(kName, mask, 1);
+  }
+  ~CpuFeaturesMask() {
+    if (old_) ::setenv(kName, old_->c_str(), 1);
+    else ::unsetenv(kName);
+  }
+  CpuFeaturesMask(const CpuFeaturesMask&) = delete;
+  CpuFeaturesMask& operator=(const CpuFeaturesMask&) = delete;
+
+ private:
+  static constexpr const char* kName = "POND_CPU_FEATURES_MASK";
+  std::optional<std::string> old_;
+};
+
+std::string forcing_error(Backend b) {
+  try {
+    CpuSolver(build_model(test::grid_scene(4, 4)), b, 1);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
+
+// A backend this CPU lacks, on any CPU: AVX2 masked out (and AVX-512F with it, as on a real CPU
+// without AVX2). Forcing it is an InputError naming it; auto falls back to SSE; SSE still runs.
+TEST(Backends, ForcingAMaskedOutBackendFailsClearly) {
+  const bool in_build = step_rows_avx2(shared::kRsqrtStepsExact) != nullptr;  // not in IA-32 builds
+  const CpuFeaturesMask mask("avx2");
+  EXPECT_FALSE(cpu_supports(Backend::avx2));
+  EXPECT_FALSE(cpu_supports(Backend::avx512));
+  EXPECT_TRUE(cpu_supports(Backend::sse));
+  EXPECT_EQ(best_backend(), Backend::sse);
+  const std::string what = forcing_error(Backend::avx2);
+  EXPECT_NE(what.find(in_build ? "solver avx2: AVX2 is masked out by POND_CPU_FEATURES_MASK"
+                               : "solver avx2 is not in this build"),
+            std::string::npos)
+      << what;
+  EXPECT_NE(forcing_error(Backend::avx512).find("solver avx512"), std::string::npos);
+  EXPECT_NO_THROW(CpuSolver(build_model(test::grid_scene(4, 4)), Backend::sse, 1));
+}
+
+TEST(Backends, MaskingSse2LeavesScalar) {
+  const CpuFeaturesMask mask("avx512f,sse2");
+  EXPECT_EQ(best_backend(), Backend::scalar);
+  EXPECT_EQ(forcing_error(Backend::sse), "solver sse: SSE2 is masked out by POND_CPU_FEATURES_MASK");
+}
+
+TEST(Backends, MaskHidesOnlyWhatItNames) {
+  const bool avx2 = cpu_supports(Backend::avx2);
+  const Backend best = best_backend();
+  {
+    const CpuFeaturesMask mask("avx512f");
+    EXPECT_FALSE(cpu_supports(Backend::avx512));
+    EXPECT_EQ(cpu_supports(Backend::avx2), avx2);
+  }
+  {
+    const CpuFeaturesMask mask("");
+    EXPECT_EQ(best_backend(), best);
+  }
+  const CpuFeaturesMask mask("avx2,mmx");
+  EXPECT_THROW(cpu_supports(Backend::sse), InputError);  // a typo is an error, not an empty mask
 }
 
 }  // namespace
