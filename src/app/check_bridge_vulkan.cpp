@@ -1,9 +1,10 @@
 // `pond check`: the parity suite's lockstep comparison (gpu/parity_check.h) over the built-in
 // cases, on the chosen device, as a table a user can read.
+#include <algorithm>
 #include <cinttypes>
 #include <cstdio>
+#include <optional>
 #include <string>
-#include <vector>
 
 #include "app/check_bridge.h"
 #include "app/check_cases.h"
@@ -47,7 +48,6 @@ int run_check(const CheckOptions& o) {
               ctx.device_name().c_str());
   std::printf("%-26s %-7s %7s  %s\n", "case", "grid", "steps", "result");
   int differing = 0;
-  std::vector<std::string> details;
   for (const CheckCase& c : check_cases()) {
     const scene::Scene scene = *c.json ? scene::parse_scene(c.json, c.name) : scene::load_scene("");
     const sim::WaterModel model = sim::build_model(scene);
