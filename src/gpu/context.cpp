@@ -92,7 +92,9 @@ Context::Context(const ContextOptions& options, const WindowSurface& window)
 
   // No name given: POND_DEVICE, the one variable that steers every command and the test suite.
   const char* env_device = std::getenv("POND_DEVICE");
-  DeviceChoice choice = choose_device(instance_, !options.device.empty() ? options.device : env_device ? env_device : "");
+  const bool from_env = options.device.empty() && env_device;
+  DeviceChoice choice = choose_device(instance_, from_env ? env_device : options.device,
+                                      from_env ? "POND_DEVICE=" : "--device ");
   physical_ = std::move(choice.physical);
   family_ = choice.compute_family;
   device_name_ = std::move(choice.name);

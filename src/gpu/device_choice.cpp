@@ -39,7 +39,7 @@ std::optional<std::uint32_t> compute_family(const vk::raii::PhysicalDevice& d) {
 
 }  // namespace
 
-DeviceChoice choose_device(const vk::raii::Instance& instance, const std::string& name) {
+DeviceChoice choose_device(const vk::raii::Instance& instance, const std::string& name, const std::string& source) {
   vk::raii::PhysicalDevices devices(instance);
   std::string seen;
   std::optional<std::size_t> best;
@@ -56,7 +56,7 @@ DeviceChoice choose_device(const vk::raii::Instance& instance, const std::string
   }
   if (seen.empty()) throw RuntimeError("no Vulkan device found (is a Vulkan driver installed?)");
   if (!best) {
-    if (!name.empty()) throw InputError("--device " + name + ": no Vulkan 1.3 compute device matches; devices: " + seen);
+    if (!name.empty()) throw InputError(source + name + ": no Vulkan 1.3 compute device matches; devices: " + seen);
     throw RuntimeError("no Vulkan 1.3 device with compute; devices: " + seen);
   }
   vk::raii::PhysicalDevice chosen = std::move(devices[*best]);

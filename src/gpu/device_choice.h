@@ -18,6 +18,8 @@ struct DeviceChoice {
 
 // Throws RuntimeError when no device qualifies, InputError when `name` matches none (both list
 // the devices seen).
-DeviceChoice choose_device(const vk::raii::Instance& instance, const std::string& name);
+// `source` prefixes `name` in messages, saying where it came from ("--device ", "POND_DEVICE=").
+DeviceChoice choose_device(const vk::raii::Instance& instance, const std::string& name,
+                           const std::string& source = "--device ");
 
 }  // namespace pond::gpu
