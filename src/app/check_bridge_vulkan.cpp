@@ -49,8 +49,7 @@ int run_check(const CheckOptions& o) {
   std::printf("%-26s %-7s %7s  %s\n", "case", "grid", "steps", "result");
   int differing = 0;
   for (const CheckCase& c : check_cases()) {
-    const scene::Scene scene = *c.json ? scene::parse_scene(c.json, c.name) : scene::load_scene("");
-    const sim::WaterModel model = sim::build_model(scene);
+    const sim::WaterModel model = sim::build_model(check_scene(c));
     const std::int64_t steps = o.steps > 0 ? o.steps : c.steps;
     const std::string grid = std::to_string(model.rows) + "x" + std::to_string(model.cols);
     const std::optional<gpu::Difference> d = gpu::run_parity(ctx, model, steps, std::min<std::int64_t>(steps, 250), c.name);

@@ -37,4 +37,8 @@ const CheckCase kCases[] = {
 
 std::span<const CheckCase> check_cases() { return kCases; }
 
+scene::Scene check_scene(const CheckCase& c) {
+  return *c.json ? scene::parse_scene(c.json, c.name) : scene::load_scene("");
+}
+
 }  // namespace pond::app

@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <span>
 
+#include "scene/scene.h"
+
 namespace pond::app {
 
 struct CheckCase {
@@ -14,5 +16,6 @@ struct CheckCase {
 };
 
 std::span<const CheckCase> check_cases();
+scene::Scene check_scene(const CheckCase& c);  // its scene, parsed
 
 }  // namespace pond::app

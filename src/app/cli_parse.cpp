@@ -48,4 +48,10 @@ std::array<double, 3> parse_vec3(const std::string& text, const char* option) {
   return v;
 }
 
+sim::SolverChoice parse_solver(const std::string& name, sim::MathMode math, int threads) {
+  sim::SolverChoice c{.gpu = name == "gpu", .threads = threads, .math = math};
+  if (!c.gpu) c.backend = name == "auto" ? sim::best_backend() : *sim::parse_backend(name);
+  return c;
+}
+
 }  // namespace pond::app

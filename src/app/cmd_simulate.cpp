@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <unistd.h>
 
+#include "app/cli_parse.h"
 #include "app/commands.h"
 #include "app/gpu_bridge.h"
 #include "app/interrupt.h"
@@ -57,9 +58,8 @@ int run_simulate(const SimulateOptions& o) {
   const sim::MathMode math = o.math == "fast" ? sim::MathMode::fast : sim::MathMode::exact;
   check_output_path(o.out);
   const InterruptScope interrupt_scope;  // SIGINT/SIGTERM stop the run before anything is written
-  sim::SolverChoice choice{.gpu = o.solver == "gpu", .threads = o.threads, .math = math};
-  if (!choice.gpu) choice.backend = o.solver == "auto" ? sim::best_backend() : *sim::parse_backend(o.solver);
-  sim::Session session(scene::load_scene(o.scene), choice, headless_gpu_solvers(GpuRunOptions{o.device, false}));
+  sim::Session session(scene::load_scene(o.scene), parse_solver(o.solver, math, o.threads),
+                       headless_gpu_solvers(GpuRunOptions{o.device, false}));
 
   const auto t0 = std::chrono::steady_clock::now();
   advance_with_progress(session, o.steps);

@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "app/cli_parse.h"
 #include "app/render_bridge.h"
 #include "core/errors.h"
 #include "gpu/context.h"
@@ -27,19 +28,12 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-sim::SolverChoice solver_choice(const std::string& name) {
-  sim::SolverChoice c;
-  c.gpu = name == "gpu";
-  if (!c.gpu) c.backend = *sim::parse_backend(name);
-  if (!c.gpu && !sim::cpu_supports(c.backend)) throw InputError("--solver " + name + ": this CPU does not support it");
-  return c;
-}
 
 }  // namespace
 
 int run_render(const RenderOptions& o) {
   const scene::Scene scene = scene::load_scene(o.scene);
-  const sim::SolverChoice solver = solver_choice(o.solver);
+  const sim::SolverChoice solver = parse_solver(o.solver);
   const gpu::Context ctx(gpu::ContextOptions{.device = o.device, .validation = o.validation});
   render::check_target_size(ctx, o.width, o.height, render::RenderTarget::kFormat);
 

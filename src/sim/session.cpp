@@ -31,8 +31,9 @@ void constrain(WaterState& s, const WaterModel& model) {
 Session::Session(scene::Scene scene, SolverChoice choice, GpuSolverFactory gpu)
     : scene_(std::move(scene)), choice_(choice), gpu_(std::move(gpu)) {
   if (scene_.wind.ripples) ripples_until_ = kRippleHorizonSteps;
-  const WaterModel model = build();
-  replace_solver(rest_state(model), 0);
+  WaterModel model = build();
+  const WaterState rest = rest_state(model);
+  replace_solver(std::move(model), rest, 0);
 }
 
 Session::~Session() = default;
@@ -43,8 +44,7 @@ WaterModel Session::build() const {
   return build_model(water, choice_.math);
 }
 
-void Session::replace_solver(const WaterState& state, std::int64_t steps) {
-  WaterModel model = build();
+void Session::replace_solver(WaterModel model, const WaterState& state, std::int64_t steps) {
   if (state.nodes() != model.nodes())
     throw InputError("the state has " + std::to_string(state.nodes()) + " nodes, the grid " +
                      std::to_string(model.nodes()));
@@ -68,7 +68,7 @@ void Session::advance(std::int64_t steps) {
   const std::int64_t end = solver_->steps_done() + steps;
   if (scene_.wind.ripples && end > ripples_until_) {
     ripples_until_ = end + kRippleHorizonSteps;
-    replace_solver(solver_->read_state(), solver_->steps_done());
+    replace_solver(build(), solver_->read_state(), solver_->steps_done());
   }
   solver_->advance(steps);
   ++state_revision_;
@@ -87,7 +87,7 @@ void Session::set_physics(const Physics& physics) {
   const WaterState state = solver_->read_state();
   const std::int64_t steps = solver_->steps_done();
   scene_.physics = physics;
-  replace_solver(state, steps);
+  replace_solver(build(), state, steps);
 }
 
 void Session::set_water(const WaterSpec& water) {
@@ -99,8 +99,9 @@ void Session::set_water(const WaterSpec& water) {
   const Physics physics = scene_.physics;
   static_cast<WaterSpec&>(scene_) = water;
   scene_.physics = physics;
-  constrain(state, build_model(scene_, choice_.math));
-  replace_solver(state, steps);
+  WaterModel model = build();
+  constrain(state, model);
+  replace_solver(std::move(model), state, steps);
 }
 
 void Session::set_solver(SolverChoice choice) {
@@ -109,17 +110,17 @@ void Session::set_solver(SolverChoice choice) {
   const SolverChoice previous = choice_;
   choice_ = choice;
   try {
-    replace_solver(state, steps);
+    replace_solver(build(), state, steps);
   } catch (...) {
     choice_ = previous;
-    if (!solver_) replace_solver(state, steps);
+    if (!solver_) replace_solver(build(), state, steps);
     throw;
   }
 }
 
 void Session::reset() {
   if (scene_.wind.ripples) ripples_until_ = kRippleHorizonSteps;
-  replace_solver(rest_state(solver_->model()), 0);
+  replace_solver(build(), rest_state(solver_->model()), 0);
 }
 
 void Session::set_state(const WaterState& state, std::int64_t steps) {

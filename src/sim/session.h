@@ -68,7 +68,8 @@ class Session {
   void notify_change() const {
     if (before_change_) before_change_();
   }
-  void replace_solver(const WaterState& state, std::int64_t steps);
+  // `model` (from build()) with `state` at `steps`; the solver the choice says.
+  void replace_solver(WaterModel model, const WaterState& state, std::int64_t steps);
 
   scene::Scene scene_;
   SolverChoice choice_;

@@ -17,7 +17,7 @@ namespace pond::app {
 namespace {
 
 sim::WaterModel model_of(const CheckCase& c) {
-  return sim::build_model(*c.json ? scene::parse_scene(c.json, c.name) : scene::load_scene(""));
+  return sim::build_model(check_scene(c));
 }
 
 const CheckCase& find(const std::string& name) {
