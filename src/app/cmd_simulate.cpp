@@ -19,7 +19,7 @@ namespace pond::app {
 namespace {
 
 struct SimulateOptions {
-  std::string scene, out, solver = "auto", math = "exact", device;
+  std::string scene, out, bodies_out, solver = "auto", math = "exact", device;
   std::int64_t steps = -1;
   int threads = 0;
 };
@@ -57,6 +57,10 @@ void advance_with_progress(sim::Session& session, std::int64_t steps) {
 int run_simulate(const SimulateOptions& o) {
   const sim::MathMode math = o.math == "fast" ? sim::MathMode::fast : sim::MathMode::exact;
   check_output_path(o.out);
+  if (!o.bodies_out.empty()) {
+    check_output_path(o.bodies_out);
+    if (o.bodies_out == o.out) throw InputError("--bodies-out must differ from --out (" + o.out + ")");
+  }
   const InterruptScope interrupt_scope;  // SIGINT/SIGTERM stop the run before anything is written
   sim::Session session(scene::load_scene(o.scene), parse_solver(o.solver, math, o.threads),
                        headless_gpu_solvers(GpuRunOptions{o.device, false}));
@@ -73,6 +77,11 @@ int run_simulate(const SimulateOptions& o) {
   const std::size_t shape[3] = {static_cast<std::size_t>(model.rows),
                                 static_cast<std::size_t>(model.cols), 6};
   write_npy(o.out, NpyType::f32, shape, std::as_bytes(std::span(world)));
+  if (!o.bodies_out.empty()) {
+    const std::vector<float> bodies = sim::bodies_to_world(state.bodies, model.spacing);
+    const std::size_t bodies_shape[2] = {state.bodies.size(), 6};
+    write_npy(o.bodies_out, NpyType::f32, bodies_shape, std::as_bytes(std::span(bodies)));
+  }
 
   const sim::Diagnostics d = sim::diagnose(state, model);
   const double node_steps = static_cast<double>(model.nodes()) * model.substeps * static_cast<double>(o.steps);
@@ -86,6 +95,7 @@ int run_simulate(const SimulateOptions& o) {
   std::printf("state hash %016" PRIx64 "\n", sim::state_hash(world));
   if (const std::string identity = session.solver().identity(); !identity.empty()) std::printf("%s\n", identity.c_str());
   std::printf("wrote %s\n", o.out.c_str());
+  if (!o.bodies_out.empty()) std::printf("wrote %s (%zu bodies)\n", o.bodies_out.c_str(), state.bodies.size());
   return 0;
 }
 
@@ -105,6 +115,8 @@ Command add_simulate_command(CLI::App& app) {
       ->check(CLI::Range(1, 1024));
   sub->add_option("--device", o->device, "Vulkan device name (substring) for --solver gpu");
   sub->add_option("--out", o->out, "Output STATE.npy: float32 (rows, cols, 6)")->required();
+  sub->add_option("--bodies-out", o->bodies_out,
+                  "Output BODIES.npy: float32 (bodies, 6) = x, y, z, vx, vy, vz after the last step");
   return {sub, [o] { return run_simulate(*o); }};
 }
 

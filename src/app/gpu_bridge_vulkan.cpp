@@ -19,6 +19,8 @@ class HeadlessGpuSolver final : public sim::Solver {
   void advance(std::int64_t steps) override { solver_.advance(steps); }
   sim::WaterState read_state() const override { return solver_.read_state(); }
   void set_state(const sim::WaterState& state, std::int64_t steps) override { solver_.set_state(state, steps); }
+  std::vector<sim::BodyState> read_bodies() const override { return solver_.read_bodies(); }
+  void set_body_models(std::vector<sim::BodyModel> bodies) override { solver_.set_body_models(std::move(bodies)); }
   std::string engine() const override { return solver_.engine(); }
   std::string identity() const override { return solver_.identity(); }
 

@@ -82,6 +82,10 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model)
   map_state_where_host_readable();
   upload_kinds_and_perturbations();
   create_descriptor_sets();
+  if (!model_.bodies.empty())
+    contact_ = std::make_unique<BodyContact>(ctx_, model_, pitch_, stride_, state_, kinds_,
+                                             steps_per_submit() * model_.substeps,
+                                             model_.math == sim::MathMode::exact && ctx_.denorm_preserve());
   set_state(sim::rest_state(model_), 0);
 }
 
@@ -147,7 +151,8 @@ void GpuSolver::map_state_where_host_readable() {
 
 void GpuSolver::upload_kinds_and_perturbations() {
   const std::vector<std::uint32_t> kinds = pack_kinds(model_, pitch_);
-  kinds_ = create_buffer(ctx_, kinds.size() * 4, BU::eUniformTexelBuffer | BU::eTransferDst, MemoryUse::device,
+  kinds_ = create_buffer(ctx_, kinds.size() * 4, BU::eUniformTexelBuffer | BU::eStorageBuffer | BU::eTransferDst,
+                         MemoryUse::device,
                          "water node kinds");
   upload(ctx_, kinds_, std::as_bytes(std::span(kinds)));
 
@@ -240,6 +245,8 @@ void GpuSolver::set_state(const sim::WaterState& state, std::int64_t steps_done)
   cur_ = 0;
   // Into both buffers: the padding of either is then +0 (the step shader keeps it so).
   for (const Buffer& b : state_) upload(ctx_, b, std::as_bytes(std::span(words)));
+  if (contact_) contact_->set_bodies(state.bodies);
+  else if (!state.bodies.empty()) throw InputError("GpuSolver::set_state: bodies for a model without bodies");
   step_ = steps_done;
   next_perturbation_ = 0;
   while (next_perturbation_ < model_.perturbations.size() && model_.perturbations[next_perturbation_].step < step_)
@@ -283,22 +290,37 @@ void GpuSolver::record_step(const vk::raii::CommandBuffer& cmd) {
   const StepPush push{.rows = rows, .cols = cols, .stride = stride, .pitch = static_cast<std::uint32_t>(pitch_),
                       .kc = k.kc, .kd = k.kd,
                       .dt = k.dt, .rest_edge = k.rest_edge, .rest_diag = k.rest_diag};
-  cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *step_pipe_.pipeline);
-  cmd.pushConstants<StepPush>(*step_pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
   for (int s = 0; s < model_.substeps; ++s) {
+    if (s == 0 || contact_) {  // the contact pass binds its own pipeline
+      cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *step_pipe_.pipeline);
+      cmd.pushConstants<StepPush>(*step_pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+    }
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *step_pipe_.layout, 0, *step_sets_[cur_], nullptr);
     cmd.dispatch(group_count(step_threads_x_, step_local_x_), group_count(rows, POND_STEP_ROWS_PER_INVOCATION), 1);
     record_barrier(cmd);
     cur_ = 1 - cur_;
+    if (contact_) {
+      contact_->record(cmd, cur_, (step_ - batch_first_step_) * model_.substeps + s);
+      record_barrier(cmd);
+    }
   }
   ++step_;
 }
 
+std::int64_t GpuSolver::steps_per_submit() const {
+  const std::int64_t dispatches_per_step = std::int64_t{std::max(1, model_.substeps)} * (model_.bodies.empty() ? 1 : 2);
+  return std::max<std::int64_t>(1, kMaxDispatchesPerSubmit / dispatches_per_step);
+}
+
+void GpuSolver::begin_batch(std::int64_t steps) {
+  batch_first_step_ = step_;
+  if (contact_) contact_->write_schedule(step_, steps);
+}
+
 void GpuSolver::advance(std::int64_t steps) {
-  const std::int64_t per_step = std::max(1, model_.substeps);
-  const std::int64_t steps_per_submit = std::max<std::int64_t>(1, kMaxDispatchesPerSubmit / per_step);
   while (steps > 0) {
-    const std::int64_t n = std::min(steps, steps_per_submit);
+    const std::int64_t n = std::min(steps, steps_per_submit());
+    begin_batch(n);
     submitter_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
       record_barrier(cmd);
       for (std::int64_t s = 0; s < n; ++s) record_step(cmd);
@@ -327,6 +349,7 @@ Buffer GpuSolver::copy_to_host(const Buffer& src, const char* name) const {
 sim::WaterState GpuSolver::read_state() const {
   const Buffer staging = copy_to_host(state_[cur_], "state readback");
   sim::WaterState s(model_.nodes());
+  if (contact_) s.bodies = contact_->read();
   const auto* words = static_cast<const float*>(staging.mapped);
   float* const dst[kComponents] = {s.ux.data(), s.uy.data(), s.uz.data(), s.vx.data(), s.vy.data(), s.vz.data()};
   const auto rows = static_cast<std::size_t>(model_.rows), cols = static_cast<std::size_t>(model_.cols);
@@ -368,10 +391,10 @@ void GpuSolver::advance_for_frame(std::int64_t steps, const Buffer* displacement
   if (displacements ? displacements->size < bytes : host_state() == nullptr)
     throw RuntimeError("GpuSolver::advance_for_frame: no readback buffer of " + std::to_string(bytes) +
                        " bytes, and the state is not host-readable");
-  const std::int64_t steps_per_submit =
-      std::max<std::int64_t>(1, kMaxDispatchesPerSubmit / std::max(1, model_.substeps));
-  if (steps > steps_per_submit) advance(steps - steps_per_submit);
-  const std::int64_t last = std::min(steps, steps_per_submit);
+  const std::int64_t per_submit = steps_per_submit();
+  if (steps > per_submit) advance(steps - per_submit);
+  const std::int64_t last = std::min(steps, per_submit);
+  begin_batch(last);
   submitter_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
     record_barrier(cmd);
     for (std::int64_t s = 0; s < last; ++s) record_step(cmd);
@@ -411,6 +434,12 @@ sim::Normals GpuSolver::normals() const {
     n.z.push_back(v[4 * k + 2]);
   }
   return n;
+}
+
+void GpuSolver::set_body_models(std::vector<sim::BodyModel> bodies) {
+  if (bodies.size() != model_.bodies.size()) throw InputError("set_body_models: another number of bodies");
+  model_.bodies = std::move(bodies);
+  if (contact_) contact_->upload_constants();
 }
 
 std::string GpuSolver::identity() const {

@@ -10,9 +10,11 @@
 //  - Normals are computed on the GPU into normals_buffer(), the buffer the water vertex shader
 //    reads (one vec4 per node).
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "gpu/body_contact.h"
 #include "gpu/buffer.h"
 #include "gpu/compute_pipeline.h"
 #include "gpu/context.h"
@@ -34,6 +36,10 @@ class GpuSolver final : public sim::Solver {
   std::int64_t steps_done() const override { return step_; }
   std::string engine() const override { return "gpu"; }
   std::string identity() const override;  // exact math: gpu/float_policy.h's identity_line
+  void set_body_models(std::vector<sim::BodyModel> bodies) override;
+  std::vector<sim::BodyState> read_bodies() const override {
+    return contact_ ? contact_->read() : std::vector<sim::BodyState>{};
+  }
 
   // Advances `steps` steps (recorded in command buffers of at most kMaxDispatchesPerSubmit
   // dispatches, each submitted and waited for).
@@ -79,6 +85,10 @@ class GpuSolver final : public sim::Solver {
   void upload_kinds_and_perturbations();
   void create_descriptor_sets();
 
+  // Steps one submission records: kMaxDispatchesPerSubmit dispatches, counting the contact's.
+  std::int64_t steps_per_submit() const;
+  // Before recording `steps` steps from step_ in one submission: the kinematic bodies' schedule.
+  void begin_batch(std::int64_t steps);
   void record_step(const vk::raii::CommandBuffer& cmd);
   void record_normals(const vk::raii::CommandBuffer& cmd) const;
   void record_barrier(const vk::raii::CommandBuffer& cmd) const;
@@ -102,6 +112,8 @@ class GpuSolver final : public sim::Solver {
   Submitter submitter_;  // advance(), compute_normals(), advance_for_frame(): no allocation per call
   // step_sets_[c]: reads state c, writes 1 - c; perturb_sets_[c], normals_sets_[c] use state c.
   std::vector<vk::raii::DescriptorSet> step_sets_, perturb_sets_, normals_sets_;
+  std::unique_ptr<BodyContact> contact_;  // with bodies only: after each substep
+  std::int64_t batch_first_step_ = 0;     // the first step of the submission being recorded
   int cur_ = 0;
   std::size_t next_perturbation_ = 0;
   std::int64_t step_ = 0;

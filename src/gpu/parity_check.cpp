@@ -1,5 +1,6 @@
 #include "gpu/parity_check.h"
 
+#include <algorithm>
 #include <bit>
 #include <cinttypes>
 #include <cstdio>
@@ -46,12 +47,26 @@ std::optional<Difference> first_difference(const sim::WaterState& cpu, const sim
       if (std::bit_cast<std::uint32_t>(a) != std::bit_cast<std::uint32_t>(b))
         return Difference{.step = 0, .node = n, .component = c, .cpu = a, .gpu = b};
     }
+  for (std::size_t k = 0; k < std::min(cpu.bodies.size(), gpu.bodies.size()); ++k) {
+    const sim::BodyState &p = cpu.bodies[k], &q = gpu.bodies[k];
+    const float a[6] = {p.x, p.y, p.z, p.vx, p.vy, p.vz}, b[6] = {q.x, q.y, q.z, q.vx, q.vy, q.vz};
+    for (int c = 0; c < 6; ++c)
+      if (std::bit_cast<std::uint32_t>(a[c]) != std::bit_cast<std::uint32_t>(b[c]))
+        return Difference{.step = 0, .node = k, .component = c, .cpu = a[c], .gpu = b[c], .body = true};
+  }
   return std::nullopt;
 }
 
 std::string describe(const Difference& d, const sim::WaterModel& m) {
   static const char* names[6] = {"ux", "uy", "uz", "vx", "vy", "vz"};
+  static const char* body_names[6] = {"x", "y", "z", "vx", "vy", "vz"};
   char text[256];
+  if (d.body) {
+    std::snprintf(text, sizeof text, "first difference after step %" PRId64 " at body %zu %s: cpu %a (0x%08x) gpu %a (0x%08x)",
+                  d.step, d.node, body_names[d.component], static_cast<double>(d.cpu), std::bit_cast<std::uint32_t>(d.cpu),
+                  static_cast<double>(d.gpu), std::bit_cast<std::uint32_t>(d.gpu));
+    return text;
+  }
   std::snprintf(text, sizeof text,
                 "first difference after step %" PRId64 " at node %zu (row %zu, col %zu) %s: cpu %a (0x%08x) gpu %a (0x%08x)",
                 d.step, d.node, d.node / static_cast<std::size_t>(m.cols), d.node % static_cast<std::size_t>(m.cols),

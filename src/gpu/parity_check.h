@@ -21,12 +21,13 @@ namespace pond::gpu {
 
 struct Difference {
   std::int64_t step = 0;  // the state after this many steps differs
-  std::size_t node = 0;
-  int component = 0;  // 0..5 = ux uy uz vx vy vz
+  std::size_t node = 0;  // or the body's index
+  int component = 0;     // 0..5 = ux uy uz vx vy vz (a body's x y z vx vy vz)
   float cpu = 0, gpu = 0;
+  bool body = false;     // the water is equal and body `node` differs
 };
 
-// The first differing node of two states, by node then component; nullopt when equal bit for bit.
+// The first differing node of two states, by node then component, then the first differing body; nullopt when equal bit for bit.
 std::optional<Difference> first_difference(const sim::WaterState& cpu, const sim::WaterState& gpu);
 
 std::string describe(const Difference& d, const sim::WaterModel& model);

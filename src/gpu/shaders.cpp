@@ -2,6 +2,8 @@
 
 namespace pond::gpu {
 namespace {
+#include "water_contact_comp.spv.h"
+#include "water_contact_denorm_comp.spv.h"
 #include "water_normals_comp.spv.h"
 #include "water_normals_denorm_comp.spv.h"
 #include "water_perturb_comp.spv.h"
@@ -25,6 +27,11 @@ std::span<const std::uint32_t> water_perturb_spirv(bool denorm_preserve) {
 std::span<const std::uint32_t> water_normals_spirv(bool denorm_preserve) {
   if (denorm_preserve) return pond_spirv_water_normals_denorm_comp;
   return pond_spirv_water_normals_comp;
+}
+
+std::span<const std::uint32_t> water_contact_spirv(bool denorm_preserve) {
+  if (denorm_preserve) return pond_spirv_water_contact_denorm_comp;
+  return pond_spirv_water_contact_comp;
 }
 
 }  // namespace pond::gpu

@@ -11,5 +11,6 @@ namespace pond::gpu {
 std::span<const std::uint32_t> water_step_spirv(bool int64_stores, bool denorm_preserve);
 std::span<const std::uint32_t> water_perturb_spirv(bool denorm_preserve);
 std::span<const std::uint32_t> water_normals_spirv(bool denorm_preserve);
+std::span<const std::uint32_t> water_contact_spirv(bool denorm_preserve);
 
 }  // namespace pond::gpu

@@ -117,6 +117,17 @@ const nlohmann::json& JsonFields::object(const char* key) {
   return v;
 }
 
+std::array<double, 3> JsonFields::vec3(const char* key, std::array<double, 3> fallback) {
+  if (!has(key)) return fallback;
+  const auto& v = array(key);
+  if (v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+    fail(key, "must be an array of three numbers [x, y, z]");
+  const std::array<double, 3> out{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+  for (double d : out)
+    if (!std::isfinite(d)) fail(key, "must be finite");
+  return out;
+}
+
 void JsonFields::index_range(const char* key, int max_index, int& lo, int& hi) {
   if (!has(key)) fail(key, "is missing");
   const auto& v = member(key);

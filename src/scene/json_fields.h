@@ -2,6 +2,7 @@
 // Typed, path-aware access to one JSON object of a scene file. Every read names the key's full
 // path ("physics.mass", "perturbations[2].radius") in its error, and finish() rejects keys that
 // were never read, so typos are errors instead of silently ignored settings.
+#include <array>
 #include <cstdint>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
@@ -28,6 +29,9 @@ class JsonFields {
   // Errors about a member or about the object itself.
   [[noreturn]] void fail(const char* key, const std::string& what) const;
   [[noreturn]] void fail(const std::string& what) const;
+
+  // Reads "key": [x, y, z] of three finite numbers; `fallback` when absent.
+  std::array<double, 3> vec3(const char* key, std::array<double, 3> fallback);
 
   // Reads "key": [a, b] as two integers in [min, max] with a <= b.
   void index_range(const char* key, int max_index, int& lo, int& hi);

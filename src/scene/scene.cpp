@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "core/output_file.h"
+#include "scene/body_fields.h"
 #include "scene/json_fields.h"
 #include "sim/stability.h"
 
@@ -67,6 +68,7 @@ void parse_physics(JsonFields f, Physics& p) {
   p.dt = f.number("dt", p.dt);
   p.substeps = static_cast<int>(f.integer("substeps", p.substeps, 1, kMaxSubsteps));
   p.rest_ratio = f.number("rest_ratio", p.rest_ratio);
+  p.gravity = f.number("gravity", p.gravity);
   if (const std::optional<Problem> problem = physics_problem(p)) f.fail(problem->key.c_str(), problem->what);
   f.finish();
 }
@@ -102,20 +104,8 @@ Perturbation parse_perturbation(JsonFields f, const GridSpec& g) {
   return p;
 }
 
-// "key": [x, y, z] of finite numbers.
-std::array<double, 3> vec3(JsonFields& f, const char* key, std::array<double, 3> fallback) {
-  if (!f.has(key)) return fallback;
-  const auto& v = f.array(key);
-  if (v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
-    f.fail(key, "must be an array of three numbers [x, y, z]");
-  std::array<double, 3> out{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
-  for (double d : out)
-    if (!std::isfinite(d)) f.fail(key, "must be finite");
-  return out;
-}
-
 std::array<double, 3> color(JsonFields& f, const char* key, std::array<double, 3> fallback) {
-  const std::array<double, 3> c = vec3(f, key, fallback);
+  const std::array<double, 3> c = f.vec3(key, fallback);
   for (double d : c)
     if (d < 0.0 || d > 1.0) f.fail(key, "must be an RGB colour with components in [0, 1]");
   return c;
@@ -125,8 +115,8 @@ CameraSpec parse_camera(JsonFields f) {
   CameraSpec c;
   for (const char* key : {"eye", "target"})
     if (!f.has(key)) f.fail(key, "is missing");
-  c.eye = vec3(f, "eye", c.eye);
-  c.target = vec3(f, "target", c.target);
+  c.eye = f.vec3("eye", c.eye);
+  c.target = f.vec3("target", c.target);
   if (c.eye == c.target) f.fail("target", "must differ from camera.eye");
   c.fovy_degrees = f.number("fovy", c.fovy_degrees);
   if (!(c.fovy_degrees > 0.0 && c.fovy_degrees < 180.0)) f.fail("fovy", "must be in (0, 180) degrees");
@@ -146,7 +136,7 @@ void parse_view(JsonFields f, ViewSpec& v) {
 }
 
 void parse_lighting(JsonFields f, LightingSpec& l) {
-  l.sun = vec3(f, "sun", l.sun);
+  l.sun = f.vec3("sun", l.sun);
   if (const std::optional<Problem> problem = sun_problem(l.sun)) f.fail(problem->key.c_str(), problem->what);
   l.water = color(f, "water", l.water);
   l.sky = color(f, "sky", l.sky);
@@ -209,6 +199,7 @@ std::optional<Problem> physics_problem(const Physics& p) {
   if (!(p.substeps >= 1 && p.substeps <= kMaxSubsteps))
     return Problem{"substeps", "must be in [1, " + std::to_string(kMaxSubsteps) + "]"};
   if (!(p.rest_ratio > 0.0)) return Problem{"rest_ratio", "must be positive"};
+  if (!(p.gravity >= 0.0 && std::isfinite(p.gravity))) return Problem{"gravity", "must be finite and not negative"};
   const double bound = sim::stability_bound(p.mass, p.stiffness, p.damping);
   const double sub_dt = p.dt / p.substeps;
   if (!(sub_dt < bound)) {
@@ -266,6 +257,10 @@ Scene parse_scene(std::string_view json_text, const std::string& source) {
   for (std::size_t i = 0; i < ps.size(); ++i)
     s.perturbations.push_back(parse_perturbation(
         JsonFields(ps[i], "perturbations[" + std::to_string(i) + "]", source), s.grid));
+  const auto& bs = f.array("bodies");
+  if (bs.size() > kMaxBodies) f.fail("bodies", "holds more than " + std::to_string(kMaxBodies) + " bodies");
+  for (std::size_t i = 0; i < bs.size(); ++i)
+    s.bodies.push_back(parse_body(JsonFields(bs[i], "bodies[" + std::to_string(i) + "]", source), s.grid));
   if (f.has("camera")) s.camera = parse_camera(JsonFields(f.object("camera"), "camera", source));
   parse_view(JsonFields(f.object("view"), "view", source), s.view);
   parse_lighting(JsonFields(f.object("lighting"), "lighting", source), s.lighting);

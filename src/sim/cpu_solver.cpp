@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "sim/contact.h"
 #include "sim/diagnostics.h"
 #include "sim/perturbation.h"
 
@@ -30,6 +31,9 @@ CpuSolver::CpuSolver(WaterModel model, Backend backend, int threads)
 }
 
 void CpuSolver::set_state(const WaterState& state, std::int64_t steps_done) {
+  if (state.bodies.size() != model_.bodies.size())
+    throw InputError("set_state: " + std::to_string(state.bodies.size()) + " bodies for a model of " +
+                     std::to_string(model_.bodies.size()));
   cur_ = state;
   step_ = steps_done;
   next_perturbation_ = 0;
@@ -38,7 +42,7 @@ void CpuSolver::set_state(const WaterState& state, std::int64_t steps_done) {
     ++next_perturbation_;
 }
 
-void CpuSolver::substep() {
+void CpuSolver::substep(int substep_index) {
   const StepView v{cur_.ux.data(),  cur_.uy.data(),  cur_.uz.data(),  cur_.vx.data(),
                    cur_.vy.data(),  cur_.vz.data(),  next_.ux.data(), next_.uy.data(),
                    next_.uz.data(), next_.vx.data(), next_.vy.data(), next_.vz.data(),
@@ -49,8 +53,18 @@ void CpuSolver::substep() {
     checks_[p] = kernel_(v, r0, r1, scratch_[p].data());
   });
   std::swap(cur_, next_);
+  cur_.bodies.swap(next_.bodies);  // the bodies live in the current state only
   for (float c : checks_)
     if (!std::isfinite(c)) throw_blow_up(cur_, model_, "step " + std::to_string(step_) + ": ");
+  if (!model_.bodies.empty()) {
+    resolve_contacts(cur_, model_, step_, substep_index);
+    if (first_blown_up_body(cur_)) throw_blow_up(cur_, model_, "step " + std::to_string(step_) + ": ");
+  }
+}
+
+void CpuSolver::set_body_models(std::vector<BodyModel> bodies) {
+  if (bodies.size() != model_.bodies.size()) throw InputError("set_body_models: another number of bodies");
+  model_.bodies = std::move(bodies);
 }
 
 std::string CpuSolver::engine() const {
@@ -63,7 +77,7 @@ void CpuSolver::advance(std::int64_t steps) {
     while (next_perturbation_ < model_.perturbations.size() &&
            model_.perturbations[next_perturbation_].step == step_)
       apply_perturbation(model_.perturbations[next_perturbation_++], cur_);
-    for (int k = 0; k < model_.substeps; ++k) substep();
+    for (int k = 0; k < model_.substeps; ++k) substep(k);
     ++step_;
   }
 }

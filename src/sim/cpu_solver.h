@@ -29,12 +29,14 @@ class CpuSolver final : public Solver {
   // Replaces the state and the step counter (e.g. when switching solvers).
   void set_state(const WaterState& state, std::int64_t steps_done) override;
   std::string engine() const override;
+  void set_body_models(std::vector<BodyModel> bodies) override;
+  std::vector<BodyState> read_bodies() const override { return cur_.bodies; }
 
   // Advances `steps` steps. Throws InputError naming the step when the state becomes non-finite.
   void advance(std::int64_t steps) override;
 
  private:
-  void substep();
+  void substep(int substep_index);  // then the bodies' contact (sim/contact.h)
   WaterModel model_;
   Backend backend_;
   StepRowsFn kernel_;

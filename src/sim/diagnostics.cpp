@@ -60,7 +60,18 @@ std::optional<std::size_t> first_blown_up_node(const WaterState& s) {
   return std::nullopt;
 }
 
+std::optional<std::size_t> first_blown_up_body(const WaterState& s) {
+  for (std::size_t b = 0; b < s.bodies.size(); ++b)
+    for (float c : {s.bodies[b].x, s.bodies[b].y, s.bodies[b].z, s.bodies[b].vx, s.bodies[b].vy, s.bodies[b].vz})
+      if (!(std::fabs(c) < 1e30f)) return b;
+  return std::nullopt;
+}
+
 void throw_blow_up(const WaterState& state, const WaterModel& model, const std::string& prefix) {
+  if (!first_blown_up_node(state))
+    if (const std::optional<std::size_t> b = first_blown_up_body(state))
+      throw InputError(prefix + "body " + std::to_string(*b) +
+                       " blew up (non-finite position or velocity); lower physics.dt or raise physics.substeps");
   const std::size_t n = first_blown_up_node(state).value_or(state.nodes() - 1);
   const auto cols = static_cast<std::size_t>(model.cols);
   throw InputError(prefix + "the water blew up (non-finite velocity at node row " + std::to_string(n / cols) +

@@ -28,8 +28,11 @@ std::uint64_t state_hash(const WaterState& state, const WaterModel& model);
 
 // The blow-up check: the first node whose velocity is not finite (or beyond 1e30), if any.
 std::optional<std::size_t> first_blown_up_node(const WaterState& state);
+// The first body whose position or velocity is not finite (or beyond 1e30), if any.
+std::optional<std::size_t> first_blown_up_body(const WaterState& state);
 // Throws InputError: "<prefix>the water blew up (non-finite velocity at node row R, col C); ..."
-// naming the first such node (the last node when none is: the caller saw a non-finite sum).
+// naming the first such node (the last node when none is: the caller saw a non-finite sum), or
+// "<prefix>body B blew up ..." when the nodes are finite and a body is not.
 [[noreturn]] void throw_blow_up(const WaterState& state, const WaterModel& model, const std::string& prefix);
 
 }  // namespace pond::sim

@@ -87,6 +87,7 @@ WaterModel build_model(const WaterSpec& s, MathMode math) {
       for (int j = c.col0; j <= c.col1; ++j) constrain(i, j, c.kind);
 
   for (const Perturbation& q : s.perturbations) m.perturbations.push_back(tabulate(q, m));
+  m.bodies = build_bodies(s.bodies, s.physics, s.grid.spacing);
   std::stable_sort(m.perturbations.begin(), m.perturbations.end(),
                    [](const auto& a, const auto& b) { return a.step < b.step; });
   return m;

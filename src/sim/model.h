@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "sim/bodies.h"
 #include "sim/water_spec.h"
 
 namespace pond::sim {
@@ -44,6 +45,7 @@ struct WaterModel {
   Physics physics;                      // the scene's values, for diagnostics
   std::vector<std::uint8_t> kinds;      // NodeKind per node, row-major
   std::vector<PerturbationTable> perturbations;  // sorted by step, scene order within a step
+  std::vector<BodyModel> bodies;                 // scene order: the contact's order
 
   std::size_t nodes() const { return static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols); }
 };

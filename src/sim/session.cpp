@@ -1,6 +1,7 @@
 #include "sim/session.h"
 
 #include <algorithm>
+#include <array>
 
 #include "core/errors.h"
 #include "sim/cpu_solver.h"
@@ -118,7 +119,80 @@ void Session::set_solver(SolverChoice choice) {
   }
 }
 
+void Session::add_body(const BodySpec& body) {
+  const double h = scene_.grid.spacing;
+  const double max_x = (scene_.grid.cols - 1) * h, max_z = (scene_.grid.rows - 1) * h;
+  if (scene_.bodies.size() >= 64) throw InputError("a scene holds at most 64 bodies");
+  if (!(body.radius >= h)) throw InputError("a body's radius must be at least the grid spacing");
+  if (body.motion == BodyMotion::floating && !(body.mass > 0.0)) throw InputError("a body's mass must be positive");
+  const auto& p = body.motion == BodyMotion::floating ? body.position
+                  : body.path.empty()                  ? body.position
+                                                       : body.path.front().position;
+  if (!(p[0] >= 0.0 && p[0] <= max_x && p[2] >= 0.0 && p[2] <= max_z))
+    throw InputError("a body must lie over the grid");
+  WaterState state = solver_->read_state();
+  const std::int64_t steps = solver_->steps_done();
+  scene_.bodies.push_back(body);
+  held_.resize(scene_.bodies.size());
+  WaterModel model = build();
+  state.bodies.push_back(model.bodies.back().initial);
+  replace_solver(std::move(model), state, steps);
+}
+
+void Session::remove_body(std::size_t index) {
+  if (index >= scene_.bodies.size()) throw InputError("no body " + std::to_string(index));
+  WaterState state = solver_->read_state();
+  const std::int64_t steps = solver_->steps_done();
+  scene_.bodies.erase(scene_.bodies.begin() + static_cast<std::ptrdiff_t>(index));
+  state.bodies.erase(state.bodies.begin() + static_cast<std::ptrdiff_t>(index));
+  held_.resize(scene_.bodies.size() + 1);
+  held_.erase(held_.begin() + static_cast<std::ptrdiff_t>(index));
+  replace_solver(build(), state, steps);
+}
+
+void Session::drag_body(std::size_t index, const std::array<double, 3>& target, std::int64_t steps) {
+  if (index >= scene_.bodies.size()) throw InputError("no body " + std::to_string(index));
+  held_.resize(scene_.bodies.size());
+  const double h = scene_.grid.spacing;
+  const BodyState now = solver_->read_bodies()[index];
+  BodySpec& spec = scene_.bodies[index];
+  if (!held_[index]) held_[index] = spec;
+  const std::array<double, 3> to{std::clamp(target[0], 0.0, (scene_.grid.cols - 1) * h), target[1],
+                                 std::clamp(target[2], 0.0, (scene_.grid.rows - 1) * h)};
+  const std::int64_t from = solver_->steps_done();
+  spec.motion = BodyMotion::kinematic;
+  spec.path = {PathKey{from, {now.x * h, now.y * h, now.z * h}}, PathKey{from + std::max<std::int64_t>(1, steps), to}};
+  solver_->set_body_models(build_bodies(scene_.bodies, scene_.physics, h));
+}
+
+void Session::release_body(std::size_t index, const std::array<double, 3>& velocity) {
+  if (!held(index)) return;
+  const double h = scene_.grid.spacing;
+  WaterState state = solver_->read_state();
+  BodyState& now = state.bodies[index];
+  BodySpec spec = *held_[index];
+  held_[index].reset();
+  if (spec.motion == BodyMotion::floating) {
+    spec.position = {now.x * h, now.y * h, now.z * h};
+    spec.velocity = velocity;
+    now.vx = static_cast<float>(velocity[0] / h);
+    now.vy = static_cast<float>(velocity[1] / h);
+    now.vz = static_cast<float>(velocity[2] / h);
+  } else {
+    spec.path = {PathKey{solver_->steps_done(), {now.x * h, now.y * h, now.z * h}}};
+    now.vx = now.vy = now.vz = 0.0f;
+  }
+  scene_.bodies[index] = spec;
+  notify_change();
+  solver_->set_body_models(build_bodies(scene_.bodies, scene_.physics, h));
+  solver_->set_state(state, solver_->steps_done());
+  ++state_revision_;
+}
+
 void Session::reset() {
+  for (std::size_t b = 0; b < held_.size(); ++b)  // held bodies go back to their own motion
+    if (held_[b]) scene_.bodies[b] = *held_[b];
+  held_.assign(scene_.bodies.size(), std::nullopt);
   if (scene_.wind.ripples) ripples_until_ = kRippleHorizonSteps;
   replace_solver(build(), rest_state(solver_->model()), 0);
 }
@@ -134,7 +208,7 @@ void Session::set_state(const WaterState& state, std::int64_t steps) {
 
 WaterState Session::finite_state() const {
   WaterState state = solver_->read_state();
-  if (first_blown_up_node(state)) throw_blow_up(state, model(), "");
+  if (first_blown_up_node(state) || first_blown_up_body(state)) throw_blow_up(state, model(), "");
   return state;
 }
 

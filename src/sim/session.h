@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "scene/scene.h"
 #include "sim/model.h"
@@ -44,6 +46,20 @@ class Session {
   // physics stays the session's. InputError for another grid.
   void set_water(const WaterSpec& water);
   void set_solver(SolverChoice choice);  // the state and the step count carry over
+
+  // The bodies (world units). Their specs are scene().bodies, with the edits below.
+  std::vector<BodyState> bodies() const { return solver_->read_bodies(); }  // grid units
+  // Adds a body where its spec puts it (InputError: a radius below the grid spacing, a mass that
+  // is not positive, a position off the grid, more than 64 bodies). The water carries over.
+  void add_body(const BodySpec& body);
+  void remove_body(std::size_t index);
+  // Holds body `index` and moves it, kinematic, from where it is to `target` (world units) over the
+  // next `steps` steps (at least 1); call again to move it on.
+  void drag_body(std::size_t index, const std::array<double, 3>& target, std::int64_t steps);
+  // Lets a held body go where it is: a floating body floats again with `velocity` (world units),
+  // a kinematic one stays there.
+  void release_body(std::size_t index, const std::array<double, 3>& velocity);
+  bool held(std::size_t index) const { return index < held_.size() && held_[index].has_value(); }
   void reset();                          // rest, step 0: the scene's perturbations replay
   // Replaces the state and the step count (same grid; InputError otherwise).
   void set_state(const WaterState& state, std::int64_t steps);
@@ -76,6 +92,7 @@ class Session {
   GpuSolverFactory gpu_;
   std::int64_t ripples_until_ = 0;  // the model holds the wind ripples of steps below this
   std::function<void()> before_change_;
+  std::vector<std::optional<BodySpec>> held_;  // per body: its spec before drag_body() took it
   std::unique_ptr<Solver> solver_;
   std::uint64_t solver_generation_ = 0, state_revision_ = 0;
 };

@@ -4,6 +4,7 @@
 // in exact math. The session owns one; a front end chooses which with a SolverChoice.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "sim/backends.h"
 #include "sim/model.h"
@@ -22,6 +23,11 @@ class Solver {
   virtual WaterState read_state() const = 0;
   // Replaces the state and the step counter (the model's perturbations resume from that step).
   virtual void set_state(const WaterState& state, std::int64_t steps_done) = 0;
+  // The bodies' current states (cheaper than read_state().bodies on the GPU).
+  virtual std::vector<BodyState> read_bodies() const = 0;
+  // Replaces the bodies' models (the same number of bodies; their states stay): a kinematic
+  // body's new path, a body turned floating or kinematic. InputError for another count.
+  virtual void set_body_models(std::vector<BodyModel> bodies) = 0;
   // What runs the steps, for messages: "avx2 x 2 threads", "gpu".
   virtual std::string engine() const = 0;
   // For a solver whose bit-identity with the CPU reference depends on the device: one line saying

@@ -2,7 +2,11 @@
 
 namespace pond::sim {
 
-WaterState rest_state(const WaterModel& m) { return WaterState(m.nodes()); }
+WaterState rest_state(const WaterModel& m) {
+  WaterState s(m.nodes());
+  for (const BodyModel& b : m.bodies) s.bodies.push_back(b.initial);
+  return s;
+}
 
 std::vector<float> to_world_interleaved(const WaterState& s, const WaterModel& m) {
   std::vector<float> out(s.nodes() * 6);

@@ -17,6 +17,7 @@ namespace pond::sim {
 
 struct WaterState {
   AlignedBuffer<float> ux, uy, uz, vx, vy, vz;
+  std::vector<BodyState> bodies;  // one per body of the model, grid units (sim/bodies.h)
 
   WaterState() = default;
   explicit WaterState(std::size_t nodes)
@@ -24,7 +25,7 @@ struct WaterState {
   std::size_t nodes() const { return ux.size(); }
 };
 
-// Every node at rest: zero displacement, zero velocity.
+// Every node at rest: zero displacement, zero velocity; the bodies where the scene puts them.
 WaterState rest_state(const WaterModel& model);
 
 // The contract's dump layout: float32 (rows, cols, 6) = x, y, z, vx, vy, vz in world units.

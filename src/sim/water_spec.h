@@ -1,6 +1,7 @@
 #pragma once
 // The water as a scene file describes it (world units): the grid, the physics, the constraints and
 // the perturbations of the contract in README.md. Validated by src/scene; WaterModel is built from it.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -25,6 +26,7 @@ struct Physics {
   double dt = 0.4;
   int substeps = 1;
   double rest_ratio = 1.0;
+  double gravity = 0.05;  // world units / time^2, on the floating bodies only (not the membrane)
 };
 
 struct ConstraintRect {
@@ -42,12 +44,31 @@ struct Perturbation {
   PerturbMode mode = PerturbMode::add;
 };
 
+// A body in the water (world units; node (i, j) rests at (j h, 0, i h), y up). Kinematic: follows
+// `path` and is not moved by the water; floating: a mass under gravity that the water supports.
+enum class BodyShape { sphere };
+enum class BodyMotion { kinematic, floating };
+struct PathKey {
+  std::int64_t step = 0;  // the position at the start of this step; piecewise linear between keys
+  std::array<double, 3> position{};
+};
+struct BodySpec {
+  BodyShape shape = BodyShape::sphere;
+  BodyMotion motion = BodyMotion::floating;
+  double radius = 1.0;
+  double mass = 1.0;                      // floating only
+  std::array<double, 3> position{};       // floating: at step 0
+  std::array<double, 3> velocity{};       // floating: at step 0
+  std::vector<PathKey> path;              // kinematic: steps strictly increasing, held after the last
+};
+
 struct WaterSpec {
   GridSpec grid;
   Physics physics;
   NodeKind border = NodeKind::fixed;
   std::vector<ConstraintRect> constraints;
   std::vector<Perturbation> perturbations;
+  std::vector<BodySpec> bodies;
 };
 
 }  // namespace pond::sim

@@ -1,0 +1,133 @@
+#include "gpu/body_contact.h"
+
+#include <cstddef>
+#include <cstring>
+
+#include "core/errors.h"
+#include "gpu/shaders.h"
+#include "shared/bodies.h"
+
+namespace pond::gpu {
+namespace {
+
+using BU = vk::BufferUsageFlagBits;
+using shared::BodyConstants;
+using shared::BodyState;
+using shared::ContactPush;
+
+static_assert(sizeof(BodyState) == 24 && offsetof(BodyState, vx) == 12);
+static_assert(sizeof(BodyConstants) == 20 && offsetof(BodyConstants, gravity_dt) == 12 &&
+              offsetof(BodyConstants, floating) == 16);
+static_assert(sizeof(ContactPush) == 36 && offsetof(ContactPush, schedule_first) == 20 &&
+              offsetof(ContactPush, dt) == 24 && offsetof(ContactPush, rim_z) == 32);
+
+constexpr std::uint32_t kSets = 2;  // one per state buffer
+
+}  // namespace
+
+BodyContact::BodyContact(const Context& ctx, const sim::WaterModel& model, std::size_t pitch, std::size_t stride,
+                         const Buffer (&state)[2], const Buffer& kinds, std::int64_t max_substeps,
+                         bool denorm_preserve)
+    : ctx_(ctx), model_(model), pitch_(pitch), stride_(stride), max_substeps_(max_substeps) {
+  const std::vector<vk::DescriptorType> bindings(POND_CONTACT_BINDINGS, vk::DescriptorType::eStorageBuffer);
+  pipe_ = create_compute_pipeline(ctx_, water_contact_spirv(denorm_preserve), bindings, sizeof(ContactPush), {},
+                                  "water_contact");
+  const std::size_t count = model_.bodies.size();
+  bodies_ = create_buffer(ctx_, count * sizeof(BodyState), BU::eStorageBuffer | BU::eTransferSrc | BU::eTransferDst,
+                          MemoryUse::device, "bodies");
+  constants_ = create_buffer(ctx_, count * sizeof(BodyConstants), BU::eStorageBuffer | BU::eTransferDst,
+                             MemoryUse::device, "body constants");
+  upload_constants();
+  schedule_ = create_buffer(ctx_, static_cast<vk::DeviceSize>(max_substeps_) * count * sizeof(BodyState),
+                            BU::eStorageBuffer, MemoryUse::upload, "kinematic body schedule");
+
+  const vk::DescriptorPoolSize size{.type = vk::DescriptorType::eStorageBuffer,
+                                    .descriptorCount = kSets * POND_CONTACT_BINDINGS};
+  pool_ = vk::raii::DescriptorPool(ctx_.device(),
+                                   vk::DescriptorPoolCreateInfo{.flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
+                                                                .maxSets = kSets, .poolSizeCount = 1, .pPoolSizes = &size});
+  const vk::DescriptorSetLayout layouts[kSets] = {*pipe_.set_layout, *pipe_.set_layout};
+  vk::raii::DescriptorSets sets(ctx_.device(), vk::DescriptorSetAllocateInfo{.descriptorPool = *pool_,
+                                                                             .descriptorSetCount = kSets,
+                                                                             .pSetLayouts = layouts});
+  for (auto& s : sets) sets_.push_back(std::move(s));
+  for (std::uint32_t c = 0; c < kSets; ++c) {
+    vk::DescriptorBufferInfo infos[POND_CONTACT_BINDINGS];
+    infos[POND_CONTACT_BINDING_STATE] = state[c].whole();
+    infos[POND_CONTACT_BINDING_KINDS] = kinds.whole();
+    infos[POND_CONTACT_BINDING_BODIES] = bodies_.whole();
+    infos[POND_CONTACT_BINDING_CONSTANTS] = constants_.whole();
+    infos[POND_CONTACT_BINDING_SCHEDULE] = schedule_.whole();
+    std::vector<vk::WriteDescriptorSet> writes;
+    for (std::uint32_t b = 0; b < POND_CONTACT_BINDINGS; ++b)
+      writes.push_back({.dstSet = *sets_[c], .dstBinding = b, .descriptorCount = 1,
+                        .descriptorType = vk::DescriptorType::eStorageBuffer, .pBufferInfo = &infos[b]});
+    ctx_.device().updateDescriptorSets(writes, nullptr);
+  }
+}
+
+void BodyContact::upload_constants() {
+  std::vector<BodyConstants> constants;
+  for (const sim::BodyModel& b : model_.bodies) constants.push_back(b.constants);
+  upload(ctx_, constants_, std::as_bytes(std::span(constants)));
+}
+
+void BodyContact::set_bodies(const std::vector<sim::BodyState>& bodies) {
+  if (bodies.size() != model_.bodies.size())
+    throw InputError("GpuSolver::set_state: " + std::to_string(bodies.size()) + " bodies for a model of " +
+                     std::to_string(model_.bodies.size()));
+  upload(ctx_, bodies_, std::as_bytes(std::span(bodies)));
+}
+
+std::vector<sim::BodyState> BodyContact::read() const {
+  Buffer staging = create_buffer(ctx_, bodies_.size, BU::eTransferDst, MemoryUse::readback, "bodies readback");
+  ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
+    using S = vk::PipelineStageFlagBits2;
+    using A = vk::AccessFlagBits2;
+    const vk::MemoryBarrier2 before{.srcStageMask = S::eComputeShader | S::eTransfer,
+                                    .srcAccessMask = A::eShaderWrite | A::eTransferWrite,
+                                    .dstStageMask = S::eTransfer, .dstAccessMask = A::eTransferRead};
+    cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &before});
+    cmd.copyBuffer(*bodies_.buffer, *staging.buffer, vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = bodies_.size});
+    const vk::MemoryBarrier2 to_host{.srcStageMask = S::eTransfer, .srcAccessMask = A::eTransferWrite,
+                                     .dstStageMask = S::eHost, .dstAccessMask = A::eHostRead};
+    cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_host});
+  });
+  staging.invalidate(ctx_);
+  std::vector<sim::BodyState> out(model_.bodies.size());
+  std::memcpy(out.data(), staging.mapped, bodies_.size);
+  return out;
+}
+
+void BodyContact::write_schedule(std::int64_t first_step, std::int64_t steps) {
+  const int substeps = model_.substeps;
+  if (steps * substeps > max_substeps_) throw RuntimeError("BodyContact::write_schedule: too many substeps");
+  auto* entries = static_cast<BodyState*>(schedule_.mapped);
+  const std::size_t count = model_.bodies.size();
+  for (std::int64_t s = 0; s < steps; ++s)
+    for (int k = 0; k < substeps; ++k)
+      for (std::size_t b = 0; b < count; ++b)
+        if (!model_.bodies[b].floating())
+          entries[static_cast<std::size_t>(s * substeps + k) * count + b] =
+              sim::kinematic_state(model_.bodies[b], first_step + s, k, substeps, model_.physics.dt);
+  schedule_.flush(ctx_);
+}
+
+void BodyContact::record(const vk::raii::CommandBuffer& cmd, int cur, std::int64_t substep_in_batch) const {
+  const auto count = static_cast<std::uint32_t>(model_.bodies.size());
+  const ContactPush push{.count = count,
+                         .rows = static_cast<std::uint32_t>(model_.rows),
+                         .cols = static_cast<std::uint32_t>(model_.cols),
+                         .pitch = static_cast<std::uint32_t>(pitch_),
+                         .stride = static_cast<std::uint32_t>(stride_),
+                         .schedule_first = static_cast<std::uint32_t>(substep_in_batch) * count,
+                         .dt = model_.constants.dt,
+                         .rim_x = static_cast<float>(model_.cols - 1),
+                         .rim_z = static_cast<float>(model_.rows - 1)};
+  cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipe_.pipeline);
+  cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipe_.layout, 0, *sets_[cur], nullptr);
+  cmd.pushConstants<ContactPush>(*pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+  cmd.dispatch(1, 1, 1);
+}
+
+}  // namespace pond::gpu

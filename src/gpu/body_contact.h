@@ -1,0 +1,45 @@
+#pragma once
+// The GPU side of the bodies in the water: the contact pass (water_contact.comp, one small
+// dispatch after each substep's step dispatch), the bodies' state on the GPU, their constants,
+// and the schedule of the kinematic bodies' positions for the substeps of one submission (computed
+// on the CPU by sim::kinematic_state, so both solvers use the same floats).
+#include <cstdint>
+#include <vector>
+
+#include "gpu/buffer.h"
+#include "gpu/compute_pipeline.h"
+#include "gpu/context.h"
+#include "sim/model.h"
+
+namespace pond::gpu {
+
+class BodyContact {
+ public:
+  // For the bodies of `model` (which must outlive this, as the context and the buffers) on the
+  // solver's two state buffers (rows `pitch` nodes apart, components `stride` floats apart) and
+  // its packed kinds; `max_substeps` is the most substeps one submission records.
+  BodyContact(const Context& ctx, const sim::WaterModel& model, std::size_t pitch, std::size_t stride,
+              const Buffer (&state)[2], const Buffer& kinds, std::int64_t max_substeps, bool denorm_preserve);
+
+  void set_bodies(const std::vector<sim::BodyState>& bodies);  // uploads them (waits)
+  void upload_constants();  // the model's bodies' constants (after the model's bodies changed; waits)
+  std::vector<sim::BodyState> read() const;                     // copies them back (waits)
+  // The kinematic bodies' positions for the substeps of steps [first_step, first_step + steps),
+  // written and flushed for the next submission (at most max_substeps substeps).
+  void write_schedule(std::int64_t first_step, std::int64_t steps);
+  // The contact after the `substep_in_batch`-th substep since the last write_schedule(), on state
+  // buffer `cur` (the one that substep wrote); a compute barrier must follow it.
+  void record(const vk::raii::CommandBuffer& cmd, int cur, std::int64_t substep_in_batch) const;
+
+ private:
+  const Context& ctx_;
+  const sim::WaterModel& model_;
+  std::size_t pitch_, stride_;
+  std::int64_t max_substeps_;
+  ComputePipeline pipe_;
+  Buffer bodies_, constants_, schedule_;
+  vk::raii::DescriptorPool pool_ = nullptr;
+  std::vector<vk::raii::DescriptorSet> sets_;  // sets_[c]: state buffer c
+};
+
+}  // namespace pond::gpu
