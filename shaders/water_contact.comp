@@ -62,7 +62,7 @@ void main() {
     const BodyConstants c = BodyConstants(constants[index].radius, constants[index].radius2,
                                           constants[index].node_over_body, constants[index].gravity_dt,
                                           constants[index].floating);
-    BodyState b = c.floating != 0u ? contact_move_floating(body_at(index), c.gravity_dt, p.dt, p.rim_x, p.rim_z)
+    BodyState b = c.floating != 0u ? contact_move_floating(body_at(index), p.dt, p.rim_x, p.rim_z)
                                    : scheduled_at(p.schedule_first + index);
     const int i0 = footprint_first(b.z, c.radius), i1 = footprint_last(b.z, c.radius, int(p.rows) - 1);
     const int j0 = footprint_first(b.x, c.radius), j1 = footprint_last(b.x, c.radius, int(p.cols) - 1);
@@ -90,7 +90,7 @@ void main() {
         all_nodes += lane_counts[l];
       }
       if (all_nodes > 0u) common_v = contact_common_velocity(b.vy, total, all_nodes, c.node_over_body);
-      b.vy = common_v;
+      b.vy = contact_fall(common_v, c.gravity_dt);
     }
     for (uint k = lane; k < count; k += POND_CONTACT_LANES) {
       uint n;

@@ -2,8 +2,8 @@
 // solver's sim/contact.cpp and the GPU solver), so both run the same contact with the same bits.
 //
 // The contact, after every substep, body after body in scene order (grid units throughout):
-//  1. The body moves: a floating body by gravity then its velocity (vy -= gravity_dt;
-//     p += v * dt), a kinematic one to its path's position at the end of the substep.
+//  1. The body moves: a floating body by its velocity (p += v * dt), a kinematic one to its
+//     path's position at the end of the substep.
 //  2. Its footprint: rows [floor(z - r) - 1, ceil(z + r) + 1] and columns [floor(x - r) - 1,
 //     ceil(x + r) + 1] of the grid, numbered k = row-major within it. A node that is not fixed lies
 //     inside the body when its actual position (j + ux, uy, i + uz) does (contact_half_height).
@@ -13,7 +13,8 @@
 //     k % kContactLanes adds the nodes of its k in increasing k, then the lanes' sums are added in
 //     lane order. A kinematic body has infinite mass: v_c = vb.
 //  4. Every node inside moves vertically to the sphere's surface (the nearer of the upper and
-//     lower cap) and takes v_c; the body takes v_c.
+//     lower cap) and takes v_c; the body takes v_c, then gravity: vy = v_c - gravity_dt (so a body
+//     at rest on the water has vy = 0 between substeps).
 #ifndef POND_BODIES_H
 #define POND_BODIES_H
 
@@ -85,14 +86,12 @@ using std::floor;
 #define POND_BODY_FN
 #endif
 
-// A floating body's motion through a substep (step 1 above): gravity, then its velocity. Its centre
-// stays over the grid: the rim (x in [0, rim_x], z in [0, rim_z]) stops it horizontally.
-POND_BODY_FN BodyState contact_move_floating(BodyState b, float gravity_dt, float dt, float rim_x, float rim_z) {
-  POND_PRECISE float vy = b.vy - gravity_dt;
+// A floating body's motion through a substep (step 1 above). Its centre stays over the grid: the
+// rim (x in [0, rim_x], z in [0, rim_z]) stops it horizontally.
+POND_BODY_FN BodyState contact_move_floating(BodyState b, float dt, float rim_x, float rim_z) {
   POND_PRECISE float x = b.x + b.vx * dt;
-  POND_PRECISE float y = b.y + vy * dt;
+  POND_PRECISE float y = b.y + b.vy * dt;
   POND_PRECISE float z = b.z + b.vz * dt;
-  b.vy = vy;
   b.x = x;
   b.y = y;
   b.z = z;
@@ -133,6 +132,12 @@ POND_BODY_FN float contact_surface(float y, float by, float half_height) {
   POND_PRECISE float up = by + half_height;
   POND_PRECISE float down = by - half_height;
   return y >= by ? up : down;
+}
+
+// A floating body's vertical velocity after the contact (step 4): the common velocity, then gravity.
+POND_BODY_FN float contact_fall(float common_v, float gravity_dt) {
+  POND_PRECISE float vy = common_v - gravity_dt;
+  return vy;
 }
 
 // Whether a node at height y is strictly inside the chord.

@@ -58,7 +58,11 @@ int run_simulate(const SimulateOptions& o) {
   const sim::MathMode math = o.math == "fast" ? sim::MathMode::fast : sim::MathMode::exact;
   check_output_path(o.out);
   if (!o.bodies_out.empty()) {
-    check_output_path(o.bodies_out);
+    try {
+      check_output_path(o.bodies_out);
+    } catch (const InputError& e) {
+      throw InputError(std::string("--bodies-out: ") + e.what());
+    }
     if (o.bodies_out == o.out) throw InputError("--bodies-out must differ from --out (" + o.out + ")");
   }
   const InterruptScope interrupt_scope;  // SIGINT/SIGTERM stop the run before anything is written

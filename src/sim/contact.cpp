@@ -10,7 +10,7 @@ void resolve_contacts(WaterState& s, const WaterModel& m, std::int64_t step, int
     const shared::BodyConstants& c = model.constants;
     BodyState& b = s.bodies[index];
     if (model.floating())
-      b = shared::contact_move_floating(b, c.gravity_dt, m.constants.dt, static_cast<float>(m.cols - 1),
+      b = shared::contact_move_floating(b, m.constants.dt, static_cast<float>(m.cols - 1),
                                         static_cast<float>(m.rows - 1));
     else
       b = kinematic_state(model, step, substep, m.substeps, m.physics.dt);
@@ -46,7 +46,7 @@ void resolve_contacts(WaterState& s, const WaterModel& m, std::int64_t step, int
         nodes += counts[lane];
       }
       if (nodes > 0) common_v = shared::contact_common_velocity(b.vy, sum, nodes, c.node_over_body);
-      b.vy = common_v;
+      b.vy = shared::contact_fall(common_v, c.gravity_dt);
     }
     for (int k = 0; k < count; ++k) {
       std::size_t n;

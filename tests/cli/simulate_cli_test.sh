@@ -5,6 +5,7 @@
 set -u
 pond=$1
 work=$2
+scenes=$(cd "$(dirname "$0")/../../scenes" && pwd)
 rm -rf "$work" && mkdir -p "$work" || exit 1
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
@@ -81,6 +82,30 @@ unset POND_CPU_FEATURES_MASK
 POND_CPU_FEATURES_MASK=avx2 "$pond" simulate --steps 5 --scene "$work/ok.json" --out "$work/masked.npy" \
   > "$work/stdout" 2> "$work/stderr" || fail "auto with AVX2 masked: $(cat "$work/stderr")"
 grep -q " on sse x " "$work/stdout" || fail "auto with AVX2 masked did not run sse: $(cat "$work/stdout")"
+
+# Bodies: --bodies-out writes float32 (B, 6); bad bodies exit 2 naming the key, writing nothing.
+"$pond" simulate --steps 40 --scene "$scenes/bodies.json" --out "$work/b_state.npy" --bodies-out "$work/bodies.npy" \
+  > "$work/stdout" 2> "$work/stderr" || fail "bodies scene: $(cat "$work/stderr")"
+head -c 128 "$work/bodies.npy" | grep -q "'descr': '<f4', 'fortran_order': False, 'shape': (3, 6)" ||
+  fail "bodies.npy header: $(head -c 128 "$work/bodies.npy" | tr -d '\0')"
+[ "$(stat -c %s "$work/bodies.npy")" -eq $((128 + 3 * 6 * 4)) ] || fail "bodies.npy size"
+grep -q "wrote $work/bodies.npy (3 bodies)" "$work/stdout" || fail "no bodies line: $(cat "$work/stdout")"
+echo sentinel > "$work/out.npy"
+echo sentinel > "$work/bodies_kept.npy"
+printf '{"bodies": [{"motion": "floating", "mass": 0, "radius": 2, "position": [5, 1, 5]}]}' > "$work/body_mass.json"
+expect_bad "bodies\[0\].mass" --steps 5 --scene "$work/body_mass.json" $out --bodies-out "$work/bodies_kept.npy"
+[ "$(cat "$work/bodies_kept.npy")" = sentinel ] || fail "a refused scene clobbered --bodies-out"
+printf '{"bodies": [{"motion": "floating", "mass": 3, "radius": 2, "position": [5, 1, 500]}]}' > "$work/body_out.json"
+expect_bad "bodies\[0\].position is outside the grid" --steps 5 --scene "$work/body_out.json" $out
+printf '{"bodies": [{"motion": "kinematic", "radius": 2, "path": [[9, 1, 0, 1], [3, 2, 0, 2]]}]}' > "$work/body_path.json"
+expect_bad "bodies\[0\].path\[1\]" --steps 5 --scene "$work/body_path.json" $out
+expect_bad "bodies-out" --steps 5 --scene "$work/ok.json" $out --bodies-out "$work/no/such/dir/b.npy"
+for solver in scalar sse avx2; do
+  "$pond" simulate --steps 40 --scene "$scenes/bodies.json" --solver $solver --out "$work/bs_$solver.npy" \
+    --bodies-out "$work/bb_$solver.npy" > /dev/null 2>&1 || continue  # avx2 may be absent
+  cmp -s "$work/bodies.npy" "$work/bb_$solver.npy" || fail "bodies on $solver differ"
+  cmp -s "$work/b_state.npy" "$work/bs_$solver.npy" || fail "state with bodies on $solver differs"
+done
 
 # The same scene on every backend and thread count gives the same bytes.
 for solver in scalar sse avx2; do

@@ -114,6 +114,27 @@ const ParityCase kCases[] = {
          "physics": {"mass": 4.0, "stiffness": 7.0, "damping": 0.05, "dt": 0.4, "substeps": 2},
          "perturbations": [)" POND_SPLASHES(2, 4, 1.5, 3.75) R"(]})",
      10000},
+    {"bodies_41x67_mixed_islands",  // bodies: a width that is not a multiple of 4, substeps
+     R"({"grid": {"rows": 41, "cols": 67}, "physics": {"substeps": 2, "gravity": 0.05},
+         "constraints": [{"kind": "fixed", "rows": [24, 27], "cols": [33, 38]}],
+         "perturbations": [{"step": 5, "row": 13, "col": 22, "radius": 2.0, "amplitude": 1.0}],
+         "bodies": [{"motion": "kinematic", "radius": 3.0,
+                     "path": [[0, 6, 0.5, 20], [120, 60, 0.5, 20], [160, 60, -1, 12]]},
+                    {"motion": "floating", "radius": 2.0, "mass": 30, "position": [16, 3, 10],
+                     "velocity": [0, -0.3, 0]},
+                    {"motion": "floating", "radius": 2.5, "mass": 20, "position": [47, 2, 30],
+                     "velocity": [0.05, 0, -0.02]}]})",
+     3000},
+    {"bodies_48x64_pretension_overlap",  // bodies: a multiple of 4; overlapping balls; one leaves the grid
+     R"({"grid": {"rows": 48, "cols": 64, "spacing": 0.5}, "border": "vertical",
+         "physics": {"rest_ratio": 0.9, "damping": 0.1, "gravity": 0.2},
+         "bodies": [{"motion": "floating", "radius": 2.0, "mass": 10, "position": [10, 1.5, 12]},
+                    {"motion": "floating", "radius": 1.5, "mass": 5, "position": [11.5, 2.5, 12.5],
+                     "velocity": [0.3, 0, 0.1]},
+                    {"motion": "floating", "radius": 1.0, "mass": 2, "position": [30, 1, 20],
+                     "velocity": [2.0, 0, 0]},
+                    {"motion": "kinematic", "radius": 1.5, "path": [[10, 5, -0.5, 5], [400, 25, 0.2, 20]]}]})",
+     3000},
     {"narrow_7x6_free",  // the last group: two real columns and 2 padding
      R"({"grid": {"rows": 7, "cols": 6}, "border": "free",
          "perturbations": [)" POND_SPLASHES(3, 5, 4.5, 4.25) R"(]})",
@@ -154,6 +175,34 @@ TEST_P(ParityTest, GpuExactEqualsCpuScalarBitForBit) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ParityTest, ::testing::ValuesIn(kCases),
                          [](const ::testing::TestParamInfo<ParityCase>& p) { return std::string(p.param.name); });
+
+// After every step of a scene with bodies, no GPU node lies inside a body (the CPU's check is in
+// tests/sim/bodies_test.cpp; here the GPU's own state is read back).
+TEST_F(GpuTest, NoNodeIsInsideABodyOnTheGpu) {
+  const ParityCase& c = *std::find_if(std::begin(kCases), std::end(kCases), [](const ParityCase& p) {
+    return std::string(p.name) == "bodies_41x67_mixed_islands";
+  });
+  const sim::WaterModel model = model_of(c);
+  gpu::GpuSolver gpu(ctx(), model);
+  int touching = 0;
+  for (int step = 0; step < 150; step += 3) {
+    gpu.advance(3);
+    const sim::WaterState s = gpu.read_state();
+    for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+      const double r = model.bodies[b].constants.radius;
+      for (std::size_t n = 0; n < s.nodes(); ++n) {
+        if (model.kinds[n] == static_cast<std::uint8_t>(sim::NodeKind::fixed)) continue;
+        const double dx = static_cast<double>(n % model.cols) + s.ux[n] - s.bodies[b].x;
+        const double dy = s.uy[n] - s.bodies[b].y;
+        const double dz = static_cast<double>(n / model.cols) + s.uz[n] - s.bodies[b].z;
+        const double d = std::sqrt(dx * dx + dy * dy + dz * dz);
+        ASSERT_GT(d, r * (1 - 1e-5)) << "body " << b << ", node " << n << ", after step " << step + 3;
+        touching += d < r * (1 + 1e-4);
+      }
+    }
+  }
+  EXPECT_GT(touching, 100);
+}
 
 // The GPU state's rows are padded to a multiple of 4 nodes, so the step shader's one algorithm (4
 // columns per invocation) runs every grid, odd widths too.

@@ -266,6 +266,68 @@ TEST(Scene, TreeAndWindErrorsNameThePath) {
   EXPECT_TRUE(has(R"({"wind": {"speed": 3}})", "wind.speed is not a known key"));
 }
 
+TEST(Scene, BodiesParse) {
+  const Scene s = parse_scene(R"({
+    "grid": {"rows": 50, "cols": 40, "spacing": 0.5}, "physics": {"gravity": 0.1},
+    "bodies": [{"shape": "sphere", "radius": 3.0, "motion": "kinematic",
+                "path": [[0, 10.0, 0.5, 12.0], [300, 15.0, 0.5, 12.0]]},
+               {"radius": 2.0, "motion": "floating", "mass": 30.0, "position": [15.0, 2.0, 20.0],
+                "velocity": [0.5, 0.0, 0.0]}]})", "test.json");
+  ASSERT_EQ(s.bodies.size(), 2u);
+  EXPECT_EQ(s.bodies[0].motion, sim::BodyMotion::kinematic);
+  ASSERT_EQ(s.bodies[0].path.size(), 2u);
+  EXPECT_EQ(s.bodies[0].path[1].step, 300);
+  EXPECT_EQ(s.bodies[0].path[1].position[0], 15.0);
+  EXPECT_EQ(s.bodies[1].motion, sim::BodyMotion::floating);
+  EXPECT_EQ(s.bodies[1].mass, 30.0);
+  EXPECT_EQ(s.bodies[1].velocity[0], 0.5);
+  EXPECT_EQ(s.physics.gravity, 0.1);
+  EXPECT_EQ(parse_scene("{}", "test.json").physics.gravity, 0.05);  // the documented default
+}
+
+TEST(Scene, BodyErrorsNameThePath) {
+  auto has = [](const std::string& bodies, const char* text) {
+    const std::string m = error_of(R"({"grid": {"rows": 50, "cols": 40}, "bodies": [)" + bodies + "]}");
+    return m.find(text) != std::string::npos ? ::testing::AssertionSuccess() : ::testing::AssertionFailure() << m;
+  };
+  const std::string ball = R"({"motion": "floating", "mass": 3, "position": [5, 1, 5], )";
+  EXPECT_TRUE(has(ball + R"("radius": 0})", "bodies[0].radius must be positive"));
+  EXPECT_TRUE(has(ball + R"("radius": -2})", "bodies[0].radius must be positive"));
+  EXPECT_TRUE(has(ball + R"("radius": 0.5})", "bodies[0].radius is 0.5, less than the grid spacing 1"));
+  EXPECT_TRUE(has(R"({"motion": "floating", "mass": 0, "position": [5, 1, 5], "radius": 2})",
+                  "bodies[0].mass must be positive"));
+  EXPECT_TRUE(has(R"({"motion": "floating", "mass": -1, "position": [5, 1, 5], "radius": 2})",
+                  "bodies[0].mass must be positive"));
+  EXPECT_TRUE(has(R"({"motion": "floating", "position": [5, 1, 5], "radius": 2})", "bodies[0].mass is missing"));
+  EXPECT_TRUE(has(R"({"motion": "floating", "mass": 3, "position": [40, 1, 5], "radius": 2})",
+                  "bodies[0].position is outside the grid: x must be in [0, 39] and z in [0, 49]"));
+  EXPECT_TRUE(has(R"({"motion": "floating", "mass": 3, "position": [5, 1, -0.5], "radius": 2})",
+                  "bodies[0].position is outside the grid"));
+  EXPECT_TRUE(has(ball + R"("radius": 2, "shape": "cube"})", "bodies[0].shape is 'cube', expected sphere"));
+  EXPECT_TRUE(has(ball + R"("radius": 2, "motion": "sinking"})", "bodies[0].motion is 'sinking', expected kinematic | floating"));
+  EXPECT_TRUE(has(R"({"radius": 2, "mass": 3, "position": [5, 1, 5]})", "bodies[0].motion is missing"));
+  EXPECT_TRUE(has(ball + R"("radius": 2, "colour": "red"})", "bodies[0].colour is not a known key"));
+  EXPECT_TRUE(has(ball + R"("radius": 2}, {"motion": "kinematic", "radius": 2, "path": [[0, 1, 0, 1], [10, 2, 0, 2], [5, 3, 0, 3]]})",
+                  "bodies[1].path[2] has step 5, not after the key before it (step 10): steps must increase"));
+  EXPECT_TRUE(has(R"({"motion": "kinematic", "radius": 2, "path": [[0, 1, 0, 1], [0, 2, 0, 2]]})",
+                  "bodies[0].path[1] has step 0, not after"));
+  EXPECT_TRUE(has(R"({"motion": "kinematic", "radius": 2, "path": [[0, 1, 0, 1], [10, 2, 0, 60]]})",
+                  "bodies[0].path[1] is outside the grid"));
+  EXPECT_TRUE(has(R"({"motion": "kinematic", "radius": 2, "path": [[-1, 1, 0, 1]]})",
+                  "bodies[0].path[0] has step -1: a step must be an integer >= 0"));
+  EXPECT_TRUE(has(R"({"motion": "kinematic", "radius": 2, "path": [[0.5, 1, 0, 1]]})", "bodies[0].path[0] has step 0.5"));
+  EXPECT_TRUE(has(R"({"motion": "kinematic", "radius": 2, "path": [[0, 1, 0]]})",
+                  "bodies[0].path[0] must be a key [step, x, y, z] of four numbers"));
+  EXPECT_TRUE(has(R"({"motion": "kinematic", "radius": 2})", "bodies[0].path is missing"));
+  EXPECT_TRUE(has(R"({"motion": "kinematic", "radius": 2, "path": []})", "bodies[0].path is empty"));
+  EXPECT_TRUE(has(R"({"motion": "kinematic", "radius": 2, "mass": 3, "path": [[0, 1, 0, 1]]})",
+                  "bodies[0].mass is for floating bodies"));
+  EXPECT_TRUE(has(ball + R"("radius": 2, "path": [[0, 1, 0, 1]]})", "bodies[0].path is for kinematic bodies"));
+  EXPECT_TRUE(has(R"(3)", "bodies[0] must be an object, not a number"));
+  EXPECT_TRUE(error_of(R"({"physics": {"gravity": -1}})").find("physics.gravity must be finite and not negative") !=
+              std::string::npos);
+}
+
 }  // namespace
 }  // namespace pond::scene
 

@@ -27,12 +27,7 @@ using scene::Scene;
 // then every backend, the IA-32 build and the GPU must agree on the new value.
 constexpr std::uint64_t kGoldenDefaultScene1000 = 0x338fc857b8648871ull;
 
-std::vector<Backend> available() {
-  std::vector<Backend> out;
-  for (Backend b : {Backend::scalar, Backend::sse, Backend::avx2, Backend::avx512})
-    if (cpu_supports(b)) out.push_back(b);
-  return out;
-}
+std::vector<Backend> available() { return test::available_backends(); }
 
 std::string hex(std::uint64_t v) {
   char buf[32];

@@ -2,6 +2,7 @@
 // Helpers for the solver tests: scenes built in code and runs of the CPU solver.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "sim/cpu_solver.h"
 #include "scene/scene.h"
@@ -29,6 +30,14 @@ inline sim::Perturbation splash(double row, double col, double radius = 2.0, dou
   p.target = target;
   p.mode = mode;
   return p;
+}
+
+// The CPU backends this machine runs (compiled in, supported, not masked).
+inline std::vector<sim::Backend> available_backends() {
+  std::vector<sim::Backend> out;
+  for (sim::Backend b : {sim::Backend::scalar, sim::Backend::sse, sim::Backend::avx2, sim::Backend::avx512})
+    if (sim::cpu_supports(b)) out.push_back(b);
+  return out;
 }
 
 inline sim::WaterState run(const scene::Scene& scene, std::int64_t steps,
