@@ -31,6 +31,13 @@ const CheckCase kCases[] = {
      R"({"grid": {"rows": 17, "cols": 33}, "physics": {"substeps": 2},
          "perturbations": [{"step": 3, "row": 8, "col": 32, "radius": 2.0, "amplitude": 2.0, "target": "position"}]})",
      2000, "a width that is not a multiple of 4 (padded rows), a splash at the right border, substeps"},
+    {"bodies",
+     R"({"grid": {"rows": 33, "cols": 45}, "physics": {"rest_ratio": 0.95, "gravity": 0.05},
+         "constraints": [{"kind": "fixed", "rows": [20, 23], "cols": [30, 34]}],
+         "bodies": [{"motion": "kinematic", "radius": 3.0, "path": [[0, 5, 0.5, 10], [150, 40, 0.5, 10]]},
+                    {"motion": "floating", "radius": 2.0, "mass": 30, "position": [12, 3, 22], "velocity": [0, -0.2, 0]},
+                    {"motion": "floating", "radius": 2.5, "mass": 20, "position": [15, 1, 24]}]})",
+     1500, "a dragged sphere and two overlapping floating balls (the contact pass and its reduction)"},
 };
 
 }  // namespace

@@ -61,5 +61,21 @@ TEST(CheckCases, TheDenormalCaseDecaysThroughTheDenormalsAndFlushingChangesIt) {
 
 TEST(CheckCases, TheOddWidthIsPadded) { EXPECT_NE(model_of(find("odd_width_17x33")).cols % 4, 0); }
 
+// The bodies case exercises the contact: the floating balls end up carried by the water (resting
+// in it, not fallen through or still where they started) and the sphere at the end of its path.
+TEST(CheckCases, TheBodiesCaseTouchesTheWater) {
+  const CheckCase& c = find("bodies");
+  sim::CpuSolver solver(model_of(c), sim::Backend::scalar, 1);
+  solver.advance(c.steps);
+  const auto& b = solver.state().bodies;
+  ASSERT_EQ(b.size(), 3u);
+  EXPECT_FLOAT_EQ(b[0].x, 40.0f);
+  for (std::size_t k = 1; k < 3; ++k) {
+    EXPECT_LT(b[k].y, 2.5f) << k;
+    EXPECT_GT(b[k].y, -3.0f) << k;
+  }
+  EXPECT_FALSE(sim::first_blown_up_body(solver.state()));
+}
+
 }  // namespace
 }  // namespace pond::app
