@@ -160,6 +160,53 @@ TEST(Session, BlowUpIsReportedNamingTheNode) {
   }
 }
 
+// Bodies added and removed at run time: the water and the other bodies carry over; a held body
+// follows the drag, and a released floating body falls from where it was let go with the drag's
+// velocity; a refused body changes nothing; reset gives the scene's bodies back.
+TEST(Session, BodiesAreAddedDraggedReleasedAndRemoved) {
+  scene::Scene scene = scene::parse_scene(R"({"grid": {"rows": 33, "cols": 33},
+    "perturbations": [{"step": 0, "row": 16, "col": 16, "radius": 2.0, "amplitude": 1.0}],
+    "bodies": [{"motion": "floating", "radius": 2.0, "mass": 20, "position": [8, 2, 8]}]})", "f");
+  Session session(scene, kScalar);
+  session.advance(20);
+  const WaterState before = session.state();
+  BodySpec ball;
+  ball.radius = 2.5;
+  ball.mass = 10;
+  ball.position = {24.0, 3.0, 24.0};
+  session.add_body(ball);
+  ASSERT_EQ(session.bodies().size(), 2u);
+  EXPECT_EQ(std::memcmp(session.state().uy.data(), before.uy.data(), before.nodes() * sizeof(float)), 0);
+  EXPECT_EQ(std::memcmp(&session.bodies()[0], &before.bodies[0], sizeof(BodyState)), 0);
+  EXPECT_EQ(session.bodies()[1].x, 24.0f);
+
+  BodySpec off_grid = ball;
+  off_grid.position = {40.0, 3.0, 24.0};
+  EXPECT_THROW(session.add_body(off_grid), InputError);
+  BodySpec tiny = ball;
+  tiny.radius = 0.5;
+  EXPECT_THROW(session.add_body(tiny), InputError);
+  EXPECT_EQ(session.bodies().size(), 2u);
+
+  session.drag_body(1, {20.0, 1.0, 20.0}, 10);
+  EXPECT_TRUE(session.held(1));
+  session.advance(10);
+  EXPECT_NEAR(session.bodies()[1].x, 20.0f, 1e-4);
+  EXPECT_NEAR(session.bodies()[1].y, 1.0f, 1e-4);
+  session.release_body(1, {0.5, 0.0, 0.0});
+  EXPECT_FALSE(session.held(1));
+  EXPECT_EQ(session.scene().bodies[1].motion, BodyMotion::floating);
+  session.advance(4);
+  EXPECT_GT(session.bodies()[1].x, 20.5f) << "released with the drag's velocity";
+
+  session.remove_body(0);
+  ASSERT_EQ(session.bodies().size(), 1u);
+  EXPECT_EQ(session.scene().bodies[0].radius, 2.5);
+  session.reset();
+  EXPECT_EQ(session.bodies().size(), 1u);  // the edits stay; the state starts over
+  EXPECT_EQ(session.steps_done(), 0);
+}
+
 TEST(Session, GpuWithoutAFactoryIsRefused) {
   EXPECT_THROW(Session(scene::load_scene(""), SolverChoice{.gpu = true}), InputError);
 }

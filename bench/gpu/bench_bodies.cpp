@@ -1,0 +1,95 @@
+// What 8 bodies cost a step of the 257x257 pond: the same scene with and without them, alternated
+// within every iteration (so a shared machine's load falls on both alike), on the CPU's best
+// backend (all cores) and on the GPU solver (the device pond chooses, validation off). Counter
+// "cost": time with bodies / time without - 1 (the target is at most 0.15).
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <memory>
+
+#include "gpu/context.h"
+#include "gpu/gpu_solver.h"
+#include "gpu/headless.h"
+#include "scene/scene.h"
+#include "sim/cpu_solver.h"
+
+namespace {
+
+using namespace pond;
+
+// The demo's grid: an island, a splash, and (with_bodies) 8 bodies of radius 2 to 4: two dragged
+// across, six floating balls (two of them dropped in), spread over the pond.
+sim::WaterModel pond_257(bool with_bodies) {
+  scene::Scene s;
+  s.grid.rows = s.grid.cols = 257;
+  s.physics.rest_ratio = 0.95;
+  s.constraints.push_back({sim::NodeKind::fixed, 60, 80, 150, 175});
+  s.perturbations.push_back({.step = 0, .row = 128, .col = 90, .radius = 4, .amplitude = 1,
+                             .target = sim::PerturbTarget::velocity, .mode = sim::PerturbMode::add});
+  if (with_bodies) {
+    for (int k = 0; k < 2; ++k) {
+      sim::BodySpec b;
+      b.motion = sim::BodyMotion::kinematic;
+      b.radius = 3.0 + k;
+      b.path = {{0, {20.0, 0.5, 40.0 + 150 * k}}, {4000, {236.0, 0.5, 60.0 + 150 * k}}};
+      s.bodies.push_back(b);
+    }
+    for (int k = 0; k < 6; ++k) {
+      sim::BodySpec b;
+      b.radius = 2.0 + 0.4 * k;
+      b.mass = 20.0 + 5 * k;
+      b.position = {40.0 + 30 * k, k < 2 ? 4.0 : 0.5, 110.0 + 20 * (k % 3)};
+      s.bodies.push_back(b);
+    }
+  }
+  return sim::build_model(s);
+}
+
+const gpu::Context& context() {
+  static const std::unique_ptr<gpu::Context> ctx = [] {
+    const char* device = std::getenv("POND_BENCH_DEVICE");
+    return std::make_unique<gpu::Context>(gpu::headless_options(device ? device : "", false));
+  }();
+  return *ctx;
+}
+
+// Alternates `steps` steps of `plain` and of `bodies` per iteration; counters: each one's ms per
+// step and the bodies' cost.
+void alternate(benchmark::State& state, sim::Solver& plain, sim::Solver& bodies, std::int64_t steps) {
+  plain.advance(steps);
+  bodies.advance(steps);
+  using Clock = std::chrono::steady_clock;
+  double plain_s = 0, bodies_s = 0;
+  for (auto _ : state) {
+    const auto t0 = Clock::now();
+    plain.advance(steps);
+    const auto t1 = Clock::now();
+    bodies.advance(steps);
+    const auto t2 = Clock::now();
+    plain_s += std::chrono::duration<double>(t1 - t0).count();
+    bodies_s += std::chrono::duration<double>(t2 - t1).count();
+  }
+  const double n = static_cast<double>(state.iterations() * steps);
+  state.counters["ms/step"] = 1e3 * plain_s / n;
+  state.counters["ms/step bodies"] = 1e3 * bodies_s / n;
+  state.counters["cost"] = bodies_s / plain_s - 1.0;
+}
+
+void BM_BodiesCostCpu(benchmark::State& state) {
+  sim::CpuSolver plain(pond_257(false), sim::best_backend(), 0), bodies(pond_257(true), sim::best_backend(), 0);
+  alternate(state, plain, bodies, 8);
+  state.SetLabel(plain.engine());
+}
+BENCHMARK(BM_BodiesCostCpu)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
+
+void BM_BodiesCostGpu(benchmark::State& state) {
+  gpu::GpuSolver plain(context(), pond_257(false)), bodies(context(), pond_257(true));
+  alternate(state, plain, bodies, 16);
+  state.SetLabel(context().device_name());
+}
+BENCHMARK(BM_BodiesCostGpu)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
+
+}  // namespace
+
+BENCHMARK_MAIN();
