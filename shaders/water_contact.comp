@@ -35,9 +35,9 @@ shared uint lane_counts[POND_CONTACT_LANES];
 
 const uint kY = 1u, kVy = 4u;  // component arrays of the state (water_gpu.h)
 
-// Footprint node k: its state index, and the half chord over it (0: fixed, or outside the sphere).
-float half_height_at(uint k, int i0, int j0, uint width, BodyState b, float r2, out uint n) {
-  const int i = i0 + int(k / width), j = j0 + int(k % width);
+// Footprint node (i, j): its state index, and the half chord over it (0: fixed, or outside the
+// sphere).
+float half_height_at(int i, int j, BodyState b, float r2, out uint n) {
   n = uint(i) * p.pitch + uint(j);
   const uint kind = (kinds[n >> 2u] >> (8u * (n & 3u))) & 0xffu;
   if (kind == kNodeFixed) return 0.0;
@@ -56,6 +56,25 @@ BodyState scheduled_at(uint entry) {
                    schedule[entry].vz);
 }
 
+// A lane's walk over the footprint: node k = lane, lane + LANES, ... (row-major, `width` columns
+// from (i0, j0)) without a division per node.
+struct Walk {
+  int i, j;    // the current node
+  int di, dj;  // LANES nodes further on: di rows and dj columns (then one row more past the edge)
+};
+Walk walk_start(uint lane, int i0, int j0, uint width) {
+  return Walk(i0 + int(lane / width), j0 + int(lane % width), int(POND_CONTACT_LANES / width),
+              int(POND_CONTACT_LANES % width));
+}
+void walk_next(inout Walk w, int j0, uint width) {
+  w.i += w.di;
+  w.j += w.dj;
+  if (w.j >= j0 + int(width)) {
+    w.j -= int(width);
+    ++w.i;
+  }
+}
+
 void main() {
   const uint lane = gl_LocalInvocationID.x;
   for (uint index = 0u; index < p.count; ++index) {
@@ -72,13 +91,15 @@ void main() {
     if (c.floating != 0u) {
       precise float sum = 0.0;
       uint nodes = 0u;
+      Walk w = walk_start(lane, i0, j0, max(width, 1u));
       for (uint k = lane; k < count; k += POND_CONTACT_LANES) {
         uint n;
-        const float half_height = half_height_at(k, i0, j0, width, b, c.radius2, n);
+        const float half_height = half_height_at(w.i, w.j, b, c.radius2, n);
         if (half_height > 0.0 && contact_inside(state[kY * p.stride + n], b.y, half_height)) {
           sum = sum + state[kVy * p.stride + n];
           ++nodes;
         }
+        walk_next(w, j0, width);
       }
       lane_sums[lane] = sum;
       lane_counts[lane] = nodes;
@@ -92,14 +113,16 @@ void main() {
       if (all_nodes > 0u) common_v = contact_common_velocity(b.vy, total, all_nodes, c.node_over_body);
       b.vy = contact_fall(common_v, c.gravity_dt);
     }
+    Walk w = walk_start(lane, i0, j0, max(width, 1u));
     for (uint k = lane; k < count; k += POND_CONTACT_LANES) {
       uint n;
-      const float half_height = half_height_at(k, i0, j0, width, b, c.radius2, n);
+      const float half_height = half_height_at(w.i, w.j, b, c.radius2, n);
       const float y = state[kY * p.stride + n];
       if (half_height > 0.0 && contact_inside(y, b.y, half_height)) {
         state[kY * p.stride + n] = contact_surface(y, b.y, half_height);
         state[kVy * p.stride + n] = common_v;
       }
+      walk_next(w, j0, width);
     }
     // Every lane read bodies[index] and the lane sums above; the next body sees these nodes.
     memoryBarrierBuffer();
