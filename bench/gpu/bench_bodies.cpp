@@ -1,7 +1,8 @@
 // What 8 bodies cost a step of the 257x257 pond: the same scene with and without them, alternated
 // within every iteration (so a shared machine's load falls on both alike), on the CPU's best
 // backend (all cores) and on the GPU solver (the device pond chooses, validation off). Counter
-// "cost": time with bodies / time without - 1 (the target is at most 0.15).
+// "cost": time with bodies / time without - 1 (the target is at most 0.15). And the CPU's contact
+// pass alone.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -12,6 +13,7 @@
 #include "gpu/gpu_solver.h"
 #include "gpu/headless.h"
 #include "scene/scene.h"
+#include "sim/contact.h"
 #include "sim/cpu_solver.h"
 
 namespace {
@@ -82,6 +84,18 @@ void BM_BodiesCostCpu(benchmark::State& state) {
   state.SetLabel(plain.engine());
 }
 BENCHMARK(BM_BodiesCostCpu)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
+
+// The contact pass alone (8 bodies, all touching the water after 300 steps), one thread: what it
+// adds to each substep of the CPU solver, next to BM_BodiesCostCpu's step time.
+void BM_ContactPassCpu(benchmark::State& state) {
+  const sim::WaterModel model = pond_257(true);
+  sim::CpuSolver solver(model, sim::best_backend(), 0);
+  solver.advance(300);
+  sim::WaterState water = solver.state();
+  std::int64_t step = 300;
+  for (auto _ : state) sim::resolve_contacts(water, model, step++, 0);
+}
+BENCHMARK(BM_ContactPassCpu)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 void BM_BodiesCostGpu(benchmark::State& state) {
   gpu::GpuSolver plain(context(), pond_257(false)), bodies(context(), pond_257(true));
