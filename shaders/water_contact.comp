@@ -1,10 +1,15 @@
 #version 460
 // The bodies' contact after one substep (the algorithm and its order: shared/bodies.h), in one
-// workgroup of POND_CONTACT_LANES invocations that takes the bodies one after the other: all lanes
-// move the body alike, lane l tests the footprint nodes k = l, l + LANES, ... and keeps its own
-// sums, lane 0 adds the lanes' sums in lane order, then every lane moves its nodes inside to the
-// surface with the common velocity. A barrier separates the bodies, so a body sees the nodes the
-// one before it moved. Every float operation is `precise` (the CPU's bits).
+// workgroup that takes the bodies one after the other: all invocations move the body alike; lane l
+// of the POND_CONTACT_LANES lanes tests the footprint nodes k = l, l + LANES, ... and keeps its own
+// sums; every invocation adds the lanes' sums in lane order; then the lanes move their nodes inside
+// to the surface with the common velocity. A barrier separates the bodies, so a body sees the
+// nodes the one before it moved. Every float operation is `precise` (the CPU's bits).
+//
+// The workgroup has local_size_x invocations (a specialization constant dividing the 64 lanes: the
+// device's subgroup size, so that llvmpipe runs it as one SIMD batch without switching between
+// batches at each barrier); invocation t takes lanes t, t + local_size_x, ... The lanes and their
+// order are the same for any size: the same bits.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_spirv_intrinsics : require
 
@@ -17,7 +22,8 @@ spirv_execution_mode(capabilities = [4466], 4461, 32);  // SignedZeroInfNanPrese
 spirv_execution_mode(capabilities = [4464], 4459, 32);  // DenormPreserve, 32-bit floats
 #endif
 
-layout(local_size_x = POND_CONTACT_LANES, local_size_y = 1, local_size_z = 1) in;
+layout(local_size_x = POND_CONTACT_LOCAL_X, local_size_y = 1, local_size_z = 1) in;
+layout(local_size_x_id = POND_SPEC_CONTACT_LOCAL_X) in;
 
 layout(std430, set = 0, binding = POND_CONTACT_BINDING_STATE) coherent restrict buffer State { float state[]; };
 layout(std430, set = 0, binding = POND_CONTACT_BINDING_KINDS) restrict readonly buffer Kinds { uint kinds[]; };
@@ -76,7 +82,7 @@ void walk_next(inout Walk w, int j0, uint width) {
 }
 
 void main() {
-  const uint lane = gl_LocalInvocationID.x;
+  const uint first_lane = gl_LocalInvocationID.x, invocations = gl_WorkGroupSize.x;
   for (uint index = 0u; index < p.count; ++index) {
     const BodyConstants c = BodyConstants(constants[index].radius, constants[index].radius2,
                                           constants[index].node_over_body, constants[index].gravity_dt,
@@ -89,20 +95,22 @@ void main() {
     const uint count = i1 >= i0 ? width * uint(i1 - i0 + 1) : 0u;
     float common_v = b.vy;
     if (c.floating != 0u) {
-      precise float sum = 0.0;
-      uint nodes = 0u;
-      Walk w = walk_start(lane, i0, j0, max(width, 1u));
-      for (uint k = lane; k < count; k += POND_CONTACT_LANES) {
-        uint n;
-        const float half_height = half_height_at(w.i, w.j, b, c.radius2, n);
-        if (half_height > 0.0 && contact_inside(state[kY * p.stride + n], b.y, half_height)) {
-          sum = sum + state[kVy * p.stride + n];
-          ++nodes;
+      for (uint lane = first_lane; lane < POND_CONTACT_LANES; lane += invocations) {
+        precise float sum = 0.0;
+        uint nodes = 0u;
+        Walk w = walk_start(lane, i0, j0, max(width, 1u));
+        for (uint k = lane; k < count; k += POND_CONTACT_LANES) {
+          uint n;
+          const float half_height = half_height_at(w.i, w.j, b, c.radius2, n);
+          if (half_height > 0.0 && contact_inside(state[kY * p.stride + n], b.y, half_height)) {
+            sum = sum + state[kVy * p.stride + n];
+            ++nodes;
+          }
+          walk_next(w, j0, width);
         }
-        walk_next(w, j0, width);
+        lane_sums[lane] = sum;
+        lane_counts[lane] = nodes;
       }
-      lane_sums[lane] = sum;
-      lane_counts[lane] = nodes;
       barrier();  // also orders the shared-memory writes (compute shaders)
       precise float total = 0.0;
       uint all_nodes = 0u;
@@ -113,21 +121,23 @@ void main() {
       if (all_nodes > 0u) common_v = contact_common_velocity(b.vy, total, all_nodes, c.node_over_body);
       b.vy = contact_fall(common_v, c.gravity_dt);
     }
-    Walk w = walk_start(lane, i0, j0, max(width, 1u));
-    for (uint k = lane; k < count; k += POND_CONTACT_LANES) {
-      uint n;
-      const float half_height = half_height_at(w.i, w.j, b, c.radius2, n);
-      const float y = state[kY * p.stride + n];
-      if (half_height > 0.0 && contact_inside(y, b.y, half_height)) {
-        state[kY * p.stride + n] = contact_surface(y, b.y, half_height);
-        state[kVy * p.stride + n] = common_v;
+    for (uint lane = first_lane; lane < POND_CONTACT_LANES; lane += invocations) {
+      Walk w = walk_start(lane, i0, j0, max(width, 1u));
+      for (uint k = lane; k < count; k += POND_CONTACT_LANES) {
+        uint n;
+        const float half_height = half_height_at(w.i, w.j, b, c.radius2, n);
+        const float y = state[kY * p.stride + n];
+        if (half_height > 0.0 && contact_inside(y, b.y, half_height)) {
+          state[kY * p.stride + n] = contact_surface(y, b.y, half_height);
+          state[kVy * p.stride + n] = common_v;
+        }
+        walk_next(w, j0, width);
       }
-      walk_next(w, j0, width);
     }
     // Every lane read bodies[index] and the lane sums above; the next body sees these nodes.
     memoryBarrierBuffer();
     barrier();
-    if (lane == 0u) {
+    if (first_lane == 0u) {
       bodies[index].x = b.x;
       bodies[index].y = b.y;
       bodies[index].z = b.z;

@@ -15,6 +15,10 @@ namespace {
 constexpr std::uint32_t kMaxWorkGroupSizeZ = 64;            // NVIDIA and Intel Arc (AMD: 1024)
 constexpr std::uint32_t kMaxMemoryAllocationCount = 4096;   // the Vulkan minimum
 constexpr std::uint32_t kMaxSamplerAllocationCount = 4000;  // the Vulkan minimum, NVIDIA's value
+// NVIDIA's and Intel's subgroup size (lavapipe: 8). Only the answer changes, so it must not be used
+// by shaders with subgroup operations (pond has none): it steers pond's workgroup sizes, so the
+// paths sized for a desktop GPU run here.
+constexpr std::uint32_t kSubgroupSize = 32;
 
 // POND_DISCRETE_GPU_DENORM_PRESERVE=0|1 (default 1, as most desktop drivers): whether the device
 // advertises shaderDenormPreserveFloat32, so pond's paths for both answers run here. Read on every
@@ -67,6 +71,12 @@ VKAPI_ATTR void VKAPI_CALL get_physical_device_properties2(VkPhysicalDevice phys
   if (auto* controls = find_in_chain<VkPhysicalDeviceFloatControlsProperties>(
           properties->pNext, VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FLOAT_CONTROLS_PROPERTIES))
     controls->shaderDenormPreserveFloat32 = preserve;
+  if (auto* v11 = find_in_chain<VkPhysicalDeviceVulkan11Properties>(
+          properties->pNext, VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_PROPERTIES))
+    v11->subgroupSize = kSubgroupSize;
+  if (auto* subgroup = find_in_chain<VkPhysicalDeviceSubgroupProperties>(
+          properties->pNext, VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES))
+    subgroup->subgroupSize = kSubgroupSize;
 }
 
 VKAPI_ATTR void VKAPI_CALL get_physical_device_features(VkPhysicalDevice physical,

@@ -20,7 +20,9 @@
 
 #include "shared/exact_math.h"
 
-#define POND_CONTACT_LANES 64  // invocations of water_contact.comp: the reduction's lanes
+#define POND_CONTACT_LANES 64  // the reduction's lanes (partial sums), whatever the invocations
+#define POND_CONTACT_LOCAL_X 64  // default invocations of water_contact.comp; the solver sets it (below)
+#define POND_SPEC_CONTACT_LOCAL_X 0  // specialization constant: water_contact.comp's local_size_x
 
 // Bindings of water_contact.comp.
 #define POND_CONTACT_BINDING_STATE 0      // storage buffer: the current state, float[] (water_gpu.h)

@@ -25,13 +25,20 @@ constexpr std::uint32_t kSets = 2;  // one per state buffer
 
 }  // namespace
 
+std::uint32_t contact_invocations(std::uint32_t subgroup_size) {
+  std::uint32_t n = 1;
+  while (n * 2 <= subgroup_size && n * 2 <= POND_CONTACT_LANES) n *= 2;
+  return n;
+}
+
 BodyContact::BodyContact(const Context& ctx, const sim::WaterModel& model, std::size_t pitch, std::size_t stride,
                          const Buffer (&state)[2], const Buffer& kinds, std::int64_t max_substeps,
                          bool denorm_preserve)
     : ctx_(ctx), model_(model), pitch_(pitch), stride_(stride), max_substeps_(max_substeps) {
   const std::vector<vk::DescriptorType> bindings(POND_CONTACT_BINDINGS, vk::DescriptorType::eStorageBuffer);
-  pipe_ = create_compute_pipeline(ctx_, water_contact_spirv(denorm_preserve), bindings, sizeof(ContactPush), {},
-                                  "water_contact");
+  const SpecConstant local_x[] = {{POND_SPEC_CONTACT_LOCAL_X, contact_invocations(ctx_.subgroup_size())}};
+  pipe_ = create_compute_pipeline(ctx_, water_contact_spirv(denorm_preserve), bindings, sizeof(ContactPush), local_x,
+                                  "water_contact (" + std::to_string(local_x[0].value) + " invocations)");
   const std::size_t count = model_.bodies.size();
   bodies_ = create_buffer(ctx_, count * sizeof(BodyState), BU::eStorageBuffer | BU::eTransferSrc | BU::eTransferDst,
                           MemoryUse::device, "bodies");

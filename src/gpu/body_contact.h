@@ -13,6 +13,10 @@
 
 namespace pond::gpu {
 
+// The contact shader's invocations for a device of this subgroup size: the largest power of two
+// not above it that divides the reduction's 64 lanes (any choice gives the same bits).
+std::uint32_t contact_invocations(std::uint32_t subgroup_size);
+
 class BodyContact {
  public:
   // For the bodies of `model` (which must outlive this, as the context and the buffers) on the

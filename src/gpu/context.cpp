@@ -116,8 +116,10 @@ Context::Context(const ContextOptions& options, const WindowSurface& window)
                                                 .maintenance4 = VK_TRUE};
   const vk::PhysicalDeviceFeatures supported = physical_.getFeatures();
   int64_ = options.int64 && supported.shaderInt64 == VK_TRUE;
-  const auto properties = physical_.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceVulkan12Properties>();
+  const auto properties = physical_.getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceVulkan11Properties,
+                                                   vk::PhysicalDeviceVulkan12Properties>();
   const auto& v12 = properties.get<vk::PhysicalDeviceVulkan12Properties>();
+  subgroup_size_ = std::max(1u, properties.get<vk::PhysicalDeviceVulkan11Properties>().subgroupSize);
   denorm_preserve_ = v12.shaderDenormPreserveFloat32 == VK_TRUE;
   signed_zero_preserve_ = v12.shaderSignedZeroInfNanPreserveFloat32 == VK_TRUE;
   driver_id_ = v12.driverID;

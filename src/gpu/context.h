@@ -51,6 +51,9 @@ class Context {
   // shaderInt64 is enabled (where the device has it and the options allow): the step shader's
   // 64-bit-store variant.
   bool has_int64() const { return int64_; }
+  // The device's subgroup size (VkPhysicalDeviceVulkan11Properties): the invocations it runs in
+  // lock step (llvmpipe: 8 per AVX2 register; NVIDIA 32; AMD 32 or 64).
+  std::uint32_t subgroup_size() const { return subgroup_size_; }
   // The device's float controls for 32-bit floats (VkPhysicalDeviceVulkan12Properties): whether a
   // shader may declare DenormPreserve and SignedZeroInfNanPreserve, which the exact path needs for
   // bit-identity to be guaranteed rather than observed (gpu/float_policy.h).
@@ -82,6 +85,7 @@ class Context {
   std::unique_ptr<ValidationLog> log_;  // first: the messenger's user data outlives the messenger
   bool debug_utils_ = false;
   bool int64_ = false;
+  std::uint32_t subgroup_size_ = 1;
   bool denorm_preserve_ = false, signed_zero_preserve_ = false;
   vk::DriverId driver_id_{};
   std::string driver_;

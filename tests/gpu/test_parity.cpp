@@ -204,6 +204,17 @@ TEST_F(GpuTest, NoNodeIsInsideABodyOnTheGpu) {
   EXPECT_GT(touching, 100);
 }
 
+// The contact shader's workgroup follows the device's subgroup size (llvmpipe 8; the test layer
+// presents 32, so the GPU suite under it runs that path with the same bits), within the 64 lanes.
+TEST(ContactInvocations, FollowTheSubgroupWithinTheLanes) {
+  EXPECT_EQ(gpu::contact_invocations(8), 8u);
+  EXPECT_EQ(gpu::contact_invocations(32), 32u);
+  EXPECT_EQ(gpu::contact_invocations(64), 64u);
+  EXPECT_EQ(gpu::contact_invocations(128), 64u);
+  EXPECT_EQ(gpu::contact_invocations(48), 32u);
+  EXPECT_EQ(gpu::contact_invocations(1), 1u);
+}
+
 // The GPU state's rows are padded to a multiple of 4 nodes, so the step shader's one algorithm (4
 // columns per invocation) runs every grid, odd widths too.
 TEST_F(GpuTest, RowsArePaddedToQuadsOnEveryWidth) {

@@ -67,6 +67,10 @@ TEST(DiscreteGpuLayer, PresentsADiscreteGpuWithDesktopLimits) {
   EXPECT_EQ(props.limits.maxComputeWorkGroupSize[2], 64u);
   EXPECT_LE(props.limits.maxMemoryAllocationCount, 4096u);
   EXPECT_LE(props.limits.maxSamplerAllocationCount, 4000u);
+  const auto chain = gpu.physical().getProperties2<vk::PhysicalDeviceProperties2, vk::PhysicalDeviceVulkan11Properties,
+                                                   vk::PhysicalDeviceSubgroupProperties>();
+  EXPECT_EQ(chain.get<vk::PhysicalDeviceVulkan11Properties>().subgroupSize, 32u);
+  EXPECT_EQ(chain.get<vk::PhysicalDeviceSubgroupProperties>().subgroupSize, 32u);
   EXPECT_TRUE(gpu.take_messages().empty());
 }
 
