@@ -53,6 +53,7 @@ struct mat4 {
 #define POND_WATER_FLAT_GROUND 6   // WaterFrame::ground.rgb lit by the sun (the pool floor's light)
 #define POND_WATER_FLAT_HORIZON 7  // the sky's colour at the horizon
 #define POND_WATER_FLAT_ABSORB 8   // the water's absorption per world unit (rgb)
+#define POND_WATER_FLAT_POOL 9     // xy: the pool's far corner (cols - 1, rows - 1), grid units
 // The w lanes of the EYE and SUN varyings by name (each macro is the lane itself: no extra varying,
 // no extra instruction):
 #define POND_FLAT_INV_SPACING(eye) ((eye).w)  // 1 / the grid spacing (grid units per world unit)
@@ -76,6 +77,11 @@ struct WaterFrame {
   vec4 pool;       // x: POND_FRAME_FLOOR_DEPTH; y: POND_FRAME_LAND_HEIGHT; zw: 0
   vec4 wire;       // rgb: LOD wireframe colour; a: its opacity
   uvec4 grid;      // x, y, z, w: POND_FRAME_ROWS, _COLS, _STATE_STRIDE, _STATE_PITCH
+  // The camera's view rays for the sky (sky.vert): the world direction through normalized device
+  // coordinates (x, y) is ray_forward + x ray_right + y ray_down (xyz; w: 0), linear in x and y.
+  vec4 ray_forward;
+  vec4 ray_right;
+  vec4 ray_down;
 };
 
 // The packed lanes of a WaterFrame by name. Macros, so that one spelling serves both languages

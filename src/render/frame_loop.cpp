@@ -256,6 +256,10 @@ struct FrameLoop::Impl {
     POND_FRAME_COLS(f) = static_cast<std::uint32_t>(model().cols);
     POND_FRAME_STATE_STRIDE(f) = stride;
     POND_FRAME_STATE_PITCH(f) = pitch;
+    const view::ViewRays rays = view::view_rays(camera);
+    f.ray_forward = v4(rays.forward);
+    f.ray_right = v4(rays.right);
+    f.ray_down = v4(rays.down);
     std::memcpy(s.uniforms.mapped, &f, sizeof f);
     s.uniforms.flush(ctx);
   }
@@ -339,6 +343,10 @@ struct FrameLoop::Impl {
       cmd.drawIndexed(index_count, 1, 0, 0, 0);
     }
     for (PassDrawable* d : drawables) d->draw(info);
+    // Last, so only where nothing is; the drawables bound sets of their own.
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *s.set, nullptr);
+    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.sky);
+    cmd.draw(3, 1, 0, 0);
     cmd.endRendering();
 
     // The image to its final layout; and the next frame's substeps must not overwrite the state

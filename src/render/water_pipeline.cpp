@@ -13,6 +13,7 @@ struct PipelineSpec {
   std::span<const std::uint32_t> vert, frag;
   bool land_vertices = false;  // LandVertex attributes (else vertex pulling, no attributes)
   bool lines = false;          // polygon mode line, depth bias towards the camera, alpha blending
+  bool depth_write = true;
   const char* name;
 };
 
@@ -41,7 +42,7 @@ vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayou
       .depthBiasSlopeFactor = s.lines ? -1.5f : 0.0f,
       .lineWidth = 1.0f};
   const vk::PipelineDepthStencilStateCreateInfo depth_state{
-      .depthTestEnable = VK_TRUE, .depthWriteEnable = s.lines ? VK_FALSE : VK_TRUE,
+      .depthTestEnable = VK_TRUE, .depthWriteEnable = s.lines || !s.depth_write ? VK_FALSE : VK_TRUE,
       .depthCompareOp = vk::CompareOp::eLessOrEqual};
   using CC = vk::ColorComponentFlagBits;
   const vk::PipelineColorBlendAttachmentState blend{
@@ -76,6 +77,8 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
                   {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true, .name = "land"});
   p.water = create(ctx, p.layout, color_format, depth_format,
                    {.vert = water_vert_spirv(), .frag = water_frag_spirv(), .name = "water"});
+  p.sky = create(ctx, p.layout, color_format, depth_format,
+                 {.vert = sky_vert_spirv(), .frag = sky_frag_spirv(), .depth_write = false, .name = "sky"});
   if (ctx.physical().getFeatures().fillModeNonSolid)
     p.wire = create(ctx, p.layout, color_format, depth_format,
                     {.vert = water_vert_spirv(), .frag = water_wire_frag_spirv(), .lines = true, .name = "water LOD wireframe"});

@@ -4,7 +4,9 @@
 //  - land:  shore, islands, pool rim (LandVertex buffer);
 //  - water: the surface pulled from the state and normal buffers by node index;
 //  - wire:  the same triangles as lines over the water (the LOD overlay); null when the device
-//           lacks fillModeNonSolid.
+//           lacks fillModeNonSolid;
+//  - sky:   one screen-covering triangle at the far depth, drawn last (depth test, no write), so it
+//           shades only what nothing else covered.
 // No culling: large splashes may fold the surface over.
 #include "gpu/context.h"
 
@@ -16,6 +18,7 @@ struct WaterPipelines {
   vk::raii::Pipeline land = nullptr;
   vk::raii::Pipeline water = nullptr;
   vk::raii::Pipeline wire = nullptr;
+  vk::raii::Pipeline sky = nullptr;
 };
 
 WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format);
