@@ -8,6 +8,9 @@
 //    through the water (depth tint, Beer-Lambert absorption);
 //  - a sharp specular highlight of the sun.
 // The floor is analytic (not a second pass reading a depth buffer): one opaque pass, no sorting.
+// POND_WATER_REFLECTIONS (water_reflect.frag): what the surface reflects is the planar reflection
+// (render/reflection_pass.h: the land and the tree mirrored about y = 0, at half resolution)
+// where it holds something, shifted by the normal's tilt, and the sky where it is transparent.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/water_render.h"
@@ -24,6 +27,10 @@ layout(location = POND_WATER_FLAT_GROUND) flat in vec3 in_ground;  // lit by the
 layout(location = POND_WATER_FLAT_HORIZON) flat in vec3 in_horizon;
 layout(location = POND_WATER_FLAT_ABSORB) flat in vec3 in_absorb;    // per world unit
 layout(location = POND_WATER_FLAT_POOL) flat in vec2 in_pool;        // the far corner, grid units
+layout(location = POND_WATER_FLAT_SCREEN) flat in vec3 in_screen;    // WaterFrame::screen.xyz
+#ifdef POND_WATER_REFLECTIONS
+layout(set = 0, binding = POND_RENDER_BINDING_REFLECTION) uniform sampler2D reflection;
+#endif
 layout(location = 0) out vec4 out_color;
 
 // The pool floor at a world point: sand with soft ripples a few cells across, so refraction shows.
@@ -85,7 +92,14 @@ void main() {
   const vec3 seen_through = bottom * transmit + body * (vec3(1.0) - transmit);
 
   const vec3 r = reflect(-v, n);
-  const vec3 reflected = sky_color(in_sky, in_horizon, r, l);
+  vec3 reflected = sky_color(in_sky, in_horizon, r, l);
+#ifdef POND_WATER_REFLECTIONS
+  // The mirror image at this pixel, shifted by the surface's tilt (a flat surface: no shift); its
+  // alpha is 0 where nothing above the water is mirrored there, and the sky shows instead.
+  const vec2 uv = gl_FragCoord.xy * in_screen.xy + n.xz * in_screen.z;
+  const vec4 mirrored = textureLod(reflection, uv, 0.0);
+  reflected = mix(reflected, mirrored.rgb, mirrored.a);
+#endif
   // The sun's glint, (r.l)^2048 by squaring: a narrow lobe without pow's exp/log.
   float spec = max(dot(r, l), 0.0);
   for (int k = 0; k < 11; ++k) spec *= spec;

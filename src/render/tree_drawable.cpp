@@ -11,6 +11,7 @@
 #include "gpu/buffer.h"
 #include "tree/tree_lod.h"
 #include "tree/tree_mesh.h"
+#include "render/reflection_pass.h"
 #include "render/tree_pipeline.h"
 #include "sim/wind_ripples.h"
 #include "shared/tree_render.h"
@@ -71,7 +72,7 @@ struct TreeDrawable::Impl {
 
   Impl(const gpu::Context& c, const FrameLoop& loop, const tree::TreeSpec& t, const tree::WindSpec& w)
       : ctx(c), spec(t), wind_spec(w), user(sim::scene_user_wind(w)), noise(tree::make_noise_table(w.seed)),
-        pipes(create_tree_pipelines(c, loop.color_format(), FrameLoop::kDepthFormat)) {
+        pipes(create_tree_pipelines(c, loop.color_format(), FrameLoop::kDepthFormat, kReflectionFormat)) {
     const vk::DescriptorPoolSize sizes[] = {
         {.type = vk::DescriptorType::eUniformBuffer, .descriptorCount = FrameLoop::kFramesInFlight},
         {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 2 * FrameLoop::kFramesInFlight}};
@@ -189,29 +190,31 @@ struct TreeDrawable::Impl {
   // Draws each instance's parts of the mesh, `parts(instance, add)` calling add(Part) for each,
   // with `vertex_offset`.
   template <class PartsOf>
-  void draw_instances(const vk::raii::CommandBuffer& cmd, const vk::raii::Pipeline& pipe, PartsOf parts,
-                      std::int32_t vertex_offset = 0) const {
+  void draw_instances(const vk::raii::CommandBuffer& cmd, const vk::raii::Pipeline& pipe, float pixel_scale,
+                      PartsOf parts, std::int32_t vertex_offset = 0) const {
     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipe);
     for (const Instance& inst : instances)
       parts(inst, [&](const Part& part) {
         if (part.range.count == 0) return;
         const sh::TreeInstance push{.base = inst.base, .wind = inst.frame,
-                                    .pruning = {part.leaf_scale, part.twig_scale, mesh.longest_leaf, 0.0f}};
+                                    .pruning = {part.leaf_scale, part.twig_scale, mesh.longest_leaf, pixel_scale}};
         cmd.pushConstants<sh::TreeInstance>(*pipes.layout, vk::ShaderStageFlagBits::eVertex, 0, push);
         cmd.drawIndexed(part.range.count, 1, part.range.first, vertex_offset, 0);
       });
   }
 
-  void draw(const FrameInfo& info) const {
+  // `pixel_scale`: 0 for the direct pipelines, the reflection's pixels per frame pixel for the
+  // mirrored ones (TreeInstance::pruning.w).
+  void draw(const FrameInfo& info, const TreeMaterialPipelines& pipelines, float pixel_scale) const {
     const vk::raii::CommandBuffer& cmd = info.cmd;
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *slots[info.slot].set, nullptr);
     cmd.bindVertexBuffers(0, *vertices.buffer, vk::DeviceSize{0});
     cmd.bindIndexBuffer(*indices.buffer, 0, vk::IndexType::eUint32);
     if (spec.draw == tree::TreeDraw::tubes) {
-      draw_instances(cmd, pipes.tubes, [&](const Instance& i, auto add) { add({mesh.tubes.at_least(i.thinnest_tube)}); });
+      draw_instances(cmd, pipelines.tubes, pixel_scale, [&](const Instance& i, auto add) { add({mesh.tubes.at_least(i.thinnest_tube)}); });
       // Each level below the tubes as its (pruned) twig lines: a prefix of the level's shuffled order.
       draw_instances(
-          cmd, pipes.twigs,
+          cmd, pipelines.twigs, pixel_scale,
           [&](const Instance& i, auto add) {
             for (int level = 1; level < i.thinnest_tube; ++level) {
               const tree::Pruning& p = i.twigs[static_cast<std::size_t>(level)];
@@ -220,10 +223,10 @@ struct TreeDrawable::Impl {
           },
           mesh.twig_vertices);
     } else {
-      draw_instances(cmd, pipes.lines, [&](const Instance&, auto add) { add({mesh.lines.all}); });
+      draw_instances(cmd, pipelines.lines, pixel_scale, [&](const Instance&, auto add) { add({mesh.lines.all}); });
     }
     if (spec.leaves)
-      draw_instances(cmd, pipes.leaves, [&](const Instance& i, auto add) {
+      draw_instances(cmd, pipelines.leaves, pixel_scale, [&](const Instance& i, auto add) {
         if (i.diamond_leaves)
           add({mesh.leaves});
         else  // a prefix of the shuffled triangles, each grown so the sample covers the crown's area
@@ -242,7 +245,8 @@ TreeDrawable::~TreeDrawable() {
 }
 
 void TreeDrawable::prepare(const FrameInfo& frame) { impl_->prepare(frame); }
-void TreeDrawable::draw(const FrameInfo& frame) { impl_->draw(frame); }
+void TreeDrawable::draw(const FrameInfo& frame) { impl_->draw(frame, impl_->pipes.direct, 0.0f); }
+void TreeDrawable::draw_reflected(const FrameInfo& frame) { impl_->draw(frame, impl_->pipes.mirrored, frame.pixel_scale); }
 
 void TreeDrawable::set_wind_direction(double radians) {
   impl_->user.direction = static_cast<float>(radians);

@@ -3,6 +3,7 @@
 #include <span>
 
 #include "render/graphics_pipeline.h"
+#include "render/reflection_pass.h"
 #include "render/render_layout.h"
 #include "render/render_shaders.h"
 
@@ -67,9 +68,11 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
       {.binding = POND_RENDER_BINDING_STATE, .descriptorType = vk::DescriptorType::eStorageBuffer,
        .descriptorCount = 1, .stageFlags = SS::eVertex},
       {.binding = POND_RENDER_BINDING_NORMALS, .descriptorType = vk::DescriptorType::eStorageBuffer,
-       .descriptorCount = 1, .stageFlags = SS::eVertex}};
+       .descriptorCount = 1, .stageFlags = SS::eVertex},
+      {.binding = POND_RENDER_BINDING_REFLECTION, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
+       .descriptorCount = 1, .stageFlags = SS::eFragment}};
   p.set_layout = vk::raii::DescriptorSetLayout(
-      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = 3, .pBindings = bindings});
+      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = 4, .pBindings = bindings});
   const vk::DescriptorSetLayout set_layout = *p.set_layout;
   p.layout = vk::raii::PipelineLayout(ctx.device(),
                                       vk::PipelineLayoutCreateInfo{.setLayoutCount = 1, .pSetLayouts = &set_layout});
@@ -77,6 +80,11 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
                   {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true, .name = "land"});
   p.water = create(ctx, p.layout, color_format, depth_format,
                    {.vert = water_vert_spirv(), .frag = water_frag_spirv(), .name = "water"});
+  p.water_reflect = create(ctx, p.layout, color_format, depth_format,
+                           {.vert = water_vert_spirv(), .frag = water_reflect_frag_spirv(), .name = "water, reflecting"});
+  p.land_mirror = create(ctx, p.layout, kReflectionFormat, depth_format,
+                         {.vert = land_mirror_vert_spirv(), .frag = land_mirror_frag_spirv(), .land_vertices = true,
+                          .name = "land, mirrored"});
   p.sky = create(ctx, p.layout, color_format, depth_format,
                  {.vert = sky_vert_spirv(), .frag = sky_frag_spirv(), .depth_write = false, .name = "sky"});
   if (ctx.physical().getFeatures().fillModeNonSolid)

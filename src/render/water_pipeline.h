@@ -5,6 +5,9 @@
 //  - water: the surface pulled from the state and normal buffers by node index;
 //  - wire:  the same triangles as lines over the water (the LOD overlay); null when the device
 //           lacks fillModeNonSolid;
+//  - water_reflect: the water sampling the planar reflection (render/reflection_pass.h);
+//  - land_mirror: the land mirrored about y = 0 for the reflection's target (kReflectionFormat),
+//           dropping what lies below the water;
 //  - sky:   one screen-covering triangle at the far depth, drawn last (depth test, no write), so it
 //           shades only what nothing else covered.
 // No culling: large splashes may fold the surface over.
@@ -17,6 +20,8 @@ struct WaterPipelines {
   vk::raii::PipelineLayout layout = nullptr;
   vk::raii::Pipeline land = nullptr;
   vk::raii::Pipeline water = nullptr;
+  vk::raii::Pipeline water_reflect = nullptr;
+  vk::raii::Pipeline land_mirror = nullptr;
   vk::raii::Pipeline wire = nullptr;
   vk::raii::Pipeline sky = nullptr;
 };

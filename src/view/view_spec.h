@@ -14,6 +14,11 @@ struct CameraSpec {
   double fovy_degrees = 45.0;
 };
 
+// The picture's optional effects (the scene's "view" keys of the same names; FrameView::effects).
+struct Effects {
+  bool reflections = true;  // planar reflection of the land and the trees in the water
+};
+
 // "view": what a rendered frame advances and how the pond around the water is shaped.
 struct ViewSpec {
   std::int64_t steps_per_frame = 1;  // simulation steps per rendered frame

@@ -320,7 +320,7 @@ bool DemoApp::draw_frame(const std::string* screenshot_path) {
     std::int64_t steps = settings_.paused ? 0 : settings_.steps_per_frame;
     if (settings_.step_once) steps = std::max<std::int64_t>(steps, 1), settings_.step_once = false;
     const render::FrameView view{.camera = current_camera(), .lod_tolerance_px = settings_.lod_tolerance_px,
-                              .wireframe = settings_.wireframe, .steps = steps};
+                              .wireframe = settings_.wireframe, .steps = steps, .effects = {}};
     loop_->simulate(view, swapchain_.extent());
   }
   const Clock::time_point t0 = Clock::now();
