@@ -3,8 +3,6 @@
 // texture (a brightness factor), the tone curve and the target's encoding, which are not linear
 // and so stay per pixel. The texture is made of triangle waves, not hashed value noise: llvmpipe
 // runs every instruction for every pixel, and the land covers much of the screen.
-// POND_LAND_MIRROR (the planar reflection's land): fragments below the water's rest plane are
-// dropped, so nothing under the water is reflected.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/water_render.h"
@@ -31,8 +29,5 @@ vec3 land_texture(vec3 p, float top) {
 }
 
 void main() {
-#ifdef POND_LAND_MIRROR
-  if (in_world.y < 0.0) discard;
-#endif
   out_color = finish_color(in_color * land_texture(in_world, in_top));
 }

@@ -6,7 +6,8 @@
 // kLandWetAtRest), so the light is linear across each triangle, and interpolation reproduces it.
 // land.frag adds only a procedural texture (a brightness factor) on top.
 // POND_LAND_MIRROR (land_mirror.vert): the land mirrored about the water's rest plane y = 0, for
-// the planar reflection (render/reflection_pass.h); land_mirror.frag drops what lies below y = 0.
+// the planar reflection (render/reflection_pass.h), drawn from the mesh's part above the water
+// (view::above_water), so nothing below the water is reflected and no fragment is discarded.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/water_render.h"
@@ -16,7 +17,7 @@ layout(std140, set = 0, binding = POND_RENDER_BINDING_FRAME) uniform Frame { Wat
 layout(location = 0) in vec4 in_position;
 layout(location = 1) in vec4 in_normal;
 layout(location = 0) out vec3 out_color;  // linear, before finish_color
-layout(location = 1) out vec3 out_world;  // for the texture (and the mirror's clip)
+layout(location = 1) out vec3 out_world;  // for the texture
 layout(location = 2) out float out_top;   // 1 on flat tops (grass), 0 on walls
 
 void main() {

@@ -72,7 +72,7 @@ void record_reflection_pass(const vk::raii::CommandBuffer& cmd, const Reflection
 
 vk::raii::Sampler create_reflection_sampler(const gpu::Context& ctx) {
   using AM = vk::SamplerAddressMode;
-  return vk::raii::Sampler(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eLinear, .minFilter = vk::Filter::eLinear,
+  return vk::raii::Sampler(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eNearest, .minFilter = vk::Filter::eNearest,
                                                                .mipmapMode = vk::SamplerMipmapMode::eNearest,
                                                                .addressModeU = AM::eClampToEdge, .addressModeV = AM::eClampToEdge,
                                                                .addressModeW = AM::eClampToEdge, .maxLod = 0.0f});

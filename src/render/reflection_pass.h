@@ -1,15 +1,16 @@
 #pragma once
 // The planar reflection of everything above the water (frame_loop.h draws it first each frame when
 // FrameView::effects.reflections is on): the land and the pass drawables (the tree) mirrored about
-// the water's rest plane y = 0, everything below that plane dropped, into a colour target at half
+// the water's rest plane y = 0, only what lies above that plane (view::above_water), into a colour target at half
 // the frame's resolution per axis, cleared to transparent. water_reflect.frag samples it at the
 // pixel's screen position shifted by the surface normal and falls back to the sky where it is
 // transparent (alpha 0: nothing above the water there), so nothing below the water and nothing
 // in front of it is reflected.
 //
-// The target is sRGB: the shaders write linear colour (no encoding, POND_SPEC_ENCODE_SRGB off)
-// and the water's sampler reads linear colour back; R8G8B8A8_SRGB as a sampled colour attachment
-// is a format feature every Vulkan device has.
+// The target holds linear colour in R8G8B8A8_UNORM (its pipelines are GraphicsPipelineDesc::
+// linear_output: no encoding), which the water mixes as it is: no sRGB encoding on store or
+// decoding on sampling, which llvmpipe pays per pixel (docs/perf.md). A sampled colour attachment
+// in that format is a feature every Vulkan device has.
 #include <functional>
 
 #include "gpu/context.h"
@@ -17,7 +18,7 @@
 
 namespace pond::render {
 
-inline constexpr vk::Format kReflectionFormat = vk::Format::eR8G8B8A8Srgb;
+inline constexpr vk::Format kReflectionFormat = vk::Format::eR8G8B8A8Unorm;
 inline constexpr vk::Format kReflectionDepthFormat = vk::Format::eD32Sfloat;  // FrameLoop::kDepthFormat
 inline constexpr std::uint32_t kReflectionDivisor = 2;  // per axis: a quarter of the pixels
 

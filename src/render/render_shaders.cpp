@@ -3,7 +3,6 @@
 namespace pond::render {
 namespace {
 #include "land_frag.spv.h"
-#include "land_mirror_frag.spv.h"
 #include "land_mirror_vert.spv.h"
 #include "land_vert.spv.h"
 #include "water_reflect_frag.spv.h"
@@ -21,7 +20,6 @@ std::span<const std::uint32_t> land_vert_spirv() { return pond_spirv_land_vert; 
 std::span<const std::uint32_t> land_frag_spirv() { return pond_spirv_land_frag; }
 std::span<const std::uint32_t> water_reflect_frag_spirv() { return pond_spirv_water_reflect_frag; }
 std::span<const std::uint32_t> land_mirror_vert_spirv() { return pond_spirv_land_mirror_vert; }
-std::span<const std::uint32_t> land_mirror_frag_spirv() { return pond_spirv_land_mirror_frag; }
 std::span<const std::uint32_t> sky_vert_spirv() { return pond_spirv_sky_vert; }
 std::span<const std::uint32_t> sky_frag_spirv() { return pond_spirv_sky_frag; }
 

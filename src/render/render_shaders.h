@@ -13,7 +13,6 @@ std::span<const std::uint32_t> land_vert_spirv();
 std::span<const std::uint32_t> land_frag_spirv();
 std::span<const std::uint32_t> water_reflect_frag_spirv();
 std::span<const std::uint32_t> land_mirror_vert_spirv();
-std::span<const std::uint32_t> land_mirror_frag_spirv();
 std::span<const std::uint32_t> sky_vert_spirv();
 std::span<const std::uint32_t> sky_frag_spirv();
 

@@ -64,7 +64,7 @@ vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayou
                                   {variant.mirrored ? std::span<const std::uint32_t>(pond_spirv_tree_mirror_vert)
                                                     : tree_vert_spirv(),
                                    variant.frag, vertex_input, assembly, raster,
-                                   depth_state, blend, variant.name});
+                                   depth_state, blend, variant.name, variant.mirrored});
 }
 
 }  // namespace

@@ -15,6 +15,7 @@ struct PipelineSpec {
   bool land_vertices = false;  // LandVertex attributes (else vertex pulling, no attributes)
   bool lines = false;          // polygon mode line, depth bias towards the camera, alpha blending
   bool depth_write = true;
+  bool linear_output = false;  // GraphicsPipelineDesc::linear_output
   const char* name;
 };
 
@@ -54,7 +55,7 @@ vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayou
       .alphaBlendOp = vk::BlendOp::eAdd,
       .colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
   return create_graphics_pipeline(ctx, layout, color, depth,
-                                  {s.vert, s.frag, vertex_input, assembly, raster, depth_state, blend, s.name});
+                                  {s.vert, s.frag, vertex_input, assembly, raster, depth_state, blend, s.name, s.linear_output});
 }
 
 }  // namespace
@@ -83,8 +84,8 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
   p.water_reflect = create(ctx, p.layout, color_format, depth_format,
                            {.vert = water_vert_spirv(), .frag = water_reflect_frag_spirv(), .name = "water, reflecting"});
   p.land_mirror = create(ctx, p.layout, kReflectionFormat, depth_format,
-                         {.vert = land_mirror_vert_spirv(), .frag = land_mirror_frag_spirv(), .land_vertices = true,
-                          .name = "land, mirrored"});
+                         {.vert = land_mirror_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true,
+                          .linear_output = true, .name = "land, mirrored"});
   p.sky = create(ctx, p.layout, color_format, depth_format,
                  {.vert = sky_vert_spirv(), .frag = sky_frag_spirv(), .depth_write = false, .name = "sky"});
   if (ctx.physical().getFeatures().fillModeNonSolid)

@@ -6,8 +6,7 @@
 //  - wire:  the same triangles as lines over the water (the LOD overlay); null when the device
 //           lacks fillModeNonSolid;
 //  - water_reflect: the water sampling the planar reflection (render/reflection_pass.h);
-//  - land_mirror: the land mirrored about y = 0 for the reflection's target (kReflectionFormat),
-//           dropping what lies below the water;
+//  - land_mirror: the land above the water mirrored about y = 0, for the reflection's target;
 //  - sky:   one screen-covering triangle at the far depth, drawn last (depth test, no write), so it
 //           shades only what nothing else covered.
 // No culling: large splashes may fold the surface over.

@@ -19,10 +19,11 @@ void quad(std::vector<LandVertex>& out, P a, P b, P c, P d, P n) {
 }
 
 // A wall quad from the top edge a-b at land height down to the floor, cut at the heights where
-// the wetness ramp bends (shared/water_render.h kLandWetAtRest), so per-vertex lighting is exact.
+// the wetness ramp bends (shared/water_render.h kLandWetAtRest), so per-vertex lighting is exact,
+// and at the water's rest plane y = 0, so above_water() can keep the part the reflection mirrors.
 void wall(std::vector<LandVertex>& out, P a, P b, double top, double bottom, P n) {
   std::vector<double> cuts = {top};
-  for (const double y : {shared::water_render::kLandWetAtRest * top, (shared::water_render::kLandWetAtRest - 1.0) * top})
+  for (const double y : {shared::water_render::kLandWetAtRest * top, 0.0, (shared::water_render::kLandWetAtRest - 1.0) * top})
     if (y < top && y > bottom) cuts.push_back(y);
   cuts.push_back(bottom);
   for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
@@ -78,6 +79,14 @@ std::vector<LandVertex> build_land_mesh(const sim::WaterModel& model, double flo
   quad(out, {-m, top, d}, {w + m, top, d}, {w + m, top, d + m}, {-m, top, d + m}, {0, 1, 0});
   quad(out, {-m, top, 0}, {0, top, 0}, {0, top, d}, {-m, top, d}, {0, 1, 0});
   quad(out, {w, top, 0}, {w + m, top, 0}, {w + m, top, d}, {w, top, d}, {0, 1, 0});
+  return out;
+}
+
+std::vector<LandVertex> above_water(const std::vector<LandVertex>& mesh) {
+  std::vector<LandVertex> out;
+  for (std::size_t t = 0; t + 2 < mesh.size(); t += 3)
+    if (mesh[t].position.y >= 0.0f && mesh[t + 1].position.y >= 0.0f && mesh[t + 2].position.y >= 0.0f)
+      out.insert(out.end(), mesh.begin() + static_cast<std::ptrdiff_t>(t), mesh.begin() + static_cast<std::ptrdiff_t>(t + 3));
   return out;
 }
 

@@ -18,4 +18,9 @@ using LandVertex = shared::water_render::LandVertex;  // static_asserts: render/
 
 std::vector<LandVertex> build_land_mesh(const sim::WaterModel& model, double floor_depth, double land_height);
 
+// The triangles of a build_land_mesh() mesh that lie at or above the water's rest plane y = 0 (its
+// walls are cut there): what the planar reflection mirrors, so its fragment shader need not
+// discard (render/reflection_pass.h).
+std::vector<LandVertex> above_water(const std::vector<LandVertex>& mesh);
+
 }  // namespace pond::view
