@@ -25,6 +25,7 @@ struct ViewSpec {
   double lod_tolerance_px = 1.0;     // LOD screen-space error bound; 0 = the full mesh
   double floor_depth = 3.0;          // the pool floor lies this far below the rest surface
   double land_height = 1.0;          // shore, islands and pool rim rise this far above it
+  Effects effects;                   // "reflections": true | false
 };
 
 // "lighting": the sun and the colours the water shader mixes (linear RGB in [0, 1]).
