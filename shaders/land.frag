@@ -15,12 +15,11 @@ layout(location = 0) out vec4 out_color;
 
 float tri(float x) { return abs(fract(x) - 0.5) * 4.0 - 1.0; }
 
-// Grass: drier and lusher patches a few units across broken by finer tufts; walls: stone courses
-// (rows of blocks offset every other course) with a little grain. A factor on the lit colour.
+// Grass: drier and lusher patches a few units across; walls: stone courses (rows of blocks offset
+// every other course) with a little grain. A factor on the lit colour.
 vec3 land_texture(vec3 p, float top) {
   const float patches = tri(p.x * 0.11 + 0.35 * tri(p.z * 0.07)) * tri(p.z * 0.13 + 0.3 * tri(p.x * 0.09));
-  const float tufts = tri(p.x * 1.7 + 0.6 * tri(p.z * 1.3)) * tri(p.z * 1.9 + 0.5 * tri(p.x * 1.1));
-  const vec3 grass = vec3(1.0) + patches * vec3(0.35, 0.22, 0.05) + 0.14 * tufts;
+  const vec3 grass = vec3(1.0) + patches * vec3(0.35, 0.22, 0.05);
   const float course = p.y * 2.5;
   const float along = (p.x + p.z) * 1.25 + 0.5 * step(0.5, fract(course * 0.5));
   const float joint = max(step(0.92, fract(course)), step(0.95, fract(along)));

@@ -6,8 +6,8 @@
 // kLandWetAtRest), so the light is linear across each triangle, and interpolation reproduces it.
 // land.frag adds only a procedural texture (a brightness factor) on top.
 // POND_LAND_MIRROR (land_mirror.vert): the land mirrored about the water's rest plane y = 0, for
-// the planar reflection (render/reflection_pass.h), drawn from the mesh's part above the water
-// (view::above_water), so nothing below the water is reflected and no fragment is discarded.
+// the planar reflection (render/reflection_pass.h), drawn from the mesh's walls above the water
+// (view::mirrored_walls), so nothing below the water is reflected and no fragment is discarded.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/water_render.h"

@@ -85,8 +85,8 @@ struct FrameLoop::Impl {
   lod::LodBuilder lod;
   WaterPipelines pipes;
   vk::raii::Sampler reflection_sampler = nullptr;
-  gpu::Buffer land, land_above_water, full_indices;  // land_above_water: the reflection's
-  std::uint32_t land_vertices = 0, land_above_water_vertices = 0, full_index_count = 0;
+  gpu::Buffer land, mirrored_land, full_indices;  // mirrored_land: the reflection's (view::mirrored_walls)
+  std::uint32_t land_vertices = 0, mirrored_land_vertices = 0, full_index_count = 0;
   vk::raii::CommandPool pool = nullptr;
   vk::raii::DescriptorPool descriptor_pool = nullptr;
   std::vector<Slot> slots;
@@ -147,11 +147,11 @@ struct FrameLoop::Impl {
     land = gpu::create_buffer(ctx, mesh.size() * sizeof(LandVertex), BU::eVertexBuffer | BU::eTransferDst, gpu::MemoryUse::device,
                          "land vertices");
     gpu::upload(ctx, land, std::as_bytes(std::span(mesh)));
-    const std::vector<LandVertex> above = view::above_water(mesh);
-    land_above_water_vertices = static_cast<std::uint32_t>(above.size());
-    land_above_water = gpu::create_buffer(ctx, std::max<std::size_t>(1, above.size()) * sizeof(LandVertex),
-                                          BU::eVertexBuffer | BU::eTransferDst, gpu::MemoryUse::device, "land above the water");
-    if (!above.empty()) gpu::upload(ctx, land_above_water, std::as_bytes(std::span(above)));
+    const std::vector<LandVertex> above = view::mirrored_walls(mesh);
+    mirrored_land_vertices = static_cast<std::uint32_t>(above.size());
+    mirrored_land = gpu::create_buffer(ctx, std::max<std::size_t>(1, above.size()) * sizeof(LandVertex),
+                                          BU::eVertexBuffer | BU::eTransferDst, gpu::MemoryUse::device, "land walls above the water");
+    if (!above.empty()) gpu::upload(ctx, mirrored_land, std::as_bytes(std::span(above)));
     const std::vector<std::uint32_t> full = full_mesh_indices(model().rows, model().cols);
     full_index_count = static_cast<std::uint32_t>(full.size());
     full_indices = gpu::create_buffer(ctx, std::max<std::size_t>(1, full.size()) * 4, BU::eIndexBuffer | BU::eTransferDst,
@@ -342,8 +342,8 @@ struct FrameLoop::Impl {
       record_reflection_pass(cmd, s.reflection, [&] {
         cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *s.set, nullptr);
         cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.land_mirror);
-        cmd.bindVertexBuffers(0, *land_above_water.buffer, vk::DeviceSize{0});
-        cmd.draw(land_above_water_vertices, 1, 0, 0);
+        cmd.bindVertexBuffers(0, *mirrored_land.buffer, vk::DeviceSize{0});
+        cmd.draw(mirrored_land_vertices, 1, 0, 0);
         for (PassDrawable* d : drawables) d->draw_reflected(mirrored);
       });
     }

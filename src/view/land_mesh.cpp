@@ -20,7 +20,7 @@ void quad(std::vector<LandVertex>& out, P a, P b, P c, P d, P n) {
 
 // A wall quad from the top edge a-b at land height down to the floor, cut at the heights where
 // the wetness ramp bends (shared/water_render.h kLandWetAtRest), so per-vertex lighting is exact,
-// and at the water's rest plane y = 0, so above_water() can keep the part the reflection mirrors.
+// and at the water's rest plane y = 0, so mirrored_walls() can keep the part the reflection mirrors.
 void wall(std::vector<LandVertex>& out, P a, P b, double top, double bottom, P n) {
   std::vector<double> cuts = {top};
   for (const double y : {shared::water_render::kLandWetAtRest * top, 0.0, (shared::water_render::kLandWetAtRest - 1.0) * top})
@@ -82,10 +82,11 @@ std::vector<LandVertex> build_land_mesh(const sim::WaterModel& model, double flo
   return out;
 }
 
-std::vector<LandVertex> above_water(const std::vector<LandVertex>& mesh) {
+std::vector<LandVertex> mirrored_walls(const std::vector<LandVertex>& mesh) {
   std::vector<LandVertex> out;
   for (std::size_t t = 0; t + 2 < mesh.size(); t += 3)
-    if (mesh[t].position.y >= 0.0f && mesh[t + 1].position.y >= 0.0f && mesh[t + 2].position.y >= 0.0f)
+    if (mesh[t].normal.y == 0.0f && mesh[t].position.y >= 0.0f && mesh[t + 1].position.y >= 0.0f &&
+        mesh[t + 2].position.y >= 0.0f)
       out.insert(out.end(), mesh.begin() + static_cast<std::ptrdiff_t>(t), mesh.begin() + static_cast<std::ptrdiff_t>(t + 3));
   return out;
 }

@@ -18,9 +18,11 @@ using LandVertex = shared::water_render::LandVertex;  // static_asserts: render/
 
 std::vector<LandVertex> build_land_mesh(const sim::WaterModel& model, double floor_depth, double land_height);
 
-// The triangles of a build_land_mesh() mesh that lie at or above the water's rest plane y = 0 (its
-// walls are cut there): what the planar reflection mirrors, so its fragment shader need not
-// discard (render/reflection_pass.h).
-std::vector<LandVertex> above_water(const std::vector<LandVertex>& mesh);
+// What of a build_land_mesh() mesh the planar reflection mirrors (render/reflection_pass.h): the
+// walls' triangles at or above the water's rest plane y = 0 (the walls are cut there, so nothing
+// below the water is kept and no fragment needs discarding). The flat tops are left out: a ray
+// reflected up from the water meets a wall before it could reach a top, and then only from below,
+// so no top is ever seen in the water, and they would cover most of the reflection's target.
+std::vector<LandVertex> mirrored_walls(const std::vector<LandVertex>& mesh);
 
 }  // namespace pond::view

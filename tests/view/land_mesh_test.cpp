@@ -68,21 +68,27 @@ TEST(LandMesh, WallsReachFromTheLandDownToTheFloorWithFlatFaces) {
   EXPECT_FLOAT_EQ(bottom, -2.0f);
 }
 
-// The reflection's land: every wall is cut at y = 0, so the part above the water is whole triangles.
-TEST(LandMesh, AboveWaterKeepsExactlyTheTrianglesAboveTheRestPlane) {
+// The reflection's land: every wall is cut at y = 0, so the part above the water is whole
+// triangles; the reflection keeps those of the walls, no top.
+TEST(LandMesh, MirroredWallsAreTheWallsAboveTheRestPlane) {
   const sim::WaterModel model = island_model();
   const std::vector<LandVertex> mesh = build_land_mesh(model, 2.0, 1.5);
-  std::size_t above = 0, below = 0;
+  std::size_t walls_above = 0, below = 0;
   for (std::size_t t = 0; t < mesh.size(); t += 3) {
     const float y[3] = {mesh[t].position.y, mesh[t + 1].position.y, mesh[t + 2].position.y};
     const float lo = *std::min_element(y, y + 3), hi = *std::max_element(y, y + 3);
     EXPECT_FALSE(lo < 0.0f && hi > 0.0f) << "triangle " << t / 3 << " crosses the water's rest plane";
-    (lo >= 0.0f ? above : below) += 1;
+    if (lo < 0.0f) ++below;
+    else if (mesh[t].normal.y == 0.0f) ++walls_above;
   }
-  const std::vector<LandVertex> kept = above_water(mesh);
-  EXPECT_EQ(kept.size(), 3 * above);
+  const std::vector<LandVertex> kept = mirrored_walls(mesh);
+  EXPECT_EQ(kept.size(), 3 * walls_above);
+  EXPECT_GT(walls_above, 0u);
   EXPECT_GT(below, 0u);
-  for (const LandVertex& v : kept) EXPECT_GE(v.position.y, 0.0f);
+  for (const LandVertex& v : kept) {
+    EXPECT_GE(v.position.y, 0.0f);
+    EXPECT_EQ(v.normal.y, 0.0f);
+  }
 }
 
 }  // namespace
