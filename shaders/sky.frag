@@ -6,10 +6,11 @@
 #include "shared/water_render.h"
 #include "shared/water_shading.h"
 
-layout(location = 0) noperspective in vec3 in_ray;
-layout(location = 1) flat in vec3 in_sun;
-layout(location = 2) flat in vec3 in_sky;
-layout(location = 3) flat in vec3 in_horizon;
+layout(location = 0) in vec3 in_world;
+layout(location = 1) flat in vec3 in_eye;
+layout(location = 2) flat in vec3 in_sun;
+layout(location = 3) flat in vec3 in_sky;
+layout(location = 4) flat in vec3 in_horizon;
 layout(location = 0) out vec4 out_color;
 
-void main() { out_color = finish_color(sky_color(in_sky, in_horizon, normalize(in_ray), in_sun)); }
+void main() { out_color = finish_color(sky_color(in_sky, in_horizon, normalize(in_world - in_eye), in_sun)); }

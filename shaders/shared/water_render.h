@@ -81,11 +81,10 @@ struct WaterFrame {
   vec4 pool;       // x: POND_FRAME_FLOOR_DEPTH; y: POND_FRAME_LAND_HEIGHT; zw: 0
   vec4 wire;       // rgb: LOD wireframe colour; a: its opacity
   uvec4 grid;      // x, y, z, w: POND_FRAME_ROWS, _COLS, _STATE_STRIDE, _STATE_PITCH
-  // The camera's view rays for the sky (sky.vert): the world direction through normalized device
-  // coordinates (x, y) is ray_forward + x ray_right + y ray_down (xyz; w: 0), linear in x and y.
-  vec4 ray_forward;
-  vec4 ray_right;
-  vec4 ray_down;
+  // The sky's box (sky.vert): walls standing on the land's outer edge and a lid, from sky_lo.xyz
+  // to sky_hi.xyz (world; w: 0).
+  vec4 sky_lo;
+  vec4 sky_hi;
   vec4 screen;  // xy: 1 / the target's size (pixels); z: the reflection's shift per unit of the
                 // normal's xz tilt (in screen widths and heights); w: 0
 };

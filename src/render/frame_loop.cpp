@@ -270,10 +270,9 @@ struct FrameLoop::Impl {
     POND_FRAME_COLS(f) = static_cast<std::uint32_t>(model().cols);
     POND_FRAME_STATE_STRIDE(f) = stride;
     POND_FRAME_STATE_PITCH(f) = pitch;
-    const view::ViewRays rays = view::view_rays(camera);
-    f.ray_forward = v4(rays.forward);
-    f.ray_right = v4(rays.right);
-    f.ray_down = v4(rays.down);
+    const view::SkyBox sky = view::sky_box(model(), v.land_height);
+    f.sky_lo = v4(sky.lo);
+    f.sky_hi = v4(sky.hi);
     f.screen = {1.0f / static_cast<float>(camera.width), 1.0f / static_cast<float>(camera.height), kReflectionShift, 0.0f};
     std::memcpy(s.uniforms.mapped, &f, sizeof f);
     s.uniforms.flush(ctx);
@@ -378,7 +377,7 @@ struct FrameLoop::Impl {
     // Last, so only where nothing is; the drawables bound sets of their own.
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *s.set, nullptr);
     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.sky);
-    cmd.draw(3, 1, 0, 0);
+    cmd.draw(30, 1, 0, 0);  // sky.vert's box
     cmd.endRendering();
 
     // The image to its final layout; and the next frame's substeps must not overwrite the state

@@ -7,8 +7,8 @@
 //           lacks fillModeNonSolid;
 //  - water_reflect: the water sampling the planar reflection (render/reflection_pass.h);
 //  - land_mirror: the land above the water mirrored about y = 0, for the reflection's target;
-//  - sky:   one screen-covering triangle at the far depth, drawn last (depth test, no write), so it
-//           shades only what nothing else covered.
+//  - sky:   a box standing on the land's outer edge (view::sky_box), drawn last (depth test, no
+//           write), so it shades only what nothing else covered.
 // No culling: large splashes may fold the surface over.
 #include "gpu/context.h"
 

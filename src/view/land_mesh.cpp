@@ -69,7 +69,7 @@ std::vector<LandVertex> build_land_mesh(const sim::WaterModel& model, double flo
     }
   }
 
-  // The rim: four inward walls and the land around, out to 4x the pond's size.
+  // The rim: four inward walls and the land around, out to 4x the pond's size (sky_box: the same).
   const double w = cc * h, d = cr * h, m = 4.0 * std::max(w, d);
   wall(out, {0, top, 0}, {w, top, 0}, top, bottom, {0, 0, 1});
   wall(out, {0, top, d}, {w, top, d}, top, bottom, {0, 0, -1});
@@ -80,6 +80,11 @@ std::vector<LandVertex> build_land_mesh(const sim::WaterModel& model, double flo
   quad(out, {-m, top, 0}, {0, top, 0}, {0, top, d}, {-m, top, d}, {0, 1, 0});
   quad(out, {w, top, 0}, {w + m, top, 0}, {w + m, top, d}, {w, top, d}, {0, 1, 0});
   return out;
+}
+
+SkyBox sky_box(const sim::WaterModel& model, double land_height) {
+  const double h = model.spacing, w = (model.cols - 1) * h, d = (model.rows - 1) * h, m = 4.0 * std::max(w, d);
+  return {{-m, land_height, -m}, {w + m, land_height + 1.5 * std::max(w, d), d + m}};
 }
 
 std::vector<LandVertex> mirrored_walls(const std::vector<LandVertex>& mesh) {

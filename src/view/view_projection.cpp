@@ -36,18 +36,6 @@ std::array<float, 16> view_projection(const lod::Camera& camera, const sim::Wate
   return out;
 }
 
-ViewRays view_rays(const lod::Camera& camera) {
-  const glm::dvec3 eye = vec(camera.eye), target = vec(camera.target);
-  const glm::dvec3 forward = glm::normalize(target - eye);
-  const glm::dvec3 up = std::abs(forward.y) > 0.999 ? glm::dvec3(0, 0, -1) : glm::dvec3(0, 1, 0);  // as above
-  const glm::dvec3 right = glm::normalize(glm::cross(forward, up));
-  const glm::dvec3 down = glm::cross(forward, right);
-  const double ty = std::tan(glm::radians(camera.fovy_degrees) * 0.5);
-  const double tx = ty * static_cast<double>(camera.width) / camera.height;
-  auto a = [](const glm::dvec3& v) { return std::array<double, 3>{v.x, v.y, v.z}; };
-  return {a(forward), a(right * tx), a(down * ty)};
-}
-
 lod::Camera scene_camera(const std::optional<CameraSpec>& camera, const sim::WaterModel& model, int width, int height) {
   lod::Camera c;
   c.width = width;

@@ -15,13 +15,6 @@ namespace pond::view {
 // camera's vertical field of view. near/far are chosen to hold the pond and its surroundings.
 std::array<float, 16> view_projection(const lod::Camera& camera, const sim::WaterModel& model);
 
-// The camera's view rays as the sky shader takes them: the world direction through normalized
-// device coordinates (x, y) (Vulkan: y down) is forward + x right + y down, unnormalized.
-struct ViewRays {
-  std::array<double, 3> forward, right, down;
-};
-ViewRays view_rays(const lod::Camera& camera);
-
 // The scene's camera ("camera") at width x height, or, without one, a three-quarter view of the whole pond
 // from its near (+z) side, slightly to the left, looking at its centre.
 lod::Camera scene_camera(const std::optional<CameraSpec>& camera, const sim::WaterModel& model, int width, int height);

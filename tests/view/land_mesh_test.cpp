@@ -91,5 +91,23 @@ TEST(LandMesh, MirroredWallsAreTheWallsAboveTheRestPlane) {
   }
 }
 
+// The sky's box stands on the land's outer edge: the sky starts exactly where the land ends.
+TEST(LandMesh, SkyBoxStandsOnTheLandsOuterEdge) {
+  const sim::WaterModel model = island_model();
+  const std::vector<LandVertex> mesh = build_land_mesh(model, 2.0, 1.5);
+  float x0 = 1e9f, x1 = -1e9f, z0 = 1e9f, z1 = -1e9f;
+  for (const LandVertex& v : mesh) {
+    x0 = std::min(x0, v.position.x), x1 = std::max(x1, v.position.x);
+    z0 = std::min(z0, v.position.z), z1 = std::max(z1, v.position.z);
+  }
+  const SkyBox box = sky_box(model, 1.5);
+  EXPECT_FLOAT_EQ(static_cast<float>(box.lo[0]), x0);
+  EXPECT_FLOAT_EQ(static_cast<float>(box.hi[0]), x1);
+  EXPECT_FLOAT_EQ(static_cast<float>(box.lo[2]), z0);
+  EXPECT_FLOAT_EQ(static_cast<float>(box.hi[2]), z1);
+  EXPECT_EQ(box.lo[1], 1.5);
+  EXPECT_GT(box.hi[1], 1.5 + 10.0);
+}
+
 }  // namespace
 }  // namespace pond::view
