@@ -1,12 +1,32 @@
 #version 460
-// The land's light comes from land.vert (per vertex, exact on its flat faces); here only the tone
-// curve and the target's encoding, which are not linear and so stay per pixel.
+// The land's light comes from land.vert (per vertex, exact on its flat faces); here a procedural
+// texture (a brightness factor), the tone curve and the target's encoding, which are not linear
+// and so stay per pixel. The texture is made of triangle waves, not hashed value noise: llvmpipe
+// runs every instruction for every pixel, and the land covers much of the screen.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/water_render.h"
 #include "shared/water_shading.h"
 
 layout(location = 0) in vec3 in_color;
+layout(location = 1) in vec3 in_world;
+layout(location = 2) in float in_top;
 layout(location = 0) out vec4 out_color;
 
-void main() { out_color = finish_color(in_color); }
+float tri(float x) { return abs(fract(x) - 0.5) * 4.0 - 1.0; }
+
+// Grass: drier and lusher patches a few units across; walls: stone courses (rows of blocks offset
+// every other course) with a little grain. A factor on the lit colour.
+vec3 land_texture(vec3 p, float top) {
+  const float patches = tri(p.x * 0.11 + 0.35 * tri(p.z * 0.07)) * tri(p.z * 0.13 + 0.3 * tri(p.x * 0.09));
+  const vec3 grass = vec3(1.0) + patches * vec3(0.35, 0.22, 0.05);
+  const float course = p.y * 2.5;
+  const float along = (p.x + p.z) * 1.25 + 0.5 * step(0.5, fract(course * 0.5));
+  const float joint = max(step(0.92, fract(course)), step(0.95, fract(along)));
+  const float stone = -0.3 * joint + 0.05 * tri(along * 0.37 + course * 0.61);
+  return mix(vec3(1.0 + stone), grass, top);
+}
+
+void main() {
+  out_color = finish_color(in_color * land_texture(in_world, in_top));
+}

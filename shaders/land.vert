@@ -4,7 +4,10 @@
 // where the walls go down towards the (wet) floor. Per vertex gives the per-pixel result: every
 // face is flat and the wetness is linear between the heights the mesh is cut at (see
 // kLandWetAtRest), so the light is linear across each triangle, and interpolation reproduces it.
-// So llvmpipe shades the land, a large part of the screen, with a one-line fragment shader.
+// land.frag adds only a procedural texture (a brightness factor) on top.
+// POND_LAND_MIRROR (land_mirror.vert): the land mirrored about the water's rest plane y = 0, for
+// the planar reflection (render/reflection_pass.h), drawn from the mesh's walls above the water
+// (view::mirrored_walls), so nothing below the water is reflected and no fragment is discarded.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/water_render.h"
@@ -14,6 +17,8 @@ layout(std140, set = 0, binding = POND_RENDER_BINDING_FRAME) uniform Frame { Wat
 layout(location = 0) in vec4 in_position;
 layout(location = 1) in vec4 in_normal;
 layout(location = 0) out vec3 out_color;  // linear, before finish_color
+layout(location = 1) out vec3 out_world;  // for the texture
+layout(location = 2) out float out_top;   // 1 on flat tops (grass), 0 on walls
 
 void main() {
   const vec3 n = normalize(in_normal.xyz);
@@ -26,5 +31,11 @@ void main() {
   albedo *= 1.0 - 0.45 * wet * (1.0 - top);
   const vec3 ambient = f.sky.rgb * (0.25 + 0.15 * n.y);
   out_color = albedo * (ambient + 0.85 * diffuse * vec3(1.0, 0.96, 0.9));
+  out_world = in_position.xyz;
+  out_top = top;
+#ifdef POND_LAND_MIRROR
+  gl_Position = f.view_proj * vec4(in_position.x, -in_position.y, in_position.z, 1.0);
+#else
   gl_Position = f.view_proj * vec4(in_position.xyz, 1.0);
+#endif
 }

@@ -6,6 +6,9 @@
 // instance's placement and the view-projection. Tube rings and leaf corners carry their skeleton
 // vertex's data, so they move with it by its offset. Twig lines (the level of detail's stand-in for
 // sub-pixel tubes, tree/tree_lod.h) also pass on how much of a pixel their tube would cover.
+// POND_TREE_MIRROR (tree_mirror.vert): the tree mirrored about the water's rest plane y = 0 for the
+// planar reflection (render/reflection_pass.h), whose target has inst.pruning.w of the frame's
+// pixels per unit length (the twig lines' widths and window positions are scaled by it).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_spirv_intrinsics : require
 
@@ -53,11 +56,19 @@ void main() {
   out_world = inst.base.xyz + (p + offset) * inst.base.w;
   out_normal = in_normal.xyz;
   out_material = in_info.yz;
+#ifdef POND_TREE_MIRROR
+  gl_Position = f.view_proj * vec4(out_world.x, -out_world.y, out_world.z, 1.0);
+  const float pixel_scale = inst.pruning.w;
+#else
   gl_Position = f.view_proj * vec4(out_world, 1.0);
+  const float pixel_scale = 1.0;
+#endif
   // How wide a twig line's tube would be on screen (clip w is the view depth).
   // (Pruned twig lines are drawn wider: inst.pruning.y.)
-  out_width_px = in_info.y == kTreeMaterialTwig ? in_offset.w * inst.pruning.y * inst.base.w * f.lod.x / gl_Position.w : 1.0;
-  out_axis = (gl_Position.xy / gl_Position.w * 0.5 + 0.5) * f.lod.yz;
+  out_width_px = in_info.y == kTreeMaterialTwig
+                     ? in_offset.w * inst.pruning.y * inst.base.w * f.lod.x * pixel_scale / gl_Position.w
+                     : 1.0;
+  out_axis = (gl_Position.xy / gl_Position.w * 0.5 + 0.5) * f.lod.yz * pixel_scale;
   out_eye = f.eye.xyz;
   out_sun = f.sun.xyz;
   out_sky = f.sky.rgb;

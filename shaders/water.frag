@@ -3,10 +3,14 @@
 //  - a Fresnel (Schlick, f0 = 0.02) mix between what is seen through the water and the sky reflected
 //    in it, so it is clear looking down and a mirror at grazing angles;
 //  - the refracted view ray continued to the pool floor (flat, view.floor_depth below the rest
-//    surface): the floor's pattern wobbles with the waves, and the colour tends to the deep water
-//    colour with the path length through the water (depth tint, Beer-Lambert absorption);
+//    surface) or, where it leaves the pool's box first, to the rim's walls (tiled): the pattern
+//    wobbles with the waves, and the colour tends to the deep water colour with the path length
+//    through the water (depth tint, Beer-Lambert absorption);
 //  - a sharp specular highlight of the sun.
 // The floor is analytic (not a second pass reading a depth buffer): one opaque pass, no sorting.
+// POND_WATER_REFLECTIONS (water_reflect.frag): what the surface reflects is the planar reflection
+// (render/reflection_pass.h: the land and the tree mirrored about y = 0, at half resolution)
+// where it holds something, shifted by the normal's tilt, and the sky where it is transparent.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/water_render.h"
@@ -22,6 +26,11 @@ layout(location = POND_WATER_FLAT_WATER) flat in vec3 in_water;
 layout(location = POND_WATER_FLAT_GROUND) flat in vec3 in_ground;  // lit by the sun
 layout(location = POND_WATER_FLAT_HORIZON) flat in vec3 in_horizon;
 layout(location = POND_WATER_FLAT_ABSORB) flat in vec3 in_absorb;    // per world unit
+layout(location = POND_WATER_FLAT_POOL) flat in vec2 in_pool;        // the far corner, grid units
+layout(location = POND_WATER_FLAT_SCREEN) flat in vec3 in_screen;    // WaterFrame::screen.xyz
+#ifdef POND_WATER_REFLECTIONS
+layout(set = 0, binding = POND_RENDER_BINDING_REFLECTION) uniform sampler2D reflection;
+#endif
 layout(location = 0) out vec4 out_color;
 
 // The pool floor at a world point: sand with soft ripples a few cells across, so refraction shows.
@@ -31,6 +40,13 @@ vec3 floor_color(vec2 xz) {
   const vec2 p = xz * POND_FLAT_INV_SPACING(in_eye);  // world -> grid units
   const float ripple = tri(p.x * 0.21 + 0.27 * tri(p.y * 0.07)) * tri(p.y * 0.17 + 0.21 * tri(p.x * 0.06));
   return in_ground * (0.85 + 0.15 * ripple);
+}
+
+// The rim's wall under water at a world point: tiles a grid unit square with dark grout lines.
+vec3 wall_color(vec3 p) {
+  const vec2 q = vec2(p.x + p.z, p.y) * POND_FLAT_INV_SPACING(in_eye);
+  const float grout = max(step(0.9, fract(q.x)), step(0.9, fract(q.y)));
+  return in_ground * (0.75 - 0.3 * grout);
 }
 
 // exp(-x) for x >= 0, without exp: llvmpipe evaluates exp per lane and channel in software
@@ -60,14 +76,30 @@ void main() {
   // Seen through the water: the refracted ray to the floor (air -> water, 1 / 1.33).
   const vec3 t = refract(-v, n, 1.0 / 1.33);
   const float depth_here = in_world.y + POND_FLAT_FLOOR_DEPTH(in_sun);  // water column under it
-  const float path = max(depth_here, 0.0) / max(-t.y, 0.08);
-  const vec3 floor_hit = in_world + t * path;
+  float path = max(depth_here, 0.0) / max(-t.y, 0.08);
+  // Where the ray leaves the pool's box [0, cols - 1] x [0, rows - 1] (grid units) before the floor,
+  // it meets a rim wall.
+  const vec2 start = in_world.xz * POND_FLAT_INV_SPACING(in_eye), dir = t.xz * POND_FLAT_INV_SPACING(in_eye);
+  const vec2 room = mix(start, in_pool - start, greaterThan(dir, vec2(0.0)));  // to the wall ahead
+  const vec2 exits = max(room, vec2(0.0)) / max(abs(dir), vec2(1e-6));
+  const float exit_path = min(exits.x, exits.y);
+  const bool wall = exit_path < path;
+  path = min(path, exit_path);
+  const vec3 hit = in_world + t * path;
   const vec3 transmit = exp_neg(in_absorb * path);
   const vec3 body = in_water * (0.35 + 0.65 * diffuse);  // scattered light: diffuse-lit water colour
-  const vec3 seen_through = floor_color(floor_hit.xz) * transmit + body * (vec3(1.0) - transmit);
+  const vec3 bottom = wall ? wall_color(hit) : floor_color(hit.xz);
+  const vec3 seen_through = bottom * transmit + body * (vec3(1.0) - transmit);
 
   const vec3 r = reflect(-v, n);
-  const vec3 reflected = sky_color(in_sky, in_horizon, r, l);
+  vec3 reflected = sky_color(in_sky, in_horizon, r, l);
+#ifdef POND_WATER_REFLECTIONS
+  // The mirror image at this pixel, shifted by the surface's tilt (a flat surface: no shift); its
+  // alpha is 0 where nothing above the water is mirrored there, and the sky shows instead.
+  const vec2 uv = gl_FragCoord.xy * in_screen.xy + n.xz * in_screen.z;
+  const vec4 mirrored = textureLod(reflection, uv, 0.0);
+  reflected = mix(reflected, mirrored.rgb, mirrored.a);
+#endif
   // The sun's glint, (r.l)^2048 by squaring: a narrow lobe without pow's exp/log.
   float spec = max(dot(r, l), 0.0);
   for (int k = 0; k < 11; ++k) spec *= spec;

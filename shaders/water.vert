@@ -22,6 +22,8 @@ layout(location = POND_WATER_FLAT_WATER) flat out vec3 out_water;
 layout(location = POND_WATER_FLAT_GROUND) flat out vec3 out_ground;
 layout(location = POND_WATER_FLAT_HORIZON) flat out vec3 out_horizon;
 layout(location = POND_WATER_FLAT_ABSORB) flat out vec3 out_absorb;
+layout(location = POND_WATER_FLAT_POOL) flat out vec2 out_pool;
+layout(location = POND_WATER_FLAT_SCREEN) flat out vec3 out_screen;
 
 void main() {
   const uint n = uint(gl_VertexIndex);  // compact: row * cols + col
@@ -43,4 +45,6 @@ void main() {
   out_ground = f.ground.rgb * (0.45 + 0.55 * max(f.sun.y, 0.0));
   out_horizon = sky_horizon(f.sky.rgb);
   out_absorb = (vec3(1.0) - f.water.rgb) * (0.45 / POND_FRAME_GRID_SPACING(f));
+  out_pool = vec2(float(cols - 1u), float(POND_FRAME_ROWS(f) - 1u));
+  out_screen = f.screen.xyz;
 }

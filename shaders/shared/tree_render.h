@@ -83,7 +83,8 @@ struct TreeInstance {
   TreeWindFrame wind;  // this instance's wind, q, time (with its phase) and bend mode
   vec4 pruning;        // the level of detail's pruning of this draw (tree/tree_lod.h): x: leaves'
                        // size scale (about their centres); y: twig lines' width scale; z: the
-                       // mesh's longest leaf (tree units: unpacks the centres); w: 0
+                       // mesh's longest leaf (tree units: unpacks the centres); w: the mirrored
+                       // draw's target pixels per frame pixel (tree_mirror.vert), else 0
 };
 
 #ifdef __cplusplus

@@ -8,6 +8,8 @@
 //      each `stride` floats, node (i, j) at i * pitch + j, grid units, displacement from the rest
 //      position (j, 0, i)
 //   2: storage buffer, the normals: one vec4 per node, compact (node i * cols + j)
+//   3: combined image sampler, the planar reflection (render/reflection_pass.h), per frame slot;
+//      read only by water_reflect.frag
 // The water is drawn with vertex pulling: the index buffer holds node indices n = row * cols + col
 // (the LOD builder's output as is), the vertex shader reads the normals at gl_VertexIndex and the
 // state at its row * pitch + col.
@@ -38,6 +40,7 @@ struct mat4 {
 #define POND_RENDER_BINDING_FRAME 0
 #define POND_RENDER_BINDING_STATE 1
 #define POND_RENDER_BINDING_NORMALS 2
+#define POND_RENDER_BINDING_REFLECTION 3
 
 // The fragment shaders take the frame's constants as flat varyings from their vertex shader, not
 // from the uniform block: llvmpipe (Mesa 22.3) reads a uniform (or push constant) in a fragment
@@ -53,6 +56,8 @@ struct mat4 {
 #define POND_WATER_FLAT_GROUND 6   // WaterFrame::ground.rgb lit by the sun (the pool floor's light)
 #define POND_WATER_FLAT_HORIZON 7  // the sky's colour at the horizon
 #define POND_WATER_FLAT_ABSORB 8   // the water's absorption per world unit (rgb)
+#define POND_WATER_FLAT_POOL 9     // xy: the pool's far corner (cols - 1, rows - 1), grid units
+#define POND_WATER_FLAT_SCREEN 10  // WaterFrame::screen
 // The w lanes of the EYE and SUN varyings by name (each macro is the lane itself: no extra varying,
 // no extra instruction):
 #define POND_FLAT_INV_SPACING(eye) ((eye).w)  // 1 / the grid spacing (grid units per world unit)
@@ -76,6 +81,12 @@ struct WaterFrame {
   vec4 pool;       // x: POND_FRAME_FLOOR_DEPTH; y: POND_FRAME_LAND_HEIGHT; zw: 0
   vec4 wire;       // rgb: LOD wireframe colour; a: its opacity
   uvec4 grid;      // x, y, z, w: POND_FRAME_ROWS, _COLS, _STATE_STRIDE, _STATE_PITCH
+  // The sky's box (sky.vert): walls standing on the land's outer edge and a lid, from sky_lo.xyz
+  // to sky_hi.xyz (world; w: 0).
+  vec4 sky_lo;
+  vec4 sky_hi;
+  vec4 screen;  // xy: 1 / the target's size (pixels); z: the reflection's shift per unit of the
+                // normal's xz tilt (in screen widths and heights); w: 0
 };
 
 // The packed lanes of a WaterFrame by name. Macros, so that one spelling serves both languages

@@ -4,13 +4,20 @@
 // The sky's colour at the horizon, from the zenith's.
 vec3 sky_horizon(vec3 zenith) { return mix(zenith, vec3(1.0), 0.55); }
 
-// The sky in direction `d`: lighter towards the horizon, with a glow around the sun.
+// The sun's disc: 1 inside its angular radius (about 1.2 degrees, larger than the real 0.27 so a
+// pixel or two wide in the water's reflection), a soft edge, 0 outside; no exp/log per pixel.
+float sun_disc(vec3 d, vec3 sun) { return smoothstep(0.99972, 0.99980, dot(d, sun)); }
+
+// The sky in direction `d`: lighter towards the horizon, a glow around the sun and its disc; below
+// the horizon (the far ground's haze, seen past the land's end) it darkens a little.
 vec3 sky_color(vec3 zenith, vec3 horizon, vec3 d, vec3 sun) {
   const float up = clamp(d.y, 0.0, 1.0);
-  const vec3 base = mix(horizon, zenith, sqrt(up));
-  float glow = max(dot(d, sun), 0.0);  // ^256 by squaring (no exp/log per pixel)
+  vec3 base = mix(horizon, zenith, sqrt(up));
+  base *= 1.0 - 0.25 * clamp(-d.y * 4.0, 0.0, 1.0);
+  const float s = max(dot(d, sun), 0.0);
+  float glow = s;  // ^256 by squaring (no exp/log per pixel)
   for (int k = 0; k < 8; ++k) glow *= glow;
-  return base + glow * vec3(1.0, 0.9, 0.7) * 0.3;
+  return base + glow * vec3(1.0, 0.9, 0.7) * 0.3 + sun_disc(d, sun) * vec3(6.0, 5.6, 4.8);
 }
 
 // True when the target is UNORM (POND_SPEC_ENCODE_SRGB, shared/water_render.h): the shader

@@ -29,6 +29,33 @@ double median(std::vector<double> v) {
 }
 
 
+// Each effect the scene has on, timed against the same frame without it: frozen frames (no steps)
+// alternating off and on, so both halves see the same state and the same load; whole frames with
+// the GPU's work (FrameView::wait). After the picture is written: these frames overwrite it.
+void print_effect_costs(render::FrameLoop& loop, const render::RenderTarget& target, render::FrameView view,
+                        int frames) {
+  if (frames < 2) return;
+  const int pairs = std::min(frames, 40);
+  view.steps = 0;
+  struct Effect {
+    const char* name;
+    bool view::Effects::*flag;
+  };
+  for (const Effect e : {Effect{"reflections", &view::Effects::reflections}}) {
+    if (!(view.effects.*e.flag)) continue;
+    std::vector<double> on, off;
+    for (int k = 0; k < pairs; ++k)
+      for (bool with : {false, true}) {
+        render::FrameView v = view;
+        v.effects.*e.flag = with;
+        const render::FrameStats s = loop.frame(target.frame_target(), v);
+        (with ? on : off).push_back(s.simulate_ms + s.lod_ms + s.draw_ms);
+      }
+    std::printf("effect %s: %.3f ms per frame (with %.3f, without %.3f; medians of %d alternated frozen frames)\n",
+                e.name, median(on) - median(off), median(on), median(off), pairs);
+  }
+}
+
 }  // namespace
 
 int run_render(const RenderOptions& o) {
@@ -50,6 +77,7 @@ int run_render(const RenderOptions& o) {
   view.wireframe = o.wireframe;
   view.steps = scene.view.steps_per_frame;
   view.wait = true;  // time each frame whole, and read the last one back
+  view.effects = scene.view.effects;
   lod::validate(view.camera, view.lod_tolerance_px > 0 ? view.lod_tolerance_px : 1.0);
 
   const render::RenderTarget target(ctx, o.width, o.height);
@@ -88,6 +116,7 @@ int run_render(const RenderOptions& o) {
                 scene.tree->draw == tree::TreeDraw::lines ? "lines" : "tubes", scene.wind.strength,
                 scene.wind.direction_deg, trees->wind_time());
   }
+  print_effect_costs(loop, target, view, o.frames);
   std::printf("steps done %" PRId64 "\nwrote %s\n", session.steps_done(), o.out.c_str());
   return 0;
 }

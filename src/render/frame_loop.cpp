@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "gpu/buffer.h"
 #include "render/color_format.h"
+#include "render/reflection_pass.h"
 #include "view/land_mesh.h"
 #include "render/render_layout.h"
 #include "render/render_target.h"
@@ -51,6 +52,10 @@ shared::water_render::vec4 v4(const std::array<double, 3>& a) {
   return {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2]), 0.0f};
 }
 
+// How far the reflection shifts per unit of the surface normal's xz tilt, in screen widths and
+// heights: ripples of a few degrees wobble it by a few pixels.
+constexpr float kReflectionShift = 0.05f;
+
 double ms_since(std::chrono::steady_clock::time_point& t) {
   const auto now = std::chrono::steady_clock::now();
   const double ms = std::chrono::duration<double, std::milli>(now - t).count();
@@ -67,6 +72,7 @@ struct Slot {
   gpu::Buffer uniforms, indices;        // host-visible: WaterFrame, the LOD's indices
   vk::raii::DescriptorSet set = nullptr;
   Image depth;
+  ReflectionTarget reflection;
 };
 
 struct FrameLoop::Impl {
@@ -78,8 +84,9 @@ struct FrameLoop::Impl {
   std::uint64_t water_generation = 0;  // the session's solver_generation() `water` reads
   lod::LodBuilder lod;
   WaterPipelines pipes;
-  gpu::Buffer land, full_indices;
-  std::uint32_t land_vertices = 0, full_index_count = 0;
+  vk::raii::Sampler reflection_sampler = nullptr;
+  gpu::Buffer land, mirrored_land, full_indices;  // mirrored_land: the reflection's (view::mirrored_walls)
+  std::uint32_t land_vertices = 0, mirrored_land_vertices = 0, full_index_count = 0;
   vk::raii::CommandPool pool = nullptr;
   vk::raii::DescriptorPool descriptor_pool = nullptr;
   std::vector<Slot> slots;
@@ -89,6 +96,7 @@ struct FrameLoop::Impl {
   Impl(const gpu::Context& c, sim::Session& drawn, vk::Format format)
       : ctx(c), session(drawn), lighting(drawn.scene().lighting), color_format(format),
         lod(drawn.model().rows, drawn.model().cols), pipes(create_water_pipelines(c, format, kDepthFormat)) {
+    reflection_sampler = create_reflection_sampler(ctx);
     follow_solver();
     create_static_geometry();
     session.set_before_change([this] { wait_all(); });
@@ -96,10 +104,11 @@ struct FrameLoop::Impl {
                                                    .flags = vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
                                                    .queueFamilyIndex = ctx.queue_family()});
     const vk::DescriptorPoolSize sizes[] = {{.type = vk::DescriptorType::eUniformBuffer, .descriptorCount = kFramesInFlight},
-                                            {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 2 * kFramesInFlight}};
+                                            {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 2 * kFramesInFlight},
+                                            {.type = vk::DescriptorType::eCombinedImageSampler, .descriptorCount = kFramesInFlight}};
     descriptor_pool = vk::raii::DescriptorPool(
         ctx.device(), vk::DescriptorPoolCreateInfo{.flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
-                                                   .maxSets = kFramesInFlight, .poolSizeCount = 2, .pPoolSizes = sizes});
+                                                   .maxSets = kFramesInFlight, .poolSizeCount = 3, .pPoolSizes = sizes});
     vk::raii::CommandBuffers cmds(ctx.device(), vk::CommandBufferAllocateInfo{.commandPool = *pool,
                                                                               .level = vk::CommandBufferLevel::ePrimary,
                                                                               .commandBufferCount = kFramesInFlight});
@@ -138,6 +147,11 @@ struct FrameLoop::Impl {
     land = gpu::create_buffer(ctx, mesh.size() * sizeof(LandVertex), BU::eVertexBuffer | BU::eTransferDst, gpu::MemoryUse::device,
                          "land vertices");
     gpu::upload(ctx, land, std::as_bytes(std::span(mesh)));
+    const std::vector<LandVertex> above = view::mirrored_walls(mesh);
+    mirrored_land_vertices = static_cast<std::uint32_t>(above.size());
+    mirrored_land = gpu::create_buffer(ctx, std::max<std::size_t>(1, above.size()) * sizeof(LandVertex),
+                                          BU::eVertexBuffer | BU::eTransferDst, gpu::MemoryUse::device, "land walls above the water");
+    if (!above.empty()) gpu::upload(ctx, mirrored_land, std::as_bytes(std::span(above)));
     const std::vector<std::uint32_t> full = full_mesh_indices(model().rows, model().cols);
     full_index_count = static_cast<std::uint32_t>(full.size());
     full_indices = gpu::create_buffer(ctx, std::max<std::size_t>(1, full.size()) * 4, BU::eIndexBuffer | BU::eTransferDst,
@@ -220,16 +234,16 @@ struct FrameLoop::Impl {
     const bool full = f.view.lod_tolerance_px <= 0;
     const std::array<float, 16> view_proj = view::view_projection(f.camera, model());  // 4. draw
     write_frame_uniforms(s, f.camera, view_proj, f.bufs.stride, f.bufs.pitch);
-    bind_buffers(s, f.bufs);
     ensure_depth(s, target.extent);
+    ensure_reflection_target(ctx, s.reflection, target.extent);  // made even when off: the set is whole
+    bind_buffers(s, f.bufs);
     const FrameInfo info{s.cmd, f.slot, view_proj.data(),
                          {static_cast<float>(f.camera.eye[0]), static_cast<float>(f.camera.eye[1]),
                           static_cast<float>(f.camera.eye[2])},
                          target.extent, static_cast<double>(session.steps_done()) * model().physics.dt,
                          lighting};
     for (PassDrawable* d : drawables) d->prepare(info);
-    record(s, target, info, full ? full_indices : s.indices, static_cast<std::uint32_t>(f.index_count),
-           f.view.wireframe);
+    record(s, target, info, full ? full_indices : s.indices, static_cast<std::uint32_t>(f.index_count), f.view);
     submit(s, target);
     if (f.view.wait) wait(s);
     f.stats.draw_ms = ms_since(t);
@@ -256,6 +270,10 @@ struct FrameLoop::Impl {
     POND_FRAME_COLS(f) = static_cast<std::uint32_t>(model().cols);
     POND_FRAME_STATE_STRIDE(f) = stride;
     POND_FRAME_STATE_PITCH(f) = pitch;
+    const view::SkyBox sky = view::sky_box(model(), v.land_height);
+    f.sky_lo = v4(sky.lo);
+    f.sky_hi = v4(sky.hi);
+    f.screen = {1.0f / static_cast<float>(camera.width), 1.0f / static_cast<float>(camera.height), kReflectionShift, 0.0f};
     std::memcpy(s.uniforms.mapped, &f, sizeof f);
     s.uniforms.flush(ctx);
   }
@@ -264,13 +282,17 @@ struct FrameLoop::Impl {
   // buffer, or the slot's CPU copies); the slot is idle, so updating it is allowed.
   void bind_buffers(const Slot& s, const WaterSource::DrawBuffers& b) const {
     const vk::DescriptorBufferInfo infos[] = {s.uniforms.whole(), b.state->whole(), b.normals->whole()};
+    const vk::DescriptorImageInfo reflection{.sampler = *reflection_sampler, .imageView = *s.reflection.color.view,
+                                             .imageLayout = vk::ImageLayout::eShaderReadOnlyOptimal};
     const vk::WriteDescriptorSet writes[] = {
         {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_FRAME, .descriptorCount = 1,
          .descriptorType = vk::DescriptorType::eUniformBuffer, .pBufferInfo = &infos[0]},
         {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_STATE, .descriptorCount = 1,
          .descriptorType = vk::DescriptorType::eStorageBuffer, .pBufferInfo = &infos[1]},
         {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_NORMALS, .descriptorCount = 1,
-         .descriptorType = vk::DescriptorType::eStorageBuffer, .pBufferInfo = &infos[2]}};
+         .descriptorType = vk::DescriptorType::eStorageBuffer, .pBufferInfo = &infos[2]},
+        {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_REFLECTION, .descriptorCount = 1,
+         .descriptorType = vk::DescriptorType::eCombinedImageSampler, .pImageInfo = &reflection}};
     ctx.device().updateDescriptorSets(writes, nullptr);
   }
 
@@ -293,7 +315,7 @@ struct FrameLoop::Impl {
   }
 
   void record(const Slot& s, const FrameTarget& target, const FrameInfo& info, const gpu::Buffer& indices,
-              std::uint32_t index_count, bool wireframe) const {
+              std::uint32_t index_count, const FrameView& view) const {
     const vk::raii::CommandBuffer& cmd = s.cmd;
     cmd.reset();
     cmd.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
@@ -311,6 +333,19 @@ struct FrameLoop::Impl {
                        A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite)};
     cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &compute_to_vertex,
                                             .imageMemoryBarrierCount = 2, .pImageMemoryBarriers = begin_images});
+    const bool reflections = view.effects.reflections;
+    if (reflections) {
+      FrameInfo mirrored = info;
+      mirrored.extent = s.reflection.color.extent;
+      mirrored.pixel_scale = static_cast<float>(mirrored.extent.height) / static_cast<float>(info.extent.height);
+      record_reflection_pass(cmd, s.reflection, [&] {
+        cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *s.set, nullptr);
+        cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.land_mirror);
+        cmd.bindVertexBuffers(0, *mirrored_land.buffer, vk::DeviceSize{0});
+        cmd.draw(mirrored_land_vertices, 1, 0, 0);
+        for (PassDrawable* d : drawables) d->draw_reflected(mirrored);
+      });
+    }
 
     const vk::RenderingAttachmentInfo color{
         .imageView = target.view, .imageLayout = vk::ImageLayout::eColorAttachmentOptimal,
@@ -332,13 +367,17 @@ struct FrameLoop::Impl {
     cmd.bindVertexBuffers(0, *land.buffer, vk::DeviceSize{0});
     cmd.draw(land_vertices, 1, 0, 0);
     cmd.bindIndexBuffer(*indices.buffer, 0, vk::IndexType::eUint32);
-    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.water);
+    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, reflections ? *pipes.water_reflect : *pipes.water);
     cmd.drawIndexed(index_count, 1, 0, 0, 0);
-    if (wireframe && *pipes.wire) {
+    if (view.wireframe && *pipes.wire) {
       cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.wire);
       cmd.drawIndexed(index_count, 1, 0, 0, 0);
     }
     for (PassDrawable* d : drawables) d->draw(info);
+    // Last, so only where nothing is; the drawables bound sets of their own.
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *s.set, nullptr);
+    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.sky);
+    cmd.draw(30, 1, 0, 0);  // sky.vert's box
     cmd.endRendering();
 
     // The image to its final layout; and the next frame's substeps must not overwrite the state

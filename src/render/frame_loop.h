@@ -6,8 +6,8 @@
 // ARCHITECTURE.md:
 //
 //   substeps (the session's solver: GPU compute or CPU) -> normals -> LOD (CPU, from the new
-//     positions) -> draw (dynamic rendering into the caller's image: land, water, LOD wireframe,
-//     extra drawables)
+//     positions) -> draw (the planar reflection's pass when on, render/reflection_pass.h; then
+//     dynamic rendering into the caller's image: land, water, LOD wireframe, extra drawables, sky)
 //
 // Synchronization: the compute work (substeps + normals) is submitted and waited for, because the
 // CPU LOD builder needs this frame's positions (read straight from the state memory when it is
@@ -63,6 +63,7 @@ struct FrameView {
   bool wireframe = false;         // overlay the LOD triangles
   std::int64_t steps = 1;         // simulation steps this frame (0 = frozen)
   bool wait = false;              // wait for the draw to finish (headless timing, readback)
+  view::Effects effects;          // which of the picture's effects to draw
 };
 
 // The cost of one frame, by part. draw_ms covers recording and submitting, plus the GPU time when
@@ -85,6 +86,7 @@ struct FrameInfo {
   vk::Extent2D extent;
   double seconds;               // simulated time: steps_done * dt
   const view::LightingSpec& lighting;  // the scene's, with the sun as set_sun() left it
+  float pixel_scale = 1.0f;     // the target's pixels per frame pixel (the reflection's: 1/2)
 };
 
 // A second pipeline drawn in the same pass as the water (the wind tree). Its pipeline must be
@@ -96,6 +98,10 @@ class PassDrawable {
   virtual void prepare(const FrameInfo& /*frame*/) {}
   // Inside the pass (viewport, scissor set; depth test on): bind and draw.
   virtual void draw(const FrameInfo& frame) = 0;
+  // Inside the planar reflection's pass (render/reflection_pass.h: kReflectionFormat, kDepthFormat;
+  // frame.extent and frame.pixel_scale are the reflection's): draw mirrored about y = 0. Drawables
+  // that are not above the water (the demo's panel) draw nothing.
+  virtual void draw_reflected(const FrameInfo& /*frame*/) {}
   // Inside the pass, before the scene: opaque screen-space overlays (the demo's panel) that write
   // the nearest depth, so the scene's fragments behind them fail the depth test before they are
   // shaded (on llvmpipe the water's shading is most of what a pixel under the panel costs).

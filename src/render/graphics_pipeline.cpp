@@ -18,7 +18,7 @@ vk::raii::Pipeline create_graphics_pipeline(const gpu::Context& ctx, const vk::r
   // The target's encoding is a specialization constant, not a uniform: llvmpipe would otherwise
   // run the per-pixel pow() of the UNORM branch for every pixel under a mask, sRGB targets
   // included (docs/perf.md). Fragment shaders without the constant ignore it.
-  const vk::Bool32 encode_srgb = is_srgb(color) ? VK_FALSE : VK_TRUE;
+  const vk::Bool32 encode_srgb = is_srgb(color) || d.linear_output ? VK_FALSE : VK_TRUE;
   const vk::SpecializationMapEntry encode_entry{.constantID = POND_SPEC_ENCODE_SRGB, .offset = 0,
                                                 .size = sizeof encode_srgb};
   const vk::SpecializationInfo frag_constants{.mapEntryCount = 1, .pMapEntries = &encode_entry,

@@ -19,6 +19,9 @@ struct GraphicsPipelineDesc {
   vk::PipelineDepthStencilStateCreateInfo depth;
   vk::PipelineColorBlendAttachmentState blend;
   std::string name;  // debug name
+  // The target holds linear colour whatever its format (the planar reflection, which the water
+  // samples): the fragment shader does not encode sRGB (POND_SPEC_ENCODE_SRGB off).
+  bool linear_output = false;
 };
 
 vk::raii::Pipeline create_graphics_pipeline(const gpu::Context& ctx, const vk::raii::PipelineLayout& layout,

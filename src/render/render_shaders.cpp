@@ -3,7 +3,11 @@
 namespace pond::render {
 namespace {
 #include "land_frag.spv.h"
+#include "land_mirror_vert.spv.h"
 #include "land_vert.spv.h"
+#include "water_reflect_frag.spv.h"
+#include "sky_frag.spv.h"
+#include "sky_vert.spv.h"
 #include "water_frag.spv.h"
 #include "water_vert.spv.h"
 #include "water_wire_frag.spv.h"
@@ -14,5 +18,9 @@ std::span<const std::uint32_t> water_frag_spirv() { return pond_spirv_water_frag
 std::span<const std::uint32_t> water_wire_frag_spirv() { return pond_spirv_water_wire_frag; }
 std::span<const std::uint32_t> land_vert_spirv() { return pond_spirv_land_vert; }
 std::span<const std::uint32_t> land_frag_spirv() { return pond_spirv_land_frag; }
+std::span<const std::uint32_t> water_reflect_frag_spirv() { return pond_spirv_water_reflect_frag; }
+std::span<const std::uint32_t> land_mirror_vert_spirv() { return pond_spirv_land_mirror_vert; }
+std::span<const std::uint32_t> sky_vert_spirv() { return pond_spirv_sky_vert; }
+std::span<const std::uint32_t> sky_frag_spirv() { return pond_spirv_sky_frag; }
 
 }  // namespace pond::render

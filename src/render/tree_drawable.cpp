@@ -11,6 +11,7 @@
 #include "gpu/buffer.h"
 #include "tree/tree_lod.h"
 #include "tree/tree_mesh.h"
+#include "render/reflection_pass.h"
 #include "render/tree_pipeline.h"
 #include "sim/wind_ripples.h"
 #include "shared/tree_render.h"
@@ -31,16 +32,23 @@ sh::vec4 v4(const std::array<double, 3>& a) {
   return {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2]), 0.0f};
 }
 
-struct Instance {
-  sh::vec4 base;  // foot (world) and scale
-  tree::WindState wind;
-  // This frame's (prepare()): the wind pushed to the shader, the thinnest level drawn as tubes and
-  // the leaves' shape.
-  tree::TreeWindFrame frame{};
+// An instance's level of detail at one pixel density: the thinnest level drawn as tubes and the
+// leaves' shape and pruning.
+struct InstanceLod {
   int thinnest_tube = 1;
   bool diamond_leaves = true;
   tree::Pruning leaves;              // of the far leaves' triangles (used when not diamonds)
   std::vector<tree::Pruning> twigs;  // of each twig-line level below thinnest_tube (index: level)
+};
+
+struct Instance {
+  sh::vec4 base;  // foot (world) and scale
+  tree::WindState wind;
+  // This frame's (prepare()): the wind pushed to the shader, and the level of detail for the frame
+  // and for the planar reflection, whose pixels are kReflectionDivisor times larger: its image is
+  // pruned as a tree that far away would be.
+  tree::TreeWindFrame frame{};
+  InstanceLod lod, mirrored_lod;
 };
 
 struct SlotResources {
@@ -71,7 +79,7 @@ struct TreeDrawable::Impl {
 
   Impl(const gpu::Context& c, const FrameLoop& loop, const tree::TreeSpec& t, const tree::WindSpec& w)
       : ctx(c), spec(t), wind_spec(w), user(sim::scene_user_wind(w)), noise(tree::make_noise_table(w.seed)),
-        pipes(create_tree_pipelines(c, loop.color_format(), FrameLoop::kDepthFormat)) {
+        pipes(create_tree_pipelines(c, loop.color_format(), FrameLoop::kDepthFormat, kReflectionFormat)) {
     const vk::DescriptorPoolSize sizes[] = {
         {.type = vk::DescriptorType::eUniformBuffer, .descriptorCount = FrameLoop::kFramesInFlight},
         {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 2 * FrameLoop::kFramesInFlight}};
@@ -143,6 +151,20 @@ struct TreeDrawable::Impl {
     return spec.bend == tree::TreeBend::keep_length ? tree::BendMode::keep_length : tree::BendMode::article;
   }
 
+  // The level of detail at `pixels` per unit length. Without the level of detail `pixels` is
+  // infinite: diamonds, every level a tube, no pruning.
+  InstanceLod lod_at(float pixels) const {
+    InstanceLod l;
+    l.thinnest_tube = tree::thinnest_tube_level(pixels, grown.depth);
+    l.diamond_leaves = tree::diamond_leaves(pixels, mesh.longest_leaf);
+    l.leaves = tree::prune(mesh.leaf_triangles.count / 3, mesh.mean_leaf_area * pixels * pixels, tree::kPrunedLeafArea);
+    l.twigs.assign(static_cast<std::size_t>(l.thinnest_tube), {});  // index: level; 0 unused
+    for (int level = 1; level < l.thinnest_tube; ++level)
+      l.twigs[static_cast<std::size_t>(level)] = tree::prune(
+          mesh.lines.level(level).count / 2, 2.0f * tree::tree_tube_radius(grown.depth, level) * pixels, tree::kPrunedTwigPixels);
+    return l;
+  }
+
   void prepare(const FrameInfo& info) {
     double dt = pending_seconds;
     if (!manual_clock) dt = info.seconds - last_seconds;
@@ -156,14 +178,8 @@ struct TreeDrawable::Impl {
       const tree::Sphere world{tree::Vec3{inst.base.x, inst.base.y, inst.base.z} + s.centre * inst.base.w, s.radius * inst.base.w};
       const float pixels = level_of_detail ? tree::nearest_pixels_per_unit(lod_camera, world, inst.base.w)
                                            : std::numeric_limits<float>::infinity();
-      inst.thinnest_tube = tree::thinnest_tube_level(pixels, grown.depth);
-      inst.diamond_leaves = tree::diamond_leaves(pixels, mesh.longest_leaf);
-      // Without the level of detail `pixels` is infinite: diamonds, every level a tube, no pruning.
-      inst.leaves = tree::prune(mesh.leaf_triangles.count / 3, mesh.mean_leaf_area * pixels * pixels, tree::kPrunedLeafArea);
-      inst.twigs.assign(static_cast<std::size_t>(inst.thinnest_tube), {});  // index: level; 0 unused
-      for (int level = 1; level < inst.thinnest_tube; ++level)
-        inst.twigs[static_cast<std::size_t>(level)] = tree::prune(
-            mesh.lines.level(level).count / 2, 2.0f * tree::tree_tube_radius(grown.depth, level) * pixels, tree::kPrunedTwigPixels);
+      inst.lod = lod_at(pixels);
+      inst.mirrored_lod = lod_at(pixels / static_cast<float>(kReflectionDivisor));
     }
 
     const auto& sun = info.lighting.sun;
@@ -189,45 +205,49 @@ struct TreeDrawable::Impl {
   // Draws each instance's parts of the mesh, `parts(instance, add)` calling add(Part) for each,
   // with `vertex_offset`.
   template <class PartsOf>
-  void draw_instances(const vk::raii::CommandBuffer& cmd, const vk::raii::Pipeline& pipe, PartsOf parts,
-                      std::int32_t vertex_offset = 0) const {
+  void draw_instances(const vk::raii::CommandBuffer& cmd, const vk::raii::Pipeline& pipe, float pixel_scale,
+                      PartsOf parts, std::int32_t vertex_offset = 0) const {
     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipe);
     for (const Instance& inst : instances)
       parts(inst, [&](const Part& part) {
         if (part.range.count == 0) return;
         const sh::TreeInstance push{.base = inst.base, .wind = inst.frame,
-                                    .pruning = {part.leaf_scale, part.twig_scale, mesh.longest_leaf, 0.0f}};
+                                    .pruning = {part.leaf_scale, part.twig_scale, mesh.longest_leaf, pixel_scale}};
         cmd.pushConstants<sh::TreeInstance>(*pipes.layout, vk::ShaderStageFlagBits::eVertex, 0, push);
         cmd.drawIndexed(part.range.count, 1, part.range.first, vertex_offset, 0);
       });
   }
 
-  void draw(const FrameInfo& info) const {
+  // `pixel_scale`: 0 for the direct pipelines, the reflection's pixels per frame pixel for the
+  // mirrored ones (TreeInstance::pruning.w).
+  void draw(const FrameInfo& info, const TreeMaterialPipelines& pipelines, float pixel_scale) const {
+    const bool mirrored = pixel_scale > 0.0f;
+    auto lod = [mirrored](const Instance& i) -> const InstanceLod& { return mirrored ? i.mirrored_lod : i.lod; };
     const vk::raii::CommandBuffer& cmd = info.cmd;
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *slots[info.slot].set, nullptr);
     cmd.bindVertexBuffers(0, *vertices.buffer, vk::DeviceSize{0});
     cmd.bindIndexBuffer(*indices.buffer, 0, vk::IndexType::eUint32);
     if (spec.draw == tree::TreeDraw::tubes) {
-      draw_instances(cmd, pipes.tubes, [&](const Instance& i, auto add) { add({mesh.tubes.at_least(i.thinnest_tube)}); });
+      draw_instances(cmd, pipelines.tubes, pixel_scale, [&](const Instance& i, auto add) { add({mesh.tubes.at_least(lod(i).thinnest_tube)}); });
       // Each level below the tubes as its (pruned) twig lines: a prefix of the level's shuffled order.
       draw_instances(
-          cmd, pipes.twigs,
+          cmd, pipelines.twigs, pixel_scale,
           [&](const Instance& i, auto add) {
-            for (int level = 1; level < i.thinnest_tube; ++level) {
-              const tree::Pruning& p = i.twigs[static_cast<std::size_t>(level)];
+            for (int level = 1; level < lod(i).thinnest_tube; ++level) {
+              const tree::Pruning& p = lod(i).twigs[static_cast<std::size_t>(level)];
               add({{mesh.lines.level(level).first, 2 * p.count}, 1.0f, p.scale});
             }
           },
           mesh.twig_vertices);
     } else {
-      draw_instances(cmd, pipes.lines, [&](const Instance&, auto add) { add({mesh.lines.all}); });
+      draw_instances(cmd, pipelines.lines, pixel_scale, [&](const Instance&, auto add) { add({mesh.lines.all}); });
     }
     if (spec.leaves)
-      draw_instances(cmd, pipes.leaves, [&](const Instance& i, auto add) {
-        if (i.diamond_leaves)
+      draw_instances(cmd, pipelines.leaves, pixel_scale, [&](const Instance& i, auto add) {
+        if (lod(i).diamond_leaves)
           add({mesh.leaves});
         else  // a prefix of the shuffled triangles, each grown so the sample covers the crown's area
-          add({{mesh.leaf_triangles.first, 3 * i.leaves.count}, std::sqrt(i.leaves.scale), 1.0f});
+          add({{mesh.leaf_triangles.first, 3 * lod(i).leaves.count}, std::sqrt(lod(i).leaves.scale), 1.0f});
       });
   }
 };
@@ -242,7 +262,8 @@ TreeDrawable::~TreeDrawable() {
 }
 
 void TreeDrawable::prepare(const FrameInfo& frame) { impl_->prepare(frame); }
-void TreeDrawable::draw(const FrameInfo& frame) { impl_->draw(frame); }
+void TreeDrawable::draw(const FrameInfo& frame) { impl_->draw(frame, impl_->pipes.direct, 0.0f); }
+void TreeDrawable::draw_reflected(const FrameInfo& frame) { impl_->draw(frame, impl_->pipes.mirrored, frame.pixel_scale); }
 
 void TreeDrawable::set_wind_direction(double radians) {
   impl_->user.direction = static_cast<float>(radians);
@@ -281,13 +302,13 @@ double TreeDrawable::wind_time() const {
 
 std::vector<bool> TreeDrawable::diamond_leaves() const {
   std::vector<bool> out;
-  for (const Instance& inst : impl_->instances) out.push_back(inst.diamond_leaves);
+  for (const Instance& inst : impl_->instances) out.push_back(inst.lod.diamond_leaves);
   return out;
 }
 
 std::vector<int> TreeDrawable::thinnest_tube_levels() const {
   std::vector<int> out;
-  for (const Instance& inst : impl_->instances) out.push_back(inst.thinnest_tube);
+  for (const Instance& inst : impl_->instances) out.push_back(inst.lod.thinnest_tube);
   return out;
 }
 

@@ -41,6 +41,7 @@ class TreeDrawable final : public PassDrawable {
 
   void prepare(const FrameInfo& frame) override;
   void draw(const FrameInfo& frame) override;
+  void draw_reflected(const FrameInfo& frame) override;  // mirrored, into the planar reflection
 
   // ---- Controls ----
   void set_wind_direction(double radians);  // in the xz plane, from +x toward +z

@@ -8,6 +8,7 @@ namespace {
 #include "tree_frag.spv.h"
 #include "tree_leaf_frag.spv.h"
 #include "tree_line_frag.spv.h"
+#include "tree_mirror_vert.spv.h"
 #include "tree_twig_frag.spv.h"
 #include "tree_vert.spv.h"
 
@@ -19,6 +20,7 @@ struct Variant {
   vk::CullModeFlags cull;
   std::span<const std::uint32_t> frag;  // a variant of tree.frag
   const char* name;
+  bool mirrored = false;  // tree_mirror.vert: clockwise front faces
 };
 
 vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayout& layout, vk::Format color,
@@ -51,15 +53,18 @@ vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayou
       .topology = variant.topology};
   const vk::PipelineRasterizationStateCreateInfo raster{.polygonMode = vk::PolygonMode::eFill,
                                                         .cullMode = variant.cull,
-                                                        .frontFace = vk::FrontFace::eCounterClockwise,
+                                                        .frontFace = variant.mirrored ? vk::FrontFace::eClockwise
+                                                                                      : vk::FrontFace::eCounterClockwise,
                                                         .lineWidth = 1.0f};
   const vk::PipelineDepthStencilStateCreateInfo depth_state{
       .depthTestEnable = VK_TRUE, .depthWriteEnable = VK_TRUE, .depthCompareOp = vk::CompareOp::eLessOrEqual};
   using CC = vk::ColorComponentFlagBits;
   const vk::PipelineColorBlendAttachmentState blend{.colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
   return create_graphics_pipeline(ctx, layout, color, depth,
-                                  {tree_vert_spirv(), variant.frag, vertex_input, assembly, raster,
-                                   depth_state, blend, variant.name});
+                                  {variant.mirrored ? std::span<const std::uint32_t>(pond_spirv_tree_mirror_vert)
+                                                    : tree_vert_spirv(),
+                                   variant.frag, vertex_input, assembly, raster,
+                                   depth_state, blend, variant.name, variant.mirrored});
 }
 
 }  // namespace
@@ -67,7 +72,8 @@ vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayou
 std::span<const std::uint32_t> tree_vert_spirv() { return pond_spirv_tree_vert; }
 std::span<const std::uint32_t> tree_frag_spirv() { return pond_spirv_tree_frag; }
 
-TreePipelines create_tree_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format) {
+TreePipelines create_tree_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format,
+                                    vk::Format mirrored_color_format) {
   TreePipelines p;
   using SS = vk::ShaderStageFlagBits;
   const vk::DescriptorSetLayoutBinding bindings[] = {
@@ -87,13 +93,22 @@ TreePipelines create_tree_pipelines(const gpu::Context& ctx, vk::Format color_fo
                                                                                  .pPushConstantRanges = &push});
   using T = vk::PrimitiveTopology;
   using C = vk::CullModeFlagBits;
-  p.lines = create(ctx, p.layout, color_format, depth_format, {T::eLineList, C::eNone, pond_spirv_tree_line_frag, "tree lines"});
-  p.twigs = create(ctx, p.layout, color_format, depth_format, {T::eLineList, C::eNone, pond_spirv_tree_twig_frag, "tree twig lines"});
-  // A tube is only ever seen from outside (its open ends sit inside the joints, a twig's width), so
-  // its back faces are always hidden: culling them halves what llvmpipe sets up and rasterizes, and
-  // its per-triangle cost is what the tree's draw time is made of.
-  p.tubes = create(ctx, p.layout, color_format, depth_format, {T::eTriangleList, C::eBack, pond_spirv_tree_frag, "tree tubes"});
-  p.leaves = create(ctx, p.layout, color_format, depth_format, {T::eTriangleList, C::eNone, pond_spirv_tree_leaf_frag, "tree leaves"});
+  auto materials = [&](vk::Format color, bool mirrored) {
+    TreeMaterialPipelines m;
+    auto make = [&](T topology, C cull, std::span<const std::uint32_t> frag, const char* name) {
+      return create(ctx, p.layout, color, depth_format, {topology, cull, frag, name, mirrored});
+    };
+    m.lines = make(T::eLineList, C::eNone, pond_spirv_tree_line_frag, mirrored ? "tree lines, mirrored" : "tree lines");
+    m.twigs = make(T::eLineList, C::eNone, pond_spirv_tree_twig_frag, mirrored ? "tree twig lines, mirrored" : "tree twig lines");
+    // A tube is only ever seen from outside (its open ends sit inside the joints, a twig's width), so
+    // its back faces are always hidden: culling them halves what llvmpipe sets up and rasterizes, and
+    // its per-triangle cost is what the tree's draw time is made of.
+    m.tubes = make(T::eTriangleList, C::eBack, pond_spirv_tree_frag, mirrored ? "tree tubes, mirrored" : "tree tubes");
+    m.leaves = make(T::eTriangleList, C::eNone, pond_spirv_tree_leaf_frag, mirrored ? "tree leaves, mirrored" : "tree leaves");
+    return m;
+  };
+  p.direct = materials(color_format, false);
+  p.mirrored = materials(mirrored_color_format, true);
   return p;
 }
 

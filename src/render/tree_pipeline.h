@@ -8,6 +8,9 @@
 //  - tubes: the branches' tubes as triangles, lit, back faces culled (their rings wind counter-clockwise
 //           seen from outside: tree_mesh.cpp);
 //  - leaves: triangles, lit, no culling (a leaf is seen from both sides).
+// Each twice: `direct` for the frame's colour format, and `mirrored` for the planar reflection's
+// target (FrameLoop::kReflectionFormat): tree_mirror.vert mirrors the tree about the water's rest
+// plane y = 0, which turns the tubes' winding clockwise.
 #include <cstdint>
 #include <span>
 
@@ -15,16 +18,21 @@
 
 namespace pond::render {
 
-struct TreePipelines {
-  vk::raii::DescriptorSetLayout set_layout = nullptr;
-  vk::raii::PipelineLayout layout = nullptr;
+struct TreeMaterialPipelines {
   vk::raii::Pipeline lines = nullptr;
   vk::raii::Pipeline twigs = nullptr;
   vk::raii::Pipeline tubes = nullptr;
   vk::raii::Pipeline leaves = nullptr;
 };
 
-TreePipelines create_tree_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format);
+struct TreePipelines {
+  vk::raii::DescriptorSetLayout set_layout = nullptr;
+  vk::raii::PipelineLayout layout = nullptr;
+  TreeMaterialPipelines direct, mirrored;
+};
+
+TreePipelines create_tree_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format,
+                                    vk::Format mirrored_color_format);
 
 // SPIR-V of shaders/tree.vert and tree.frag's bark build (embedded at build time).
 std::span<const std::uint32_t> tree_vert_spirv();

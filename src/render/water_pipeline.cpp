@@ -3,6 +3,7 @@
 #include <span>
 
 #include "render/graphics_pipeline.h"
+#include "render/reflection_pass.h"
 #include "render/render_layout.h"
 #include "render/render_shaders.h"
 
@@ -13,6 +14,8 @@ struct PipelineSpec {
   std::span<const std::uint32_t> vert, frag;
   bool land_vertices = false;  // LandVertex attributes (else vertex pulling, no attributes)
   bool lines = false;          // polygon mode line, depth bias towards the camera, alpha blending
+  bool depth_write = true;
+  bool linear_output = false;  // GraphicsPipelineDesc::linear_output
   const char* name;
 };
 
@@ -41,7 +44,7 @@ vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayou
       .depthBiasSlopeFactor = s.lines ? -1.5f : 0.0f,
       .lineWidth = 1.0f};
   const vk::PipelineDepthStencilStateCreateInfo depth_state{
-      .depthTestEnable = VK_TRUE, .depthWriteEnable = s.lines ? VK_FALSE : VK_TRUE,
+      .depthTestEnable = VK_TRUE, .depthWriteEnable = s.lines || !s.depth_write ? VK_FALSE : VK_TRUE,
       .depthCompareOp = vk::CompareOp::eLessOrEqual};
   using CC = vk::ColorComponentFlagBits;
   const vk::PipelineColorBlendAttachmentState blend{
@@ -52,7 +55,7 @@ vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayou
       .alphaBlendOp = vk::BlendOp::eAdd,
       .colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
   return create_graphics_pipeline(ctx, layout, color, depth,
-                                  {s.vert, s.frag, vertex_input, assembly, raster, depth_state, blend, s.name});
+                                  {s.vert, s.frag, vertex_input, assembly, raster, depth_state, blend, s.name, s.linear_output});
 }
 
 }  // namespace
@@ -66,9 +69,11 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
       {.binding = POND_RENDER_BINDING_STATE, .descriptorType = vk::DescriptorType::eStorageBuffer,
        .descriptorCount = 1, .stageFlags = SS::eVertex},
       {.binding = POND_RENDER_BINDING_NORMALS, .descriptorType = vk::DescriptorType::eStorageBuffer,
-       .descriptorCount = 1, .stageFlags = SS::eVertex}};
+       .descriptorCount = 1, .stageFlags = SS::eVertex},
+      {.binding = POND_RENDER_BINDING_REFLECTION, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
+       .descriptorCount = 1, .stageFlags = SS::eFragment}};
   p.set_layout = vk::raii::DescriptorSetLayout(
-      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = 3, .pBindings = bindings});
+      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = 4, .pBindings = bindings});
   const vk::DescriptorSetLayout set_layout = *p.set_layout;
   p.layout = vk::raii::PipelineLayout(ctx.device(),
                                       vk::PipelineLayoutCreateInfo{.setLayoutCount = 1, .pSetLayouts = &set_layout});
@@ -76,6 +81,13 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
                   {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true, .name = "land"});
   p.water = create(ctx, p.layout, color_format, depth_format,
                    {.vert = water_vert_spirv(), .frag = water_frag_spirv(), .name = "water"});
+  p.water_reflect = create(ctx, p.layout, color_format, depth_format,
+                           {.vert = water_vert_spirv(), .frag = water_reflect_frag_spirv(), .name = "water, reflecting"});
+  p.land_mirror = create(ctx, p.layout, kReflectionFormat, depth_format,
+                         {.vert = land_mirror_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true,
+                          .linear_output = true, .name = "land, mirrored"});
+  p.sky = create(ctx, p.layout, color_format, depth_format,
+                 {.vert = sky_vert_spirv(), .frag = sky_frag_spirv(), .depth_write = false, .name = "sky"});
   if (ctx.physical().getFeatures().fillModeNonSolid)
     p.wire = create(ctx, p.layout, color_format, depth_format,
                     {.vert = water_vert_spirv(), .frag = water_wire_frag_spirv(), .lines = true, .name = "water LOD wireframe"});

@@ -4,7 +4,11 @@
 //  - land:  shore, islands, pool rim (LandVertex buffer);
 //  - water: the surface pulled from the state and normal buffers by node index;
 //  - wire:  the same triangles as lines over the water (the LOD overlay); null when the device
-//           lacks fillModeNonSolid.
+//           lacks fillModeNonSolid;
+//  - water_reflect: the water sampling the planar reflection (render/reflection_pass.h);
+//  - land_mirror: the land above the water mirrored about y = 0, for the reflection's target;
+//  - sky:   a box standing on the land's outer edge (view::sky_box), drawn last (depth test, no
+//           write), so it shades only what nothing else covered.
 // No culling: large splashes may fold the surface over.
 #include "gpu/context.h"
 
@@ -15,7 +19,10 @@ struct WaterPipelines {
   vk::raii::PipelineLayout layout = nullptr;
   vk::raii::Pipeline land = nullptr;
   vk::raii::Pipeline water = nullptr;
+  vk::raii::Pipeline water_reflect = nullptr;
+  vk::raii::Pipeline land_mirror = nullptr;
   vk::raii::Pipeline wire = nullptr;
+  vk::raii::Pipeline sky = nullptr;
 };
 
 WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format);

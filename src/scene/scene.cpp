@@ -132,6 +132,7 @@ void parse_view(JsonFields f, ViewSpec& v) {
   if (!(v.floor_depth > 0.0)) f.fail("floor_depth", "must be positive");
   v.land_height = f.number("land_height", v.land_height);
   if (!(v.land_height > 0.0)) f.fail("land_height", "must be positive");
+  v.effects.reflections = f.boolean("reflections", v.effects.reflections);
   f.finish();
 }
 

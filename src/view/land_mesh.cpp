@@ -19,10 +19,11 @@ void quad(std::vector<LandVertex>& out, P a, P b, P c, P d, P n) {
 }
 
 // A wall quad from the top edge a-b at land height down to the floor, cut at the heights where
-// the wetness ramp bends (shared/water_render.h kLandWetAtRest), so per-vertex lighting is exact.
+// the wetness ramp bends (shared/water_render.h kLandWetAtRest), so per-vertex lighting is exact,
+// and at the water's rest plane y = 0, so mirrored_walls() can keep the part the reflection mirrors.
 void wall(std::vector<LandVertex>& out, P a, P b, double top, double bottom, P n) {
   std::vector<double> cuts = {top};
-  for (const double y : {shared::water_render::kLandWetAtRest * top, (shared::water_render::kLandWetAtRest - 1.0) * top})
+  for (const double y : {shared::water_render::kLandWetAtRest * top, 0.0, (shared::water_render::kLandWetAtRest - 1.0) * top})
     if (y < top && y > bottom) cuts.push_back(y);
   cuts.push_back(bottom);
   for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
@@ -68,7 +69,7 @@ std::vector<LandVertex> build_land_mesh(const sim::WaterModel& model, double flo
     }
   }
 
-  // The rim: four inward walls and the land around, out to 4x the pond's size.
+  // The rim: four inward walls and the land around, out to 4x the pond's size (sky_box: the same).
   const double w = cc * h, d = cr * h, m = 4.0 * std::max(w, d);
   wall(out, {0, top, 0}, {w, top, 0}, top, bottom, {0, 0, 1});
   wall(out, {0, top, d}, {w, top, d}, top, bottom, {0, 0, -1});
@@ -78,6 +79,20 @@ std::vector<LandVertex> build_land_mesh(const sim::WaterModel& model, double flo
   quad(out, {-m, top, d}, {w + m, top, d}, {w + m, top, d + m}, {-m, top, d + m}, {0, 1, 0});
   quad(out, {-m, top, 0}, {0, top, 0}, {0, top, d}, {-m, top, d}, {0, 1, 0});
   quad(out, {w, top, 0}, {w + m, top, 0}, {w + m, top, d}, {w, top, d}, {0, 1, 0});
+  return out;
+}
+
+SkyBox sky_box(const sim::WaterModel& model, double land_height) {
+  const double h = model.spacing, w = (model.cols - 1) * h, d = (model.rows - 1) * h, m = 4.0 * std::max(w, d);
+  return {{-m, land_height, -m}, {w + m, land_height + 1.5 * std::max(w, d), d + m}};
+}
+
+std::vector<LandVertex> mirrored_walls(const std::vector<LandVertex>& mesh) {
+  std::vector<LandVertex> out;
+  for (std::size_t t = 0; t + 2 < mesh.size(); t += 3)
+    if (mesh[t].normal.y == 0.0f && mesh[t].position.y >= 0.0f && mesh[t + 1].position.y >= 0.0f &&
+        mesh[t + 2].position.y >= 0.0f)
+      out.insert(out.end(), mesh.begin() + static_cast<std::ptrdiff_t>(t), mesh.begin() + static_cast<std::ptrdiff_t>(t + 3));
   return out;
 }
 

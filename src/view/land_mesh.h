@@ -7,6 +7,7 @@
 //    and flat land around the pond out to 4x its size (the horizon is the sky, not the void).
 // The pool floor itself is not geometry: the water shader traces its refracted rays to it.
 // A triangle list (no indices), O(rows + cols + island perimeter) triangles, built once.
+#include <array>
 #include <vector>
 
 #include "shared/water_render.h"
@@ -17,5 +18,19 @@ namespace pond::view {
 using LandVertex = shared::water_render::LandVertex;  // static_asserts: render/render_layout.h
 
 std::vector<LandVertex> build_land_mesh(const sim::WaterModel& model, double floor_depth, double land_height);
+
+// The box the sky is drawn on (shaders/sky.vert): walls standing on the land's outer edge, from
+// land_height up to a lid 1.5 pond sizes higher, so it covers exactly what lies past the land.
+struct SkyBox {
+  std::array<double, 3> lo, hi;
+};
+SkyBox sky_box(const sim::WaterModel& model, double land_height);
+
+// What of a build_land_mesh() mesh the planar reflection mirrors (render/reflection_pass.h): the
+// walls' triangles at or above the water's rest plane y = 0 (the walls are cut there, so nothing
+// below the water is kept and no fragment needs discarding). The flat tops are left out: a ray
+// reflected up from the water meets a wall before it could reach a top, and then only from below,
+// so no top is ever seen in the water, and they would cover most of the reflection's target.
+std::vector<LandVertex> mirrored_walls(const std::vector<LandVertex>& mesh);
 
 }  // namespace pond::view

@@ -68,5 +68,46 @@ TEST(LandMesh, WallsReachFromTheLandDownToTheFloorWithFlatFaces) {
   EXPECT_FLOAT_EQ(bottom, -2.0f);
 }
 
+// The reflection's land: every wall is cut at y = 0, so the part above the water is whole
+// triangles; the reflection keeps those of the walls, no top.
+TEST(LandMesh, MirroredWallsAreTheWallsAboveTheRestPlane) {
+  const sim::WaterModel model = island_model();
+  const std::vector<LandVertex> mesh = build_land_mesh(model, 2.0, 1.5);
+  std::size_t walls_above = 0, below = 0;
+  for (std::size_t t = 0; t < mesh.size(); t += 3) {
+    const float y[3] = {mesh[t].position.y, mesh[t + 1].position.y, mesh[t + 2].position.y};
+    const float lo = *std::min_element(y, y + 3), hi = *std::max_element(y, y + 3);
+    EXPECT_FALSE(lo < 0.0f && hi > 0.0f) << "triangle " << t / 3 << " crosses the water's rest plane";
+    if (lo < 0.0f) ++below;
+    else if (mesh[t].normal.y == 0.0f) ++walls_above;
+  }
+  const std::vector<LandVertex> kept = mirrored_walls(mesh);
+  EXPECT_EQ(kept.size(), 3 * walls_above);
+  EXPECT_GT(walls_above, 0u);
+  EXPECT_GT(below, 0u);
+  for (const LandVertex& v : kept) {
+    EXPECT_GE(v.position.y, 0.0f);
+    EXPECT_EQ(v.normal.y, 0.0f);
+  }
+}
+
+// The sky's box stands on the land's outer edge: the sky starts exactly where the land ends.
+TEST(LandMesh, SkyBoxStandsOnTheLandsOuterEdge) {
+  const sim::WaterModel model = island_model();
+  const std::vector<LandVertex> mesh = build_land_mesh(model, 2.0, 1.5);
+  float x0 = 1e9f, x1 = -1e9f, z0 = 1e9f, z1 = -1e9f;
+  for (const LandVertex& v : mesh) {
+    x0 = std::min(x0, v.position.x), x1 = std::max(x1, v.position.x);
+    z0 = std::min(z0, v.position.z), z1 = std::max(z1, v.position.z);
+  }
+  const SkyBox box = sky_box(model, 1.5);
+  EXPECT_FLOAT_EQ(static_cast<float>(box.lo[0]), x0);
+  EXPECT_FLOAT_EQ(static_cast<float>(box.hi[0]), x1);
+  EXPECT_FLOAT_EQ(static_cast<float>(box.lo[2]), z0);
+  EXPECT_FLOAT_EQ(static_cast<float>(box.hi[2]), z1);
+  EXPECT_EQ(box.lo[1], 1.5);
+  EXPECT_GT(box.hi[1], 1.5 + 10.0);
+}
+
 }  // namespace
 }  // namespace pond::view

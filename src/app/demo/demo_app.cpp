@@ -62,6 +62,7 @@ class DemoApp final : public ControlTarget {
     settings_.modes = modes_of(base_scene_);
     settings_.steps_per_frame = base_scene_.view.steps_per_frame;
     settings_.lod_tolerance_px = base_scene_.view.lod_tolerance_px;
+    settings_.effects = base_scene_.view.effects;
     settings_.sun = base_scene_.lighting.sun;
     settings_.vsync = options.vsync;
     stats_.device = ctx_.device_name();
@@ -185,6 +186,7 @@ void DemoApp::on_action(Action action) {
       apply_requests({.rebuild_scene = true});
       break;
     case Action::wireframe: settings_.wireframe = !settings_.wireframe; break;
+    case Action::reflections: settings_.effects.reflections = !settings_.effects.reflections; break;
     case Action::tau_up: settings_.lod_tolerance_px = next_tolerance(settings_.lod_tolerance_px, true); break;
     case Action::tau_down: settings_.lod_tolerance_px = next_tolerance(settings_.lod_tolerance_px, false); break;
     case Action::steps_up: settings_.steps_per_frame = std::min<std::int64_t>(64, settings_.steps_per_frame + 1); break;
@@ -320,7 +322,7 @@ bool DemoApp::draw_frame(const std::string* screenshot_path) {
     std::int64_t steps = settings_.paused ? 0 : settings_.steps_per_frame;
     if (settings_.step_once) steps = std::max<std::int64_t>(steps, 1), settings_.step_once = false;
     const render::FrameView view{.camera = current_camera(), .lod_tolerance_px = settings_.lod_tolerance_px,
-                              .wireframe = settings_.wireframe, .steps = steps};
+                              .wireframe = settings_.wireframe, .steps = steps, .effects = settings_.effects};
     loop_->simulate(view, swapchain_.extent());
   }
   const Clock::time_point t0 = Clock::now();

@@ -37,6 +37,7 @@ struct DemoSettings {
   // View
   double lod_tolerance_px = 1.0;
   bool wireframe = false;
+  view::Effects effects;  // the picture's effects (the scene's view keys, then keys and panel)
   bool vsync = true;
   bool show_panel = true;
   bool show_help = false;

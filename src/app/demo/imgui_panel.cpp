@@ -132,6 +132,7 @@ PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, render::TreeDr
     if (ImGui::SliderFloat("LOD tau px ([ ])", &tau, 0.0f, 32.0f, "%.2f", ImGuiSliderFlags_Logarithmic))
       s.lod_tolerance_px = tau;
     ImGui::Checkbox("wireframe (W)", &s.wireframe);
+    ImGui::Checkbox("reflections (M)", &s.effects.reflections);
     ImGui::SameLine();
     ImGui::Checkbox("vsync (F3)", &s.vsync);
     if (ImGui::Button("reset camera (C)")) req.reset_camera = true;
