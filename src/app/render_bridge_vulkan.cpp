@@ -92,7 +92,7 @@ int run_render(const RenderOptions& o) {
                 scene.wind.direction_deg, trees->wind_time());
   }
   if (bodies.drawn() > 0)
-    std::printf("bodies: %zu drawn, spheres of %zu triangles\n", bodies.drawn(), bodies.sphere_triangles());
+    std::printf("bodies: %zu drawn, %zu triangles\n", bodies.drawn(), bodies.triangles());
   std::printf("steps done %" PRId64 "\nwrote %s\n", session.steps_done(), o.out.c_str());
   return 0;
 }

@@ -1,6 +1,7 @@
 #include "render/body_drawable.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <span>
@@ -18,9 +19,17 @@ namespace {
 namespace sh = shared::body_render;
 using BU = vk::BufferUsageFlagBits;
 
-// Three subdivisions (1280 triangles): a smooth outline at the sizes a body takes on screen, and
-// a small part of a frame's vertices on llvmpipe even for the session's 64 bodies.
-constexpr int kSphereSubdivisions = 3;
+// The sphere's levels of detail: 1 to 4 subdivisions (80 to 5120 triangles). Each body is drawn
+// at the coarsest level whose outline stays within kOutlinePixels of the true sphere's at its size
+// on screen: llvmpipe pays every triangle's setup, and a ball across the pond is a few pixels.
+constexpr int kFirstSubdivision = 1, kLevels = 4;
+constexpr double kOutlinePixels = 0.5;
+
+struct Level {
+  std::uint32_t first_index = 0, index_count = 0;
+  std::int32_t vertex_offset = 0;
+  double longest_edge = 0;  // unit sphere
+};
 
 // Linear colours: a brick red for what pushes the water, a buoy yellow for what floats on it.
 constexpr sh::vec4 kKinematic{0.42f, 0.07f, 0.04f, 0.0f};
@@ -37,25 +46,44 @@ struct BodyDrawable::Impl {
   const FrameLoop& loop;
   BodyPipeline pipe;
   gpu::Buffer points, indices;
-  std::uint32_t index_count = 0;
+  std::array<Level, kLevels> levels{};
   std::vector<gpu::Buffer> instances;  // per frame slot, host-visible
   std::vector<bool> floating;          // per body, as last seen not held (a held body is kinematic)
   std::uint32_t count = 0;             // instances of the last prepared frame
+  std::vector<int> level_of;           // per instance of the last prepared frame
   sh::BodyFrame frame{};
 
   Impl(const gpu::Context& c, const FrameLoop& l)
       : ctx(c), loop(l), pipe(create_body_pipeline(c, l.color_format(), FrameLoop::kDepthFormat)) {
-    const SphereMesh mesh = build_sphere_mesh(kSphereSubdivisions);
-    index_count = static_cast<std::uint32_t>(mesh.indices.size());
-    points = gpu::create_buffer(ctx, mesh.points.size() * sizeof mesh.points[0], BU::eVertexBuffer | BU::eTransferDst,
+    SphereMesh all;  // every level, one after the other
+    for (int k = 0; k < kLevels; ++k) {
+      const SphereMesh mesh = build_sphere_mesh(kFirstSubdivision + k);
+      levels[k] = {static_cast<std::uint32_t>(all.indices.size()), static_cast<std::uint32_t>(mesh.indices.size()),
+                   static_cast<std::int32_t>(all.points.size()), longest_edge(mesh)};
+      all.points.insert(all.points.end(), mesh.points.begin(), mesh.points.end());
+      all.indices.insert(all.indices.end(), mesh.indices.begin(), mesh.indices.end());
+    }
+    points = gpu::create_buffer(ctx, all.points.size() * sizeof all.points[0], BU::eVertexBuffer | BU::eTransferDst,
                                 gpu::MemoryUse::device, "body sphere points");
-    gpu::upload(ctx, points, std::as_bytes(std::span(mesh.points)));
-    indices = gpu::create_buffer(ctx, mesh.indices.size() * 4, BU::eIndexBuffer | BU::eTransferDst,
+    gpu::upload(ctx, points, std::as_bytes(std::span(all.points)));
+    indices = gpu::create_buffer(ctx, all.indices.size() * 4, BU::eIndexBuffer | BU::eTransferDst,
                                  gpu::MemoryUse::device, "body sphere indices");
-    gpu::upload(ctx, indices, std::as_bytes(std::span(mesh.indices)));
+    gpu::upload(ctx, indices, std::as_bytes(std::span(all.indices)));
     for (std::uint32_t k = 0; k < FrameLoop::kFramesInFlight; ++k)
       instances.push_back(gpu::create_buffer(ctx, kMaxBodies * sizeof(sh::BodyInstance), BU::eVertexBuffer,
                                              gpu::MemoryUse::upload, "body instances, slot " + std::to_string(k)));
+  }
+
+  // The coarsest level whose outline is within kOutlinePixels for a sphere (centre c, radius r,
+  // world) seen through view_proj on a target `height` pixels high. Clip w is the view depth, and
+  // |m[5]| h / 2 the pixels per world unit at unit depth; a sphere around the eye gets the finest.
+  int level_for(const float* m, const sh::vec4& sphere, std::uint32_t height) const {
+    const double w = m[3] * sphere.x + m[7] * sphere.y + m[11] * sphere.z + m[15];
+    if (w <= sphere.w) return kLevels - 1;
+    const double radius_px = std::fabs(m[5]) * 0.5 * height * sphere.w / (w - sphere.w);  // its nearest point
+    for (int l = 0; l < kLevels; ++l)
+      if (outline_error_px(radius_px, levels[l].longest_edge) <= kOutlinePixels) return l;
+    return kLevels - 1;
   }
 
   void prepare(const FrameInfo& info) {
@@ -65,6 +93,7 @@ struct BodyDrawable::Impl {
     const double h = session.model().spacing;
     count = static_cast<std::uint32_t>(std::min({states.size(), specs.size(), kMaxBodies}));
     floating.resize(count);
+    level_of.assign(count, 0);
     std::vector<sh::BodyInstance> drawn(count);
     for (std::uint32_t b = 0; b < count; ++b) {
       const bool held = session.held(b);
@@ -74,6 +103,7 @@ struct BodyDrawable::Impl {
                          static_cast<float>(specs[b].radius)};
       drawn[b].albedo = floating[b] ? kFloating : kKinematic;
       drawn[b].albedo.w = held ? 1.0f : 0.0f;
+      level_of[b] = level_for(info.view_proj, drawn[b].sphere, info.extent.height);
     }
     if (count > 0) {
       const gpu::Buffer& buffer = instances[info.slot];
@@ -97,7 +127,10 @@ struct BodyDrawable::Impl {
     const vk::DeviceSize offsets[] = {0, 0};
     cmd.bindVertexBuffers(0, buffers, offsets);
     cmd.bindIndexBuffer(*indices.buffer, 0, vk::IndexType::eUint32);
-    cmd.drawIndexed(index_count, count, 0, 0, 0);
+    for (std::uint32_t b = 0; b < count; ++b) {  // instance b: its own level
+      const Level& l = levels[level_of[b]];
+      cmd.drawIndexed(l.index_count, 1, l.first_index, l.vertex_offset, b);
+    }
   }
 };
 
@@ -111,6 +144,10 @@ BodyDrawable::~BodyDrawable() {
 void BodyDrawable::prepare(const FrameInfo& frame) { impl_->prepare(frame); }
 void BodyDrawable::draw(const FrameInfo& frame) { impl_->draw(frame); }
 std::size_t BodyDrawable::drawn() const { return impl_->count; }
-std::size_t BodyDrawable::sphere_triangles() const { return impl_->index_count / 3; }
+std::size_t BodyDrawable::triangles() const {
+  std::size_t n = 0;
+  for (const int l : impl_->level_of) n += impl_->levels[l].index_count / 3;
+  return n;
+}
 
 }  // namespace pond::render

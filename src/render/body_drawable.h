@@ -1,6 +1,8 @@
 #pragma once
 // The bodies in the water (issue 16) in the frame loop's pass (render/frame_loop.h PassDrawable):
-// lit spheres, one instance of a unit icosphere (render/sphere_mesh.h, built once) per body.
+// lit spheres, one instance of a unit icosphere (render/sphere_mesh.h, built once at four levels
+// of detail) per body, each at the coarsest level whose outline is within half a pixel of the
+// sphere's at its size on screen.
 //
 // Per frame, prepare() reads the session's bodies as they are after the frame's steps
 // (Session::bodies(), grid units, times the spacing) with their radii (Session::scene().bodies,
@@ -28,8 +30,8 @@ class BodyDrawable final : public PassDrawable {
   void prepare(const FrameInfo& frame) override;
   void draw(const FrameInfo& frame) override;
 
-  std::size_t drawn() const;  // bodies in the last prepared frame
-  std::size_t sphere_triangles() const;
+  std::size_t drawn() const;      // bodies in the last prepared frame
+  std::size_t triangles() const;  // their triangles (each at its level of detail)
 
  private:
   struct Impl;

@@ -54,4 +54,20 @@ SphereMesh build_sphere_mesh(int subdivisions) {
   return mesh;
 }
 
+double longest_edge(const SphereMesh& mesh) {
+  double longest = 0;
+  for (std::size_t t = 0; t < mesh.indices.size(); t += 3)
+    for (int k = 0; k < 3; ++k) {
+      const auto& a = mesh.points[mesh.indices[t + k]];
+      const auto& b = mesh.points[mesh.indices[t + (k + 1) % 3]];
+      const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+      longest = std::max(longest, std::sqrt(dx * dx + dy * dy + dz * dz));
+    }
+  return longest;
+}
+
+double outline_error_px(double radius_px, double edge) {
+  return radius_px * (1.0 - std::sqrt(std::max(0.0, 1.0 - 0.25 * edge * edge)));
+}
+
 }  // namespace pond::render

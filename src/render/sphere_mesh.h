@@ -17,4 +17,11 @@ struct SphereMesh {
 // 12 points and 20 triangles at 0 subdivisions; each one multiplies the triangles by 4.
 SphereMesh build_sphere_mesh(int subdivisions);
 
+// The longest edge of `mesh` (unit-sphere units): its coarsest place.
+double longest_edge(const SphereMesh& mesh);
+
+// How far, in pixels, the outline of a sphere `radius_px` pixels in radius drawn with edges of
+// (unit-sphere) length `edge` falls inside the true one: the chord's sagitta, R (1 - sqrt(1 - e^2/4)).
+double outline_error_px(double radius_px, double edge);
+
 }  // namespace pond::render

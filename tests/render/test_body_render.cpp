@@ -154,5 +154,20 @@ TEST(SphereMesh, ClosedUnitAndWoundOutward) {
   }
 }
 
+// The level of detail's premise: each subdivision about halves the longest edge, and the finest
+// level the drawable has (4) keeps the outline within half a pixel up to a radius of 500 px (wider
+// than a 720-pixel-high window).
+TEST(SphereMesh, LevelsHalveTheEdgeAndTheFinestIsSmoothUpClose) {
+  double previous = render::longest_edge(render::build_sphere_mesh(0));
+  for (int s = 1; s <= 4; ++s) {
+    const double edge = render::longest_edge(render::build_sphere_mesh(s));
+    EXPECT_LT(edge, 0.6 * previous) << s;
+    EXPECT_GT(edge, 0.4 * previous) << s;
+    previous = edge;
+  }
+  EXPECT_LE(render::outline_error_px(500.0, previous), 0.5);
+  EXPECT_GT(render::outline_error_px(500.0, render::longest_edge(render::build_sphere_mesh(3))), 0.5);
+}
+
 }  // namespace
 }  // namespace pond::test
