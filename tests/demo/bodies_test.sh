@@ -6,7 +6,8 @@
 #    was and arrived where it was dragged;
 #  - `drop` (the O key at the cursor) drops a floating ball on the water, which shows there;
 #  - `remove-body` removes the scene's floating ball (gone from the picture) and `add-ball` adds one;
-#  - a left drag that starts off every body still orbits the camera (and grabs nothing).
+#  - a left drag that starts off every body still orbits the camera (and grabs nothing);
+#  - bad press, drop, release, remove-body and add-ball lines exit 2 naming the line.
 # Each screenshot is compared with the same run without those events (png_probe: the share of
 # pixels around a point that differ by more than 40 levels).
 # Usage: bodies_test.sh PATH/TO/pond PATH/TO/png_probe TESTS/demo WORKDIR
@@ -26,6 +27,15 @@ SPHERE_X=187; SPHERE_Y=184
 DRAGGED_X=205; DRAGGED_Y=263
 BALL_X=444; BALL_Y=137
 DROP_X=320; DROP_Y=253
+
+# The new script events refuse bad words like the others: exit 2 before any window, naming the line.
+for bad in 'frame 1 remove-body x' 'frame 1 press left 10' 'frame 1 drop 5' 'frame 1 release sideways 1 2' \
+           'frame 1 add-ball now'; do
+  printf 'frame 0 key F2\n%s\n' "$bad" > "$work/bad.script"
+  env -u DISPLAY "$pond" demo --frames 3 --script "$work/bad.script" > /dev/null 2> "$work/bad.stderr"
+  rc=$?
+  [ $rc -eq 2 ] && grep -q "line 2" "$work/bad.stderr" || fail "'$bad': exit $rc, $(cat "$work/bad.stderr")"
+done
 
 cat > "$work/bodies.script" <<SCRIPT
 frame 0 key F2
