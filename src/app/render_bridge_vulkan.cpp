@@ -11,6 +11,7 @@
 #include "app/render_bridge.h"
 #include "core/errors.h"
 #include "gpu/context.h"
+#include "render/body_drawable.h"
 #include "render/frame_loop.h"
 #include "core/png.h"
 #include "render/render_target.h"
@@ -68,6 +69,8 @@ int run_render(const RenderOptions& o) {
   render::FrameLoop loop(ctx, session, render::RenderTarget::kFormat);
   std::optional<render::TreeDrawable> trees;  // the scene's wind trees, in the water's pass
   if (scene.tree) loop.add_drawable(trees.emplace(ctx, loop, *scene.tree, scene.wind));
+  render::BodyDrawable bodies(ctx, loop);  // the scene's bodies, as the session moves them
+  loop.add_drawable(bodies);
   render::FrameView view;
   view.camera = loop.default_camera(o.width, o.height);
   if (o.eye) view.camera.eye = *o.eye;
@@ -116,6 +119,8 @@ int run_render(const RenderOptions& o) {
                 scene.tree->draw == tree::TreeDraw::lines ? "lines" : "tubes", scene.wind.strength,
                 scene.wind.direction_deg, trees->wind_time());
   }
+  if (bodies.drawn() > 0)
+    std::printf("bodies: %zu drawn, %zu triangles\n", bodies.drawn(), bodies.triangles());
   print_effect_costs(loop, target, view, o.frames);
   std::printf("steps done %" PRId64 "\nwrote %s\n", session.steps_done(), o.out.c_str());
   return 0;

@@ -33,6 +33,7 @@ constexpr KeyBinding kBindings[] = {
     {GLFW_KEY_COMMA, Action::steps_down, "", ""},
     {GLFW_KEY_G, Action::solver, "G", "solver: GPU <-> CPU (state carried over)"},
     {GLFW_KEY_D, Action::rain, "D", "rain (random drops)"},
+    {GLFW_KEY_O, Action::drop_ball, "O", "drop a floating ball where the cursor points"},
     {GLFW_KEY_F3, Action::vsync, "F3", "vsync on / off"},
     {GLFW_KEY_F12, Action::screenshot, "F12", "screenshot -> pond-NNNN.png"},
     {GLFW_KEY_ESCAPE, Action::quit, "Esc", "quit"},
@@ -59,7 +60,10 @@ void InputDispatch::dispatch(const InputEvent& e, bool ui_mouse, bool ui_keyboar
       }
       for (const KeyBinding& b : kBindings)
         if (b.key == e.code) {
-          target.on_action(b.action);
+          if (b.action == Action::drop_ball)  // needs the cursor, which only the dispatch knows
+            target.on_drop_ball(x_, y_);
+          else
+            target.on_action(b.action);
           return;
         }
       return;
@@ -71,10 +75,16 @@ void InputDispatch::dispatch(const InputEvent& e, bool ui_mouse, bool ui_keyboar
       if (e.action == GLFW_PRESS) {
         if (ui_mouse) return;  // a press on the panel is the panel's
         down_[b] = true, dragged_[b] = false, press_x_[b] = e.x, press_y_[b] = e.y;
+        if (b == GLFW_MOUSE_BUTTON_LEFT) grabbing_ = target.on_grab(e.x, e.y);
         return;
       }
       if (!down_[b]) return;
       down_[b] = false;
+      if (b == GLFW_MOUSE_BUTTON_LEFT && grabbing_) {  // a held body is let go, no splash
+        grabbing_ = false;
+        target.on_grab_release(e.x, e.y);
+        return;
+      }
       if (b == GLFW_MOUSE_BUTTON_LEFT && !dragged_[b]) {
         const bool is_double = now - last_click_time_ < kDoubleClickSeconds &&
                                std::hypot(e.x - last_click_x_, e.y - last_click_y_) < kDragThresholdPx;
@@ -92,7 +102,8 @@ void InputDispatch::dispatch(const InputEvent& e, bool ui_mouse, bool ui_keyboar
       x_ = e.x, y_ = e.y;
       for (int b = 0; b < 3; ++b)
         if (down_[b] && std::hypot(e.x - press_x_[b], e.y - press_y_[b]) >= kDragThresholdPx) dragged_[b] = true;
-      if (down_[GLFW_MOUSE_BUTTON_LEFT] && dragged_[GLFW_MOUSE_BUTTON_LEFT]) target.on_orbit(dx, dy);
+      if (grabbing_) target.on_grab_move(e.x, e.y);
+      else if (down_[GLFW_MOUSE_BUTTON_LEFT] && dragged_[GLFW_MOUSE_BUTTON_LEFT]) target.on_orbit(dx, dy);
       if (down_[GLFW_MOUSE_BUTTON_MIDDLE] && dragged_[GLFW_MOUSE_BUTTON_MIDDLE]) target.on_pan(dx, dy);
       if (down_[GLFW_MOUSE_BUTTON_RIGHT] && dragged_[GLFW_MOUSE_BUTTON_RIGHT])
         target.on_wind_drag(press_x_[GLFW_MOUSE_BUTTON_RIGHT], press_y_[GLFW_MOUSE_BUTTON_RIGHT], e.x, e.y);
@@ -105,6 +116,8 @@ void InputDispatch::dispatch(const InputEvent& e, bool ui_mouse, bool ui_keyboar
     case InputEvent::Kind::screenshot:
     case InputEvent::Kind::minimize:
     case InputEvent::Kind::restore:
+    case InputEvent::Kind::remove_body:
+    case InputEvent::Kind::add_ball:
       return;  // handled by the app (window, swapchain, files), not gestures
   }
 }

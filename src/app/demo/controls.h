@@ -12,7 +12,7 @@ namespace pond::app::demo {
 
 enum class Action {
   quit, help, panel, pause, step, reset_water, reset_camera, border, all_vertical, islands, wireframe,
-  tau_up, tau_down, solver, rain, screenshot, vsync, steps_up, steps_down, reflections
+  tau_up, tau_down, solver, rain, screenshot, vsync, steps_up, steps_down, reflections, drop_ball
 };
 
 // The LOD tolerance one step up or down the table 0, 0.25, 0.5, 1, 2, 4, 8, 16, 32 px (keys ] and [).
@@ -43,6 +43,13 @@ class ControlTarget {
   virtual void on_wind_drag(double /*x0*/, double /*y0*/, double /*x*/, double /*y*/) {}
   virtual void on_wind_strength(int /*digit 1-9*/) {}
   virtual void on_new_tree(double /*x*/, double /*y*/) {}
+  // The bodies in the water: a left press at (x, y) returns true when it grabbed a body (then the
+  // left drag moves it and the release lets it go, instead of orbiting or splashing); the drop key
+  // drops a floating ball where the cursor is.
+  virtual bool on_grab(double /*x*/, double /*y*/) { return false; }
+  virtual void on_grab_move(double /*x*/, double /*y*/) {}
+  virtual void on_grab_release(double /*x*/, double /*y*/) {}
+  virtual void on_drop_ball(double /*x*/, double /*y*/) {}
 };
 
 // Turns events into gestures. Keeps the button and cursor state between events.
@@ -57,6 +64,7 @@ class InputDispatch {
   bool dragged_[3] = {false, false, false};
   double press_x_[3] = {}, press_y_[3] = {};
   double x_ = 0, y_ = 0;
+  bool grabbing_ = false;  // the left button holds a body (ControlTarget::on_grab)
   double last_click_time_ = -1e9, last_click_x_ = 0, last_click_y_ = 0;
 };
 

@@ -13,6 +13,8 @@
 #include <random>
 
 #include "app/demo/app_lifetime.h"
+#include "app/demo/bodies_panel.h"
+#include "app/demo/body_grab.h"
 #include "app/demo/controls.h"
 #include "app/demo/demo_settings.h"
 #include "app/demo/imgui_panel.h"
@@ -28,6 +30,7 @@
 #include "core/errors.h"
 #include "core/output_file.h"
 #include "gpu/context.h"
+#include "render/body_drawable.h"
 #include "render/frame_loop.h"
 #include "gpu/gpu_solver.h"
 #include "render/tree_drawable.h"
@@ -91,6 +94,11 @@ class DemoApp final : public ControlTarget {
   void on_new_tree(double /*x*/, double /*y*/) override {
     if (tree_) tree_->regrow(tree_->spec().seed + 1);
   }
+  // The bodies in the water: left drag on one, the drop key, the bodies window, script events.
+  bool on_grab(double x, double y) override;
+  void on_grab_move(double x, double y) override { grab_.move_cursor(x, y); }
+  void on_grab_release(double x, double y) override;
+  void on_drop_ball(double x, double y) override;
 
  private:
   static gpu::WindowSurface window_surface(const Window& window) {
@@ -101,6 +109,13 @@ class DemoApp final : public ControlTarget {
   void build_loop();
   void apply_requests(const PanelRequests& req);
   void make_rain();
+  void add_ball(const std::array<double, 3>& position);
+  std::array<double, 3> middle_of_pond() const {  // where the bodies window adds a ball
+    const sim::WaterModel& m = session_->model();
+    return {0.5 * (m.cols - 1) * m.spacing, 3.0 * m.spacing, 0.5 * (m.rows - 1) * m.spacing};
+  }
+  void remove_body(std::size_t index);
+  void notice(const std::string& text);  // the panel's message, and stdout unless --quiet
   void draw_ui();
   bool draw_frame(const std::string* screenshot_path);  // false: swapchain out of date, retry
   lod::Camera current_camera() const {
@@ -124,15 +139,18 @@ class DemoApp final : public ControlTarget {
   std::unique_ptr<sim::Session> session_;  // the water: splashes, edits, solver switches go here
   std::unique_ptr<render::FrameLoop> loop_;
   std::optional<render::TreeDrawable> tree_;  // the scene's wind tree; waits for the device when destroyed
+  std::optional<render::BodyDrawable> bodies_;  // the session's bodies; waits for the device when destroyed
   IdleBeforeTeardown idle_;
 
   DemoSettings settings_;
   DemoStats stats_;
   OrbitCamera camera_;
   InputDispatch input_;
+  BodyGrab grab_;
   std::optional<std::string> pending_shot_;
   int shot_counter_ = 0;
   bool quit_ = false;
+  std::int64_t frame_ = 0;  // the frame being prepared (notices name it)
   double rain_carry_ = 0;
   double acquire_ms_ = 0, present_ms_ = 0;  // the last frame's waits in the swapchain
   std::mt19937 rng_{12345};  // deterministic rain: scripted runs repeat
@@ -161,6 +179,9 @@ void DemoApp::build_loop() {
     tree_->set_manual_clock();  // the water runs faster than real time; the wind runs in real time
     loop_->add_drawable(*tree_);
   }
+  bodies_.reset();
+  bodies_.emplace(ctx_, *loop_);
+  loop_->add_drawable(*bodies_);
   loop_->add_drawable(imgui_);
 }
 
@@ -197,6 +218,7 @@ void DemoApp::on_action(Action action) {
       break;
     case Action::rain: settings_.rain.on = !settings_.rain.on; break;
     case Action::vsync: settings_.vsync = !settings_.vsync; break;
+    case Action::drop_ball: break;  // needs the cursor: InputDispatch calls on_drop_ball
     case Action::screenshot: {
       char name[32];
       std::snprintf(name, sizeof name, "pond-%04d.png", shot_counter_++);
@@ -246,6 +268,72 @@ void DemoApp::on_splash(double x, double y, SplashKind kind) {
   char text[96];
   std::snprintf(text, sizeof text, "splash at row %.1f col %.1f", hit->row, hit->col);
   settings_.message = text;
+}
+
+void DemoApp::notice(const std::string& text) {
+  settings_.message = text;
+  if (!options_.quiet) std::printf("pond demo: frame %lld: %s\n", static_cast<long long>(frame_), text.c_str());
+}
+
+bool DemoApp::on_grab(double x, double y) {
+  const std::optional<std::size_t> b = grab_.grab(*session_, pixel_ray(current_camera(), x, y));
+  if (!b) return false;
+  grab_.move_cursor(x, y);
+  notice("holding body " + std::to_string(*b));
+  return true;
+}
+
+void DemoApp::on_grab_release(double x, double y) {
+  if (!grab_.active()) return;
+  grab_.move_cursor(x, y);
+  const std::size_t b = grab_.index();
+  const std::array<double, 3> v = grab_.release(*session_);
+  const sim::BodyState s = session_->bodies()[b];
+  const double h = session_->model().spacing;
+  char text[160];
+  std::snprintf(text, sizeof text, "released body %zu at (%.2f, %.2f, %.2f) with velocity (%.3f, %.3f, %.3f)", b,
+                s.x * h, s.y * h, s.z * h, v[0], v[1], v[2]);
+  notice(text);
+}
+
+// A floating ball of radius 2 h and mass 30 (the scenes' balls), its bottom one spacing above the
+// water where the cursor points.
+void DemoApp::on_drop_ball(double x, double y) {
+  const sim::WaterModel& model = session_->model();
+  const sim::WaterState state = session_->state();  // rare (a key): the copy is fine
+  const std::optional<SurfaceHit> hit = intersect_surface(pixel_ray(current_camera(), x, y), model, state);
+  if (!hit) {
+    notice("no ball dropped: the cursor is not over the water");
+    return;
+  }
+  const double h = model.spacing;
+  add_ball({hit->col * h, 3.0 * h, hit->row * h});
+}
+
+void DemoApp::add_ball(const std::array<double, 3>& position) {
+  const double h = session_->model().spacing;
+  const sim::BodySpec ball{.shape = sim::BodyShape::sphere, .motion = sim::BodyMotion::floating, .radius = 2.0 * h,
+                           .mass = 30.0, .position = position, .velocity = {}, .path = {}};
+  try {
+    session_->add_body(ball);
+  } catch (const InputError& e) {
+    notice(std::string("no ball added: ") + e.what());
+    return;
+  }
+  char text[128];
+  std::snprintf(text, sizeof text, "body %zu: a ball dropped at (%.2f, %.2f, %.2f)", session_->scene().bodies.size() - 1,
+                position[0], position[1], position[2]);
+  notice(text);
+}
+
+void DemoApp::remove_body(std::size_t index) {
+  if (index >= session_->scene().bodies.size()) {
+    notice("no body " + std::to_string(index) + " to remove");
+    return;
+  }
+  session_->remove_body(index);
+  grab_.body_removed(index);
+  notice("removed body " + std::to_string(index));
 }
 
 void DemoApp::apply_requests(const PanelRequests& req) {
@@ -308,9 +396,13 @@ void DemoApp::draw_ui() {
   ImGui::NewFrame();
   PanelRequests req;
   if (settings_.show_panel) req = draw_panel(settings_, stats_, tree_ ? &*tree_ : nullptr);
+  BodyRequests bodies;
+  if (settings_.show_panel) bodies = draw_bodies_panel(*session_, io.DisplaySize.x);
   if (settings_.show_help) draw_help_overlay(settings_.show_help);
   ImGui::Render();
   apply_requests(req);
+  if (bodies.remove) remove_body(*bodies.remove);
+  if (bodies.add_ball) add_ball(middle_of_pond());
 }
 
 bool DemoApp::draw_frame(const std::string* screenshot_path) {
@@ -323,6 +415,7 @@ bool DemoApp::draw_frame(const std::string* screenshot_path) {
     if (settings_.step_once) steps = std::max<std::int64_t>(steps, 1), settings_.step_once = false;
     const render::FrameView view{.camera = current_camera(), .lod_tolerance_px = settings_.lod_tolerance_px,
                               .wireframe = settings_.wireframe, .steps = steps, .effects = settings_.effects};
+    grab_.drag(*session_, view.camera, steps);  // a held body toward the cursor over these steps
     loop_->simulate(view, swapchain_.extent());
   }
   const Clock::time_point t0 = Clock::now();
@@ -357,6 +450,7 @@ int DemoApp::run() {
   std::int64_t frame = 0, minimized_frames = 0;
   RunTotals totals;
   while (!quit_ && (options_.frames == 0 || frame < options_.frames)) {
+    frame_ = frame;
     window_.poll();
     if (window_.should_close()) break;
     // This frame's script events join the window's, in the same dispatch.
@@ -371,6 +465,10 @@ int DemoApp::run() {
         window_.restore();
       } else if (e.kind == InputEvent::Kind::screenshot) {
         take_screenshot_next(script_.screenshots[static_cast<std::size_t>(e.screenshot)]);
+      } else if (e.kind == InputEvent::Kind::remove_body) {
+        remove_body(static_cast<std::size_t>(e.code));
+      } else if (e.kind == InputEvent::Kind::add_ball) {
+        add_ball(middle_of_pond());
       } else {
         events.push_back(e);
       }

@@ -171,6 +171,7 @@ void draw_help_overlay(bool& open) {
       ImGui::TextUnformatted(meaning);
     };
     row("left drag", "orbit the camera");
+    row("left drag on a body", "move it through the water");
     row("middle drag", "pan");
     row("wheel", "zoom");
     row("left click", "splash (velocity kick)");

@@ -75,4 +75,29 @@ std::optional<SurfaceHit> intersect_surface(const Ray& ray, const sim::WaterMode
   return best;
 }
 
+std::optional<std::size_t> pick_sphere(const Ray& ray, std::span<const Sphere> spheres) {
+  std::optional<std::size_t> best;
+  double best_t = 0;
+  for (std::size_t k = 0; k < spheres.size(); ++k) {
+    // |o + t d - c|^2 = r^2 with |d| = 1: t^2 + 2 b t + c2 = 0; the nearer root in front.
+    const Vec oc = sub(ray.origin, spheres[k].centre);
+    const double b = dot(oc, ray.direction);
+    const double c2 = dot(oc, oc) - spheres[k].radius * spheres[k].radius;
+    const double disc = b * b - c2;
+    if (disc < 0) continue;
+    const double root = std::sqrt(disc);
+    const double t = -b - root >= 0 ? -b - root : -b + root;  // from inside: the far side
+    if (t < 0) continue;
+    if (!best || t < best_t) best = k, best_t = t;
+  }
+  return best;
+}
+
+std::optional<std::array<double, 3>> intersect_height(const Ray& ray, double height) {
+  if (std::fabs(ray.direction[1]) < 1e-9) return std::nullopt;
+  const double t = (height - ray.origin[1]) / ray.direction[1];
+  if (t <= 0) return std::nullopt;
+  return Vec{ray.origin[0] + t * ray.direction[0], height, ray.origin[2] + t * ray.direction[2]};
+}
+
 }  // namespace pond::app::demo

@@ -69,6 +69,10 @@ class LineParser {
 
 using Kind = InputEvent::Kind;
 
+constexpr const char* kEvents =
+    "key, click, drag, press, move, release, drop, remove-body, add-ball, scroll, resize, screenshot, minimize, "
+    "restore";
+
 }  // namespace
 
 int key_from_name(const std::string& name) {
@@ -110,7 +114,7 @@ Script parse_script(const std::string& text, const std::string& source) {
       e.scripted = true;
       script.events.push_back({frame, e});
     };
-    const std::string verb = p.word("event (key, click, drag, scroll, resize, screenshot, minimize, restore)");
+    const std::string verb = p.word((std::string("event (") + kEvents + ")").c_str());
     if (verb == "key") {
       const std::string name = p.word("key name");
       const int key = key_from_name(name);
@@ -136,6 +140,30 @@ Script parse_script(const std::string& text, const std::string& source) {
       add({.kind = Kind::button, .code = button, .action = GLFW_PRESS, .mods = mods, .x = x0, .y = y0});
       add({.kind = Kind::cursor, .x = x1, .y = y1});
       add({.kind = Kind::button, .code = button, .action = GLFW_RELEASE, .mods = mods, .x = x1, .y = y1});
+    } else if (verb == "press" || verb == "release") {
+      // A drag spread over frames (with `move`): on a body, press grabs it and release lets it go.
+      const std::string b = p.word("button (left, middle, right)");
+      const int button = b == "left" ? GLFW_MOUSE_BUTTON_LEFT
+                         : b == "middle" ? GLFW_MOUSE_BUTTON_MIDDLE
+                         : b == "right" ? GLFW_MOUSE_BUTTON_RIGHT : -1;
+      if (button < 0) p.fail("unknown button '" + b + "' (left, middle, right)");
+      const double x = p.number("x"), y = p.number("y");
+      const int mods = p.modifiers();
+      add({.kind = Kind::cursor, .x = x, .y = y});
+      add({.kind = Kind::button, .code = button, .action = verb == "press" ? GLFW_PRESS : GLFW_RELEASE, .mods = mods,
+           .x = x, .y = y});
+    } else if (verb == "move") {
+      const double x = p.number("x"), y = p.number("y");
+      add({.kind = Kind::cursor, .x = x, .y = y});
+    } else if (verb == "drop") {  // the cursor to (x, y), then the drop-a-ball key
+      const double x = p.number("x"), y = p.number("y");
+      add({.kind = Kind::cursor, .x = x, .y = y});
+      add({.kind = Kind::key, .code = GLFW_KEY_O, .action = GLFW_PRESS});
+      add({.kind = Kind::key, .code = GLFW_KEY_O, .action = GLFW_RELEASE});
+    } else if (verb == "remove-body") {
+      add({.kind = Kind::remove_body, .code = static_cast<int>(p.integer("body index", 0, 1 << 20))});
+    } else if (verb == "add-ball") {
+      add({.kind = Kind::add_ball});
     } else if (verb == "scroll") {
       add({.kind = Kind::scroll, .x = 0, .y = p.number("scroll amount")});
     } else if (verb == "resize") {
@@ -151,7 +179,7 @@ Script parse_script(const std::string& text, const std::string& source) {
       script.screenshots.push_back(file);
       add({.kind = Kind::screenshot, .screenshot = static_cast<int>(script.screenshots.size() - 1)});
     } else {
-      p.fail("unknown event '" + verb + "' (key, click, drag, scroll, resize, screenshot, minimize, restore)");
+      p.fail("unknown event '" + verb + "' (" + kEvents + ")");
     }
     p.end();
   }

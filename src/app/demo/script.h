@@ -7,6 +7,13 @@
 //                                             a splash; shift = position, ctrl = explosion
 //   frame N drag left|middle|right X0 Y0 X1 Y1  press at (X0, Y0), move to (X1, Y1), release
 //                                             (left = orbit, middle = pan, right = tree wind)
+//   frame N press left|middle|right X Y [mods]  press a button at (X, Y) and keep it down
+//   frame N move X Y                          move the cursor (a drag over several frames)
+//   frame N release left|middle|right X Y     release the button there; a left press on a body
+//                                             grabs it, the moves drag it, the release lets it go
+//   frame N drop X Y                          the cursor to (X, Y), then key O: drop a ball there
+//   frame N remove-body I                     the panel's "remove" of body I
+//   frame N add-ball                          the panel's "add ball"
 //   frame N scroll DY                         mouse wheel (DY > 0 zooms in)
 //   frame N resize W H                        resize the window to W x H
 //   frame N screenshot FILE                   save frame N as a PNG (written atomically)

@@ -1,0 +1,29 @@
+#version 460
+// The bodies (render/body_drawable.h): the unit sphere placed at each instance's centre and scaled
+// by its radius. The frame's constants go on to body.frag as flat varyings.
+#extension GL_GOOGLE_include_directive : require
+
+#include "shared/body_render.h"
+
+layout(push_constant) uniform Frame { BodyFrame f; };
+
+layout(location = kBodyAttribPoint) in vec4 in_point;
+layout(location = kBodyAttribSphere) in vec4 in_sphere;
+layout(location = kBodyAttribAlbedo) in vec4 in_albedo;
+
+layout(location = 0) out vec3 out_world;
+layout(location = 1) out vec3 out_normal;
+layout(location = kBodyFlatEye) flat out vec3 out_eye;
+layout(location = kBodyFlatSun) flat out vec3 out_sun;
+layout(location = kBodyFlatSky) flat out vec3 out_sky;
+layout(location = kBodyFlatAlbedo) flat out vec4 out_albedo;
+
+void main() {
+  out_world = in_sphere.xyz + in_point.xyz * in_sphere.w;
+  out_normal = in_point.xyz;
+  out_eye = f.eye.xyz;
+  out_sun = f.sun.xyz;
+  out_sky = f.sky.rgb;
+  out_albedo = in_albedo;
+  gl_Position = f.view_proj * vec4(out_world, 1.0);
+}

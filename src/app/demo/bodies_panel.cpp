@@ -1,0 +1,40 @@
+#include "app/demo/bodies_panel.h"
+
+#include <imgui.h>
+
+namespace pond::app::demo {
+
+BodyRequests draw_bodies_panel(const sim::Session& session, float width) {
+  BodyRequests req;
+  constexpr float kWidth = 300;
+  ImGui::SetNextWindowPos(ImVec2(width - kWidth - 10, 10), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(kWidth, 0), ImGuiCond_FirstUseEver);
+  // Collapsed at first, like the panel's closed sections: on lavapipe every panel pixel costs.
+  ImGui::SetNextWindowCollapsed(session.scene().bodies.empty(), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("bodies (O: drop a ball)")) {
+    ImGui::End();
+    return req;
+  }
+  const auto& bodies = session.scene().bodies;
+  if (bodies.empty()) ImGui::TextDisabled("no bodies: O drops a ball where the cursor points");
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const sim::BodySpec& spec = bodies[b];
+    ImGui::PushID(static_cast<int>(b));
+    if (session.held(b))
+      ImGui::Text("%zu  held (dragged)  r %.2f", b, spec.radius);
+    else if (spec.motion == sim::BodyMotion::floating)
+      ImGui::Text("%zu  floating  mass %.1f  r %.2f", b, spec.mass, spec.radius);
+    else
+      ImGui::Text("%zu  kinematic  r %.2f", b, spec.radius);
+    ImGui::SameLine(kWidth - 75);
+    if (ImGui::SmallButton("remove")) req.remove = b;
+    ImGui::PopID();
+  }
+  if (ImGui::Button("add ball")) req.add_ball = true;
+  ImGui::SameLine();
+  ImGui::TextDisabled("left drag a body to move it");
+  ImGui::End();
+  return req;
+}
+
+}  // namespace pond::app::demo

@@ -1,0 +1,41 @@
+#pragma once
+// The bodies in the water (issue 16) in the frame loop's pass (render/frame_loop.h PassDrawable):
+// lit spheres, one instance of a unit icosphere (render/sphere_mesh.h, built once at four levels
+// of detail) per body, each at the coarsest level whose outline is within half a pixel of the
+// sphere's at its size on screen.
+//
+// Per frame, prepare() reads the session's bodies as they are after the frame's steps
+// (Session::bodies(), grid units, times the spacing) with their radii (Session::scene().bodies,
+// world units) and writes them into the slot's host-visible instance buffer (flushed: it need not
+// be coherent); draw() draws every instance. Kinematic bodies are brick red, floating ones buoy
+// yellow; a body the demo holds (Session::held) is drawn lighter. A body's part under the water is
+// depth-tested against the surface like everything else.
+#include <cstddef>
+#include <memory>
+
+#include "render/frame_loop.h"
+
+namespace pond::render {
+
+class BodyDrawable final : public PassDrawable {
+ public:
+  static constexpr std::size_t kMaxBodies = 64;  // the session's limit (sim::Session::add_body)
+
+  // Uses the loop's colour format and session (which must outlive the drawable).
+  BodyDrawable(const gpu::Context& ctx, const FrameLoop& loop);
+  ~BodyDrawable() override;
+  BodyDrawable(const BodyDrawable&) = delete;
+  BodyDrawable& operator=(const BodyDrawable&) = delete;
+
+  void prepare(const FrameInfo& frame) override;
+  void draw(const FrameInfo& frame) override;
+
+  std::size_t drawn() const;      // bodies in the last prepared frame
+  std::size_t triangles() const;  // their triangles (each at its level of detail)
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace pond::render

@@ -1,0 +1,49 @@
+#include "render/body_pipeline.h"
+
+#include <cstddef>
+
+#include "render/graphics_pipeline.h"
+#include "shared/body_render.h"
+
+namespace pond::render {
+namespace {
+#include "body_frag.spv.h"
+#include "body_vert.spv.h"
+
+namespace sh = shared::body_render;
+}  // namespace
+
+BodyPipeline create_body_pipeline(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format) {
+  BodyPipeline p;
+  const vk::PushConstantRange push{.stageFlags = vk::ShaderStageFlagBits::eVertex, .offset = 0,
+                                   .size = sizeof(sh::BodyFrame)};
+  p.layout = vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo{.pushConstantRangeCount = 1,
+                                                                                 .pPushConstantRanges = &push});
+  const vk::VertexInputBindingDescription bindings[] = {
+      {.binding = 0, .stride = 4 * sizeof(float), .inputRate = vk::VertexInputRate::eVertex},
+      {.binding = 1, .stride = sizeof(sh::BodyInstance), .inputRate = vk::VertexInputRate::eInstance}};
+  constexpr auto f4 = vk::Format::eR32G32B32A32Sfloat;
+  const vk::VertexInputAttributeDescription attributes[] = {
+      {.location = sh::kBodyAttribPoint, .binding = 0, .format = f4, .offset = 0},
+      {.location = sh::kBodyAttribSphere, .binding = 1, .format = f4, .offset = offsetof(sh::BodyInstance, sphere)},
+      {.location = sh::kBodyAttribAlbedo, .binding = 1, .format = f4, .offset = offsetof(sh::BodyInstance, albedo)}};
+  const vk::PipelineVertexInputStateCreateInfo vertex_input{.vertexBindingDescriptionCount = 2,
+                                                            .pVertexBindingDescriptions = bindings,
+                                                            .vertexAttributeDescriptionCount = 3,
+                                                            .pVertexAttributeDescriptions = attributes};
+  const vk::PipelineInputAssemblyStateCreateInfo assembly{.topology = vk::PrimitiveTopology::eTriangleList};
+  const vk::PipelineRasterizationStateCreateInfo raster{.polygonMode = vk::PolygonMode::eFill,
+                                                        .cullMode = vk::CullModeFlagBits::eBack,
+                                                        .frontFace = vk::FrontFace::eCounterClockwise,
+                                                        .lineWidth = 1.0f};
+  const vk::PipelineDepthStencilStateCreateInfo depth{
+      .depthTestEnable = VK_TRUE, .depthWriteEnable = VK_TRUE, .depthCompareOp = vk::CompareOp::eLessOrEqual};
+  using CC = vk::ColorComponentFlagBits;
+  const vk::PipelineColorBlendAttachmentState blend{.colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
+  p.pipeline = create_graphics_pipeline(ctx, p.layout, color_format, depth_format,
+                                        {pond_spirv_body_vert, pond_spirv_body_frag, vertex_input, assembly, raster,
+                                         depth, blend, "bodies"});
+  return p;
+}
+
+}  // namespace pond::render

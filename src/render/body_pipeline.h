@@ -1,0 +1,17 @@
+#pragma once
+// The bodies' graphics pipeline (dynamic rendering into the frame loop's colour format and depth):
+// the unit sphere (binding 0, per vertex) instanced per body (binding 1, per instance), the frame's
+// camera and light as push constants (shared/body_render.h), depth-tested and written, back faces
+// culled (a sphere is only seen from outside).
+#include "gpu/context.h"
+
+namespace pond::render {
+
+struct BodyPipeline {
+  vk::raii::PipelineLayout layout = nullptr;
+  vk::raii::Pipeline pipeline = nullptr;
+};
+
+BodyPipeline create_body_pipeline(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format);
+
+}  // namespace pond::render

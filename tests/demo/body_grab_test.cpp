@@ -1,0 +1,75 @@
+// The demo's hold on a body (src/app/demo/body_grab.h) on a CPU session, no window: a ray through a
+// ball grabs it and one that misses every body grabs nothing; dragged along +x frame by frame the
+// ball follows the cursor and is held; let go, it floats on along +x with about the drag's speed.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "app/demo/body_grab.h"
+#include "scene/scene.h"
+
+namespace pond::app::demo {
+namespace {
+
+// A still pond with one floating ball at (20, 1.5, 20) (world, spacing 1), seen from above.
+const char* kBall = R"({"grid": {"rows": 41, "cols": 41}, "physics": {"gravity": 0.05},
+  "bodies": [{"shape": "sphere", "radius": 2.5, "motion": "floating", "mass": 30.0,
+              "position": [20.0, 1.5, 20.0]}]})";
+
+lod::Camera above() {
+  lod::Camera c;
+  c.eye = {20.0, 60.0, 30.0};
+  c.target = {20.0, 0.0, 20.0};
+  c.fovy_degrees = 45;
+  c.width = 400, c.height = 400;
+  return c;
+}
+
+TEST(BodyGrab, DragsAFloatingBallAndLetsItGoWithTheDragsVelocity) {
+  sim::Session session(scene::parse_scene(kBall, "test"), sim::SolverChoice{.gpu = false});
+  const lod::Camera camera = above();
+  BodyGrab grab;
+  EXPECT_FALSE(grab.grab(session, pixel_ray(camera, 5, 5)).has_value());  // the corner: water only
+  const std::optional<std::size_t> b = grab.grab(session, pixel_ray(camera, 200, 200));
+  ASSERT_TRUE(b.has_value());
+  EXPECT_EQ(*b, 0u);
+  const double x0 = session.bodies()[0].x;
+  // 20 frames of one step, the cursor 3 pixels to the right each frame.
+  for (int f = 1; f <= 20; ++f) {
+    grab.move_cursor(200 + 3 * f, 200);
+    grab.drag(session, camera, 1);
+    session.advance(1);
+    EXPECT_TRUE(session.held(0));
+  }
+  const sim::BodyState held = session.bodies()[0];
+  EXPECT_GT(held.x - x0, 3.0);           // it followed the cursor to the right
+  EXPECT_NEAR(held.z, 20.0, 0.5);        // and not sideways
+  const std::array<double, 3> v = grab.release(session);
+  EXPECT_FALSE(grab.active());
+  EXPECT_FALSE(session.held(0));
+  EXPECT_EQ(session.scene().bodies[0].motion, sim::BodyMotion::floating);
+  // The drag's velocity: its displacement a frame over a step's time, along +x.
+  const double per_step = (held.x - x0) / 20.0 / session.scene().physics.dt;
+  EXPECT_NEAR(v[0], per_step, 0.25 * per_step);
+  EXPECT_EQ(v[1], 0.0);
+  EXPECT_NEAR(v[2], 0.0, 0.05 * per_step);
+  session.advance(5);
+  EXPECT_GT(session.bodies()[0].x, held.x);  // it glides on
+}
+
+// Removing bodies keeps the hold on the same body, or ends it when that body goes.
+TEST(BodyGrab, FollowsRemovedBodies) {
+  sim::Session session(scene::parse_scene(kBall, "test"), sim::SolverChoice{.gpu = false});
+  session.add_body({.shape = sim::BodyShape::sphere, .motion = sim::BodyMotion::floating, .radius = 2.0, .mass = 30.0,
+                    .position = {30.0, 1.5, 30.0}, .velocity = {}, .path = {}});
+  BodyGrab grab;
+  ASSERT_TRUE(grab.grab(session, pixel_ray(above(), 200, 200)).has_value());
+  grab.body_removed(1);
+  ASSERT_TRUE(grab.active());
+  EXPECT_EQ(grab.index(), 0u);
+  grab.body_removed(0);
+  EXPECT_FALSE(grab.active());
+}
+
+}  // namespace
+}  // namespace pond::app::demo
