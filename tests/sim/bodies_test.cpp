@@ -167,7 +167,8 @@ double spring_force_y(const WaterState& s, const WaterModel& m, int i, int j) {
     for (int dj = -1; dj <= 1; ++dj) {
       if ((di == 0 && dj == 0) || i + di < 0 || j + dj < 0 || i + di >= m.rows || j + dj >= m.cols) continue;
       const std::size_t b = static_cast<std::size_t>(i + di) * m.cols + (j + dj);
-      const double dx = dj + s.ux[b] - s.ux[a], dy = s.uy[b] - s.uy[a], dz = di + s.uz[b] - s.uz[a];
+      const double dx = static_cast<double>(dj) + s.ux[b] - s.ux[a], dy = static_cast<double>(s.uy[b]) - s.uy[a],
+                   dz = static_cast<double>(di) + s.uz[b] - s.uz[a];
       const double rest = ratio * std::sqrt(static_cast<double>(di * di + dj * dj));
       f += dy * (1 - rest / std::sqrt(dx * dx + dy * dy + dz * dz));
     }
@@ -195,7 +196,8 @@ TEST(Bodies, AFloatingBallComesToRestCarriedByTheSprings) {
   for (int i = 0; i < m.rows; ++i)
     for (int j = 0; j < m.cols; ++j) {
       const std::size_t n = static_cast<std::size_t>(i) * m.cols + j;
-      const double dx = j + st.ux[n] - b.x, dy = st.uy[n] - b.y, dz = i + st.uz[n] - b.z;
+      const double dx = static_cast<double>(j) + st.ux[n] - b.x, dy = static_cast<double>(st.uy[n]) - b.y,
+                   dz = static_cast<double>(i) + st.uz[n] - b.z;
       if (std::fabs(std::sqrt(dx * dx + dy * dy + dz * dz) - 3.0) < 1e-3 && dy < 0) {
         carried += spring_force_y(st, m, i, j);
         ++nodes;
