@@ -2,7 +2,8 @@
 // A body's surface: the tree's and the land's light model (diffuse sun plus sky ambient brighter
 // toward the zenith), with a small sun highlight, since the balls are smooth (painted plastic, not
 // bark), and a rim of sky light at grazing angles. A held body (albedo.a = 1) is lightened, so the
-// person dragging it sees which one it is.
+// person dragging it sees which one it is. POND_BODY_MIRROR (body_mirror.frag): the reflection
+// shows only what is above the water.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/body_render.h"
@@ -20,6 +21,9 @@ layout(location = 0) out vec4 out_color;
 const vec3 kSunColor = vec3(1.0, 0.96, 0.9);
 
 void main() {
+#ifdef POND_BODY_MIRROR
+  if (in_world.y < 0.0) discard;  // (its mirror image is lit as the mirrored eye sees the body)
+#endif
   const vec3 n = normalize(in_normal);
   const vec3 v = normalize(in_eye - in_world);
   const vec3 albedo = mix(in_albedo.rgb, vec3(1.0), 0.35 * in_albedo.a);

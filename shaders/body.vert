@@ -1,6 +1,8 @@
 #version 460
 // The bodies (render/body_drawable.h): the unit sphere placed at each instance's centre and scaled
 // by its radius. The frame's constants go on to body.frag as flat varyings.
+// POND_BODY_MIRROR (body_mirror.vert): mirrored about the water's rest plane y = 0 for the planar
+// reflection (render/reflection_pass.h), lit as seen from the mirrored eye.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/body_render.h"
@@ -21,9 +23,14 @@ layout(location = kBodyFlatAlbedo) flat out vec4 out_albedo;
 void main() {
   out_world = in_sphere.xyz + in_point.xyz * in_sphere.w;
   out_normal = in_point.xyz;
+#ifdef POND_BODY_MIRROR
+  out_eye = vec3(f.eye.x, -f.eye.y, f.eye.z);
+  gl_Position = f.view_proj * vec4(out_world.x, -out_world.y, out_world.z, 1.0);
+#else
   out_eye = f.eye.xyz;
+  gl_Position = f.view_proj * vec4(out_world, 1.0);
+#endif
   out_sun = f.sun.xyz;
   out_sky = f.sky.rgb;
   out_albedo = in_albedo;
-  gl_Position = f.view_proj * vec4(out_world, 1.0);
 }

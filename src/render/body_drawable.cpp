@@ -10,6 +10,7 @@
 
 #include "gpu/buffer.h"
 #include "render/body_pipeline.h"
+#include "render/reflection_pass.h"
 #include "render/sphere_mesh.h"
 #include "shared/body_render.h"
 
@@ -44,7 +45,7 @@ sh::vec4 v4(const std::array<double, 3>& a) {
 struct BodyDrawable::Impl {
   const gpu::Context& ctx;
   const FrameLoop& loop;
-  BodyPipeline pipe;
+  BodyPipeline pipe, mirror_pipe;  // the frame's, the planar reflection's
   gpu::Buffer points, indices;
   std::array<Level, kLevels> levels{};
   std::vector<gpu::Buffer> instances;  // per frame slot, host-visible
@@ -54,7 +55,8 @@ struct BodyDrawable::Impl {
   sh::BodyFrame frame{};
 
   Impl(const gpu::Context& c, const FrameLoop& l)
-      : ctx(c), loop(l), pipe(create_body_pipeline(c, l.color_format(), FrameLoop::kDepthFormat)) {
+      : ctx(c), loop(l), pipe(create_body_pipeline(c, l.color_format(), FrameLoop::kDepthFormat)),
+        mirror_pipe(create_body_pipeline(c, kReflectionFormat, kReflectionDepthFormat, true)) {
     SphereMesh all;  // every level, one after the other
     for (int k = 0; k < kLevels; ++k) {
       const SphereMesh mesh = build_sphere_mesh(kFirstSubdivision + k);
@@ -118,11 +120,12 @@ struct BodyDrawable::Impl {
     frame.sky = v4(info.lighting.sky);
   }
 
-  void draw(const FrameInfo& info) const {
+  // With `with` (pipe, or mirror_pipe in the planar reflection's pass).
+  void draw(const FrameInfo& info, const BodyPipeline& with) const {
     if (count == 0) return;
     const vk::raii::CommandBuffer& cmd = info.cmd;
-    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipe.pipeline);
-    cmd.pushConstants<sh::BodyFrame>(*pipe.layout, vk::ShaderStageFlagBits::eVertex, 0, frame);
+    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *with.pipeline);
+    cmd.pushConstants<sh::BodyFrame>(*with.layout, vk::ShaderStageFlagBits::eVertex, 0, frame);
     const vk::Buffer buffers[] = {*points.buffer, *instances[info.slot].buffer};
     const vk::DeviceSize offsets[] = {0, 0};
     cmd.bindVertexBuffers(0, buffers, offsets);
@@ -142,7 +145,8 @@ BodyDrawable::~BodyDrawable() {
 }
 
 void BodyDrawable::prepare(const FrameInfo& frame) { impl_->prepare(frame); }
-void BodyDrawable::draw(const FrameInfo& frame) { impl_->draw(frame); }
+void BodyDrawable::draw(const FrameInfo& frame) { impl_->draw(frame, impl_->pipe); }
+void BodyDrawable::draw_reflected(const FrameInfo& frame) { impl_->draw(frame, impl_->mirror_pipe); }
 std::size_t BodyDrawable::drawn() const { return impl_->count; }
 std::size_t BodyDrawable::triangles() const {
   std::size_t n = 0;

@@ -29,6 +29,7 @@ class BodyDrawable final : public PassDrawable {
 
   void prepare(const FrameInfo& frame) override;
   void draw(const FrameInfo& frame) override;
+  void draw_reflected(const FrameInfo& frame) override;  // the part above the water, mirrored
 
   std::size_t drawn() const;      // bodies in the last prepared frame
   std::size_t triangles() const;  // their triangles (each at its level of detail)

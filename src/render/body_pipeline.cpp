@@ -8,12 +8,15 @@
 namespace pond::render {
 namespace {
 #include "body_frag.spv.h"
+#include "body_mirror_frag.spv.h"
+#include "body_mirror_vert.spv.h"
 #include "body_vert.spv.h"
 
 namespace sh = shared::body_render;
 }  // namespace
 
-BodyPipeline create_body_pipeline(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format) {
+BodyPipeline create_body_pipeline(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format,
+                                  bool mirrored) {
   BodyPipeline p;
   const vk::PushConstantRange push{.stageFlags = vk::ShaderStageFlagBits::eVertex, .offset = 0,
                                    .size = sizeof(sh::BodyFrame)};
@@ -34,15 +37,18 @@ BodyPipeline create_body_pipeline(const gpu::Context& ctx, vk::Format color_form
   const vk::PipelineInputAssemblyStateCreateInfo assembly{.topology = vk::PrimitiveTopology::eTriangleList};
   const vk::PipelineRasterizationStateCreateInfo raster{.polygonMode = vk::PolygonMode::eFill,
                                                         .cullMode = vk::CullModeFlagBits::eBack,
-                                                        .frontFace = vk::FrontFace::eCounterClockwise,
+                                                        .frontFace = mirrored ? vk::FrontFace::eClockwise
+                                                                              : vk::FrontFace::eCounterClockwise,
                                                         .lineWidth = 1.0f};
   const vk::PipelineDepthStencilStateCreateInfo depth{
       .depthTestEnable = VK_TRUE, .depthWriteEnable = VK_TRUE, .depthCompareOp = vk::CompareOp::eLessOrEqual};
   using CC = vk::ColorComponentFlagBits;
   const vk::PipelineColorBlendAttachmentState blend{.colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
-  p.pipeline = create_graphics_pipeline(ctx, p.layout, color_format, depth_format,
-                                        {pond_spirv_body_vert, pond_spirv_body_frag, vertex_input, assembly, raster,
-                                         depth, blend, "bodies"});
+  p.pipeline = create_graphics_pipeline(
+      ctx, p.layout, color_format, depth_format,
+      {mirrored ? std::span<const std::uint32_t>(pond_spirv_body_mirror_vert) : pond_spirv_body_vert,
+       mirrored ? std::span<const std::uint32_t>(pond_spirv_body_mirror_frag) : pond_spirv_body_frag, vertex_input,
+       assembly, raster, depth, blend, mirrored ? "bodies (reflected)" : "bodies", mirrored});
   return p;
 }
 

@@ -12,6 +12,9 @@ struct BodyPipeline {
   vk::raii::Pipeline pipeline = nullptr;
 };
 
-BodyPipeline create_body_pipeline(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format);
+// `mirrored`: the planar reflection's variant (body_mirror.vert/.frag: mirrored about y = 0, only
+// what is above the water, clockwise front faces, linear colour).
+BodyPipeline create_body_pipeline(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format,
+                                  bool mirrored = false);
 
 }  // namespace pond::render

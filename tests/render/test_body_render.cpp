@@ -68,13 +68,14 @@ struct BodyScene {
 class BodyRenderTest : public GpuTest {
  protected:
   // Draws one frame of s (after `steps` more steps), LOD at `tolerance` px.
-  Rgba draw(BodyScene& s, std::int64_t steps, double tolerance = 1.0) {
+  Rgba draw(BodyScene& s, std::int64_t steps, double tolerance = 1.0, bool reflections = true) {
     DrawnSession& d = s.d;
     const render::RenderTarget target(ctx(), kWidth, kHeight);
     d.session.advance(steps);
     render::FrameView view;
     view.camera = d.loop.default_camera(kWidth, kHeight);
     view.lod_tolerance_px = tolerance;
+    view.effects.reflections = reflections;
     view.steps = 0;
     view.wait = true;
     d.loop.frame(target.frame_target(), view);
@@ -114,6 +115,33 @@ TEST_F(BodyRenderTest, EachBodyShowsItsColourWhereItIs) {
 
 // The drawable draws what the session holds now: a ball added at run time appears, a removed
 // sphere is gone.
+// A sphere held above calm water is mirrored about the waterline: where its centre mirrored to
+// -y projects, the water turns toward the sphere's red with reflections on (weighted by Fresnel,
+// so redder than the water, not as red as the sphere) and shows no red with them off.
+TEST_F(BodyRenderTest, ASphereAboveCalmWaterIsMirroredInIt) {
+  const char* json = R"({"grid": {"rows": 50, "cols": 50},
+    "camera": {"eye": [24, 3, 49], "target": [24, 1, 20], "fovy": 40},
+    "bodies": [{"shape": "sphere", "radius": 3.0, "motion": "kinematic", "path": [[0, 24.0, 4.0, 22.0]]}]})";
+  BodyScene on(ctx(), json), off(ctx(), json);
+  const Rgba with = draw(on, 1, 1.0, true);
+  const Rgba without = draw(off, 1, 1.0, false);
+  const Pixel body = project(view_proj_.data(), {24.0, 4.0, 22.0}, kWidth, kHeight);
+  const Pixel mirror = project(view_proj_.data(), {24.0, -4.0, 22.0}, kWidth, kHeight);
+  ASSERT_GT(mirror.y, body.y + 10) << "the mirror image lies below the sphere on screen";
+  EXPECT_TRUE(brick_red(rgb_at(with, body)));
+  EXPECT_TRUE(brick_red(rgb_at(without, body)));
+  const std::array<int, 3> a = rgb_at(with, mirror), b = rgb_at(without, mirror);
+  const auto sum = [](const std::array<int, 3>& c) { return c[0] + c[1] + c[2]; };
+  EXPECT_LT(sum(a), sum(b) - 80) << "no dark mirror image: " << a[0] << "," << a[1] << "," << a[2] << " against "
+                                 << b[0] << "," << b[1] << "," << b[2];
+  EXPECT_GT(a[0] - a[2], b[0] - b[2] + 15) << "the mirror image is not the sphere's red";
+  EXPECT_LT(b[0], b[2]) << "a red mirror image without reflections";
+  for (const int dx : {-45, 45}) {  // the water beside the mirror image: sky in both
+    const Pixel side{mirror.x + dx, mirror.y};
+    EXPECT_LT(std::abs(sum(rgb_at(with, side)) - sum(rgb_at(without, side))), 30) << dx;
+  }
+}
+
 TEST_F(BodyRenderTest, FollowsTheSessionsEdits) {
   BodyScene s(ctx(), kBodies);
   draw(s, 2);
