@@ -45,6 +45,7 @@ BodyContact::BodyContact(const Context& ctx, const sim::WaterModel& model, std::
   constants_ = create_buffer(ctx_, count * sizeof(BodyConstants), BU::eStorageBuffer | BU::eTransferDst,
                              MemoryUse::device, "body constants");
   upload_constants();
+  readback_ = create_buffer(ctx_, count * sizeof(BodyState), BU::eTransferDst, MemoryUse::readback, "bodies readback");
   schedule_ = create_buffer(ctx_, static_cast<vk::DeviceSize>(max_substeps_) * count * sizeof(BodyState),
                             BU::eStorageBuffer, MemoryUse::upload, "kinematic body schedule");
 
@@ -76,7 +77,12 @@ BodyContact::BodyContact(const Context& ctx, const sim::WaterModel& model, std::
 void BodyContact::upload_constants() {
   std::vector<BodyConstants> constants;
   for (const sim::BodyModel& b : model_.bodies) constants.push_back(b.constants);
+  // A drag changes only a path (the schedule) every frame: no upload and wait then.
+  if (constants.size() == uploaded_.size() &&
+      std::memcmp(constants.data(), uploaded_.data(), constants.size() * sizeof(BodyConstants)) == 0)
+    return;
   upload(ctx_, constants_, std::as_bytes(std::span(constants)));
+  uploaded_ = std::move(constants);
 }
 
 void BodyContact::set_bodies(const std::vector<sim::BodyState>& bodies) {
@@ -87,7 +93,6 @@ void BodyContact::set_bodies(const std::vector<sim::BodyState>& bodies) {
 }
 
 std::vector<sim::BodyState> BodyContact::read() const {
-  Buffer staging = create_buffer(ctx_, bodies_.size, BU::eTransferDst, MemoryUse::readback, "bodies readback");
   ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
     using S = vk::PipelineStageFlagBits2;
     using A = vk::AccessFlagBits2;
@@ -95,14 +100,14 @@ std::vector<sim::BodyState> BodyContact::read() const {
                                     .srcAccessMask = A::eShaderWrite | A::eTransferWrite,
                                     .dstStageMask = S::eTransfer, .dstAccessMask = A::eTransferRead};
     cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &before});
-    cmd.copyBuffer(*bodies_.buffer, *staging.buffer, vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = bodies_.size});
+    cmd.copyBuffer(*bodies_.buffer, *readback_.buffer, vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = bodies_.size});
     const vk::MemoryBarrier2 to_host{.srcStageMask = S::eTransfer, .srcAccessMask = A::eTransferWrite,
                                      .dstStageMask = S::eHost, .dstAccessMask = A::eHostRead};
     cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_host});
   });
-  staging.invalidate(ctx_);
+  readback_.invalidate(ctx_);
   std::vector<sim::BodyState> out(model_.bodies.size());
-  std::memcpy(out.data(), staging.mapped, bodies_.size);
+  std::memcpy(out.data(), readback_.mapped, bodies_.size);
   return out;
 }
 
