@@ -1,5 +1,6 @@
 #version 460
-// The land's light comes from land.vert (per vertex, exact on its flat faces); here a procedural
+// The land's light comes from land.vert (per vertex, exact on its flat faces), the sun's part
+// shaded by the tree's and the bodies' shadow (shared/shadow_sampling.h); here a procedural
 // texture (a brightness factor), the tone curve and the target's encoding, which are not linear
 // and so stay per pixel. The texture is made of triangle waves, not hashed value noise: llvmpipe
 // runs every instruction for every pixel, and the land covers much of the screen.
@@ -7,10 +8,13 @@
 
 #include "shared/water_render.h"
 #include "shared/water_shading.h"
+#include "shared/shadow_sampling.h"
 
 layout(location = 0) in vec3 in_color;
 layout(location = 1) in vec3 in_world;
 layout(location = 2) in float in_top;
+layout(location = 3) in vec3 in_sun_share;  // read only with shadows, so only then interpolated
+layout(location = 4) in vec3 in_shadow;
 layout(location = 0) out vec4 out_color;
 
 float tri(float x) { return abs(fract(x) - 0.5) * 4.0 - 1.0; }
@@ -28,5 +32,7 @@ vec3 land_texture(vec3 p, float top) {
 }
 
 void main() {
-  out_color = finish_color(in_color * land_texture(in_world, in_top));
+  vec3 light = in_color;
+  if (kShadows) light *= vec3(1.0) - in_sun_share * (1.0 - sun_light(in_shadow));
+  out_color = finish_color(light * land_texture(in_world, in_top));
 }

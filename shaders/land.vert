@@ -16,9 +16,11 @@ layout(std140, set = 0, binding = POND_RENDER_BINDING_FRAME) uniform Frame { Wat
 
 layout(location = 0) in vec4 in_position;
 layout(location = 1) in vec4 in_normal;
-layout(location = 0) out vec3 out_color;  // linear, before finish_color
-layout(location = 1) out vec3 out_world;  // for the texture
-layout(location = 2) out float out_top;   // 1 on flat tops (grass), 0 on walls
+layout(location = 0) out vec3 out_color;      // linear, before finish_color
+layout(location = 1) out vec3 out_world;      // for the texture
+layout(location = 2) out float out_top;       // 1 on flat tops (grass), 0 on walls
+layout(location = 3) out vec3 out_sun_share;  // the sun's part of out_color, which a shadow takes
+layout(location = 4) out vec3 out_shadow;     // the point in the sun's shadow map (land.frag)
 
 void main() {
   const vec3 n = normalize(in_normal.xyz);
@@ -30,12 +32,18 @@ void main() {
       clamp(kLandWetAtRest - in_position.y / max(POND_FRAME_LAND_HEIGHT(f), 1e-3), 0.0, 1.0);
   albedo *= 1.0 - 0.45 * wet * (1.0 - top);
   const vec3 ambient = f.sky.rgb * (0.25 + 0.15 * n.y);
-  out_color = albedo * (ambient + 0.85 * diffuse * vec3(1.0, 0.96, 0.9));
+  const vec3 sun = 0.85 * diffuse * vec3(1.0, 0.96, 0.9);
+  out_color = albedo * (ambient + sun);
+  out_sun_share = sun / max(ambient + sun, vec3(1e-6));
+  out_shadow = (f.shadow * vec4(in_position.xyz, 1.0)).xyz;
   out_world = in_position.xyz;
   out_top = top;
 #ifdef POND_LAND_MIRROR
   gl_Position = f.view_proj * vec4(in_position.x, -in_position.y, in_position.z, 1.0);
 #else
-  gl_Position = f.view_proj * vec4(in_position.xyz, 1.0);
+  // The same depth from every pipeline drawing it (the frame loop draws the land where shadows can
+  // fall, then everywhere else with a depth test that must fail there): no contraction.
+  precise vec4 position = f.view_proj * vec4(in_position.xyz, 1.0);
+  gl_Position = position;
 #endif
 }

@@ -9,6 +9,7 @@
 // POND_TREE_MIRROR (tree_mirror.vert): the tree mirrored about the water's rest plane y = 0 for the
 // planar reflection (render/reflection_pass.h), whose target has inst.pruning.w of the frame's
 // pixels per unit length (the twig lines' widths and window positions are scaled by it).
+// POND_TREE_SHADOW (tree_shadow.vert): into the sun's shadow map (render/shadow_pass.h), depth only.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_spirv_intrinsics : require
 
@@ -56,9 +57,12 @@ void main() {
   out_world = inst.base.xyz + (p + offset) * inst.base.w;
   out_normal = in_normal.xyz;
   out_material = in_info.yz;
-#ifdef POND_TREE_MIRROR
+#if defined(POND_TREE_MIRROR)
   gl_Position = f.view_proj * vec4(out_world.x, -out_world.y, out_world.z, 1.0);
   const float pixel_scale = inst.pruning.w;
+#elif defined(POND_TREE_SHADOW)
+  gl_Position = f.light_proj * vec4(out_world, 1.0);
+  const float pixel_scale = 1.0;
 #else
   gl_Position = f.view_proj * vec4(out_world, 1.0);
   const float pixel_scale = 1.0;

@@ -15,6 +15,7 @@
 
 #include "shared/water_render.h"
 #include "shared/water_shading.h"
+#include "shared/shadow_sampling.h"
 
 layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;
@@ -28,6 +29,11 @@ layout(location = POND_WATER_FLAT_HORIZON) flat in vec3 in_horizon;
 layout(location = POND_WATER_FLAT_ABSORB) flat in vec3 in_absorb;    // per world unit
 layout(location = POND_WATER_FLAT_POOL) flat in vec2 in_pool;        // the far corner, grid units
 layout(location = POND_WATER_FLAT_SCREEN) flat in vec3 in_screen;    // WaterFrame::screen.xyz
+layout(location = POND_WATER_SHADOW) in vec3 in_shadow;            // this point in the shadow map
+layout(location = POND_WATER_FLAT_SHADOW_X) flat in vec4 in_shadow_x;  // WaterFrame::shadow's rows
+layout(location = POND_WATER_FLAT_SHADOW_Y) flat in vec4 in_shadow_y;
+layout(location = POND_WATER_FLAT_SHADOW_Z) flat in vec4 in_shadow_z;
+layout(location = POND_WATER_FLAT_SHADOW_SUN) flat in vec4 in_shadow_sun;  // sunlight in the water; w: floor shade
 #ifdef POND_WATER_REFLECTIONS
 layout(set = 0, binding = POND_RENDER_BINDING_REFLECTION) uniform sampler2D reflection;
 #endif
@@ -62,6 +68,15 @@ vec3 exp_neg(vec3 x) {
   return e * e;
 }
 
+// The sun's light (shared/shadow_sampling.h) on the surface here (x) and on the floor or wall point
+// `hit` seen through it (y): where the sunlight reaching `hit` entered the water, followed back
+// along the refracted sun to the rest plane (the casters are all above it).
+vec2 water_sun_light(vec3 hit) {
+  if (!kShadows) return vec2(1.0);
+  const vec4 entry = vec4(hit - in_shadow_sun.xyz * (hit.y / in_shadow_sun.y), 1.0);
+  return vec2(sun_light(in_shadow), sun_light(vec3(dot(in_shadow_x, entry), dot(in_shadow_y, entry), dot(in_shadow_z, entry))));
+}
+
 void main() {
   vec3 n = normalize(in_normal);
   const vec3 v = normalize(in_eye.xyz - in_world);
@@ -87,8 +102,9 @@ void main() {
   path = min(path, exit_path);
   const vec3 hit = in_world + t * path;
   const vec3 transmit = exp_neg(in_absorb * path);
-  const vec3 body = in_water * (0.35 + 0.65 * diffuse);  // scattered light: diffuse-lit water colour
-  const vec3 bottom = wall ? wall_color(hit) : floor_color(hit.xz);
+  const vec2 sun = water_sun_light(hit);  // the shadows of the tree and the bodies
+  const vec3 body = in_water * (0.35 + 0.65 * diffuse * sun.x);  // scattered light: diffuse-lit water colour
+  const vec3 bottom = (wall ? wall_color(hit) : floor_color(hit.xz)) * mix(in_shadow_sun.w, 1.0, sun.y);
   const vec3 seen_through = bottom * transmit + body * (vec3(1.0) - transmit);
 
   const vec3 r = reflect(-v, n);
@@ -103,7 +119,7 @@ void main() {
   // The sun's glint, (r.l)^2048 by squaring: a narrow lobe without pow's exp/log.
   float spec = max(dot(r, l), 0.0);
   for (int k = 0; k < 11; ++k) spec *= spec;
-  spec *= 3.0;
+  spec *= 3.0 * sun.x;
 
   vec3 color = mix(seen_through, reflected, fresnel) + spec * vec3(1.0, 0.95, 0.85) * fresnel * 4.0;
   out_color = finish_color(color);

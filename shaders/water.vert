@@ -24,6 +24,11 @@ layout(location = POND_WATER_FLAT_HORIZON) flat out vec3 out_horizon;
 layout(location = POND_WATER_FLAT_ABSORB) flat out vec3 out_absorb;
 layout(location = POND_WATER_FLAT_POOL) flat out vec2 out_pool;
 layout(location = POND_WATER_FLAT_SCREEN) flat out vec3 out_screen;
+layout(location = POND_WATER_SHADOW) out vec3 out_shadow;
+layout(location = POND_WATER_FLAT_SHADOW_X) flat out vec4 out_shadow_x;
+layout(location = POND_WATER_FLAT_SHADOW_Y) flat out vec4 out_shadow_y;
+layout(location = POND_WATER_FLAT_SHADOW_Z) flat out vec4 out_shadow_z;
+layout(location = POND_WATER_FLAT_SHADOW_SUN) flat out vec4 out_shadow_sun;
 
 void main() {
   const uint n = uint(gl_VertexIndex);  // compact: row * cols + col
@@ -36,15 +41,24 @@ void main() {
   const vec3 world = (rest + u) * POND_FRAME_GRID_SPACING(f);  // grid units -> world
   out_world = world;
   out_normal = normals[n].xyz;
-  gl_Position = f.view_proj * vec4(world, 1.0);
+  // The same depth from every pipeline drawing it (the frame loop draws the water where shadows
+  // can fall, then everywhere else with a depth test that must fail there): no contraction.
+  precise vec4 position = f.view_proj * vec4(world, 1.0);
+  gl_Position = position;
   // w: POND_FLAT_INV_SPACING, the reciprocal: water.frag multiplies by it.
   out_eye = vec4(f.eye.xyz, 1.0 / POND_FRAME_GRID_SPACING(f));
   out_sun = vec4(f.sun.xyz, POND_FRAME_FLOOR_DEPTH(f));  // w: POND_FLAT_FLOOR_DEPTH
   out_sky = f.sky.rgb;
   out_water = f.water.rgb;
-  out_ground = f.ground.rgb * (0.45 + 0.55 * max(f.sun.y, 0.0));
+  const float floor_sun = 0.55 * max(f.sun.y, 0.0);  // the floor's light: sky 0.45, sun the rest
+  out_ground = f.ground.rgb * (0.45 + floor_sun);
   out_horizon = sky_horizon(f.sky.rgb);
   out_absorb = (vec3(1.0) - f.water.rgb) * (0.45 / POND_FRAME_GRID_SPACING(f));
   out_pool = vec2(float(cols - 1u), float(POND_FRAME_ROWS(f) - 1u));
   out_screen = f.screen.xyz;
+  out_shadow = (f.shadow * vec4(world, 1.0)).xyz;
+  out_shadow_x = vec4(f.shadow[0][0], f.shadow[1][0], f.shadow[2][0], f.shadow[3][0]);  // rows
+  out_shadow_y = vec4(f.shadow[0][1], f.shadow[1][1], f.shadow[2][1], f.shadow[3][1]);
+  out_shadow_z = vec4(f.shadow[0][2], f.shadow[1][2], f.shadow[2][2], f.shadow[3][2]);
+  out_shadow_sun = vec4(f.shadow_sun.xyz, 0.45 / (0.45 + floor_sun));
 }

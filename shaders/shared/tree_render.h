@@ -74,6 +74,8 @@ struct TreeRenderFrame {
   vec4 line;       // rgb: the line look's colour (linear); a: unused
   vec4 lod;        // twig lines: x: pixels per world unit at unit view depth (clip w); yz: viewport
                    // size (pixels)
+  mat4 light_proj; // world -> clip of the sun's shadow map (tree_shadow.vert; render/shadow_pass.h),
+                   // written by the shadow pass's draw
 };
 
 // Push constants (std430): one instance. Its bent tree, in tree units (trunk length 1), is placed
@@ -102,11 +104,11 @@ static_assert(sizeof(uvec4) == 16 && sizeof(mat4) == 64);
 static_assert(sizeof(TreeMeshVertex) == 96);
 static_assert(offsetof(TreeMeshVertex, branch) == 0 && offsetof(TreeMeshVertex, offset) == 48 &&
               offsetof(TreeMeshVertex, normal) == 64 && offsetof(TreeMeshVertex, info) == 80);
-static_assert(sizeof(TreeRenderFrame) == 176);
+static_assert(sizeof(TreeRenderFrame) == 240);
 static_assert(offsetof(TreeRenderFrame, eye) == 64 && offsetof(TreeRenderFrame, sun) == 80 &&
               offsetof(TreeRenderFrame, sky) == 96 && offsetof(TreeRenderFrame, bark) == 112 &&
               offsetof(TreeRenderFrame, leaf) == 128 && offsetof(TreeRenderFrame, line) == 144 &&
-              offsetof(TreeRenderFrame, lod) == 160);
+              offsetof(TreeRenderFrame, lod) == 160 && offsetof(TreeRenderFrame, light_proj) == 176);
 static_assert(sizeof(TreeInstance) == 80 && offsetof(TreeInstance, wind) == 16 && offsetof(TreeInstance, pruning) == 64);
 }  // namespace pond::shared::tree_wind
 #endif

@@ -10,6 +10,9 @@
 //   2: storage buffer, the normals: one vec4 per node, compact (node i * cols + j)
 //   3: combined image sampler, the planar reflection (render/reflection_pass.h), per frame slot;
 //      read only by water_reflect.frag
+//   4: combined image sampler with depth compare (sampler2DShadow), the sun's shadow map
+//      (render/shadow_pass.h), per frame slot; read by the land and the water when
+//      POND_SPEC_SHADOWS is on
 // The water is drawn with vertex pulling: the index buffer holds node indices n = row * cols + col
 // (the LOD builder's output as is), the vertex shader reads the normals at gl_VertexIndex and the
 // state at its row * pitch + col.
@@ -41,6 +44,7 @@ struct mat4 {
 #define POND_RENDER_BINDING_STATE 1
 #define POND_RENDER_BINDING_NORMALS 2
 #define POND_RENDER_BINDING_REFLECTION 3
+#define POND_RENDER_BINDING_SHADOW 4
 
 // The fragment shaders take the frame's constants as flat varyings from their vertex shader, not
 // from the uniform block: llvmpipe (Mesa 22.3) reads a uniform (or push constant) in a fragment
@@ -58,6 +62,12 @@ struct mat4 {
 #define POND_WATER_FLAT_ABSORB 8   // the water's absorption per world unit (rgb)
 #define POND_WATER_FLAT_POOL 9     // xy: the pool's far corner (cols - 1, rows - 1), grid units
 #define POND_WATER_FLAT_SCREEN 10  // WaterFrame::screen
+#define POND_WATER_SHADOW 11       // (smooth) the surface point in the shadow map (shadow_sampling.h)
+#define POND_WATER_FLAT_SHADOW_X 12  // WaterFrame::shadow's rows x, y, z (world -> shadow map)
+#define POND_WATER_FLAT_SHADOW_Y 13
+#define POND_WATER_FLAT_SHADOW_Z 14
+#define POND_WATER_FLAT_SHADOW_SUN 15  // xyz: the sunlight's direction under the water; w: the floor's
+                                       // light in shadow over its light in the sun
 // The w lanes of the EYE and SUN varyings by name (each macro is the lane itself: no extra varying,
 // no extra instruction):
 #define POND_FLAT_INV_SPACING(eye) ((eye).w)  // 1 / the grid spacing (grid units per world unit)
@@ -66,6 +76,9 @@ struct mat4 {
 // Fragment-shader specialization constant (bool), set by render/graphics_pipeline.cpp from the colour
 // format: true when the target is UNORM and the shader must encode sRGB itself.
 #define POND_SPEC_ENCODE_SRGB 0
+// Fragment-shader specialization constant (bool): the land and the water sample the sun's shadow map
+// (render/shadow_pass.h). Off, the shaders contain no shadow code at all.
+#define POND_SPEC_SHADOWS 1
 
 // Everything a frame's shaders need, one uniform block (std140), written per frame slot. Every
 // member is a vec4 (or mat4), so the layout is the same in both languages; the lanes that hold
@@ -87,6 +100,11 @@ struct WaterFrame {
   vec4 sky_hi;
   vec4 screen;  // xy: 1 / the target's size (pixels); z: the reflection's shift per unit of the
                 // normal's xz tilt (in screen widths and heights); w: 0
+  // The sun's shadow map (render/shadow_pass.h): world -> (u, v, depth), u and v in [0, 1] across
+  // the map, depth in [0, 1] over the casters' range along the sunlight. Row 3 is (0, 0, 0, 1).
+  mat4 shadow;
+  vec4 shadow_sun;  // xyz: the sunlight's direction in the water (refracted, unit, pointing down);
+                    // w: unused
 };
 
 // The packed lanes of a WaterFrame by name. Macros, so that one spelling serves both languages

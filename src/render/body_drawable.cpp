@@ -11,6 +11,7 @@
 #include "gpu/buffer.h"
 #include "render/body_pipeline.h"
 #include "render/reflection_pass.h"
+#include "render/shadow_pass.h"
 #include "render/sphere_mesh.h"
 #include "shared/body_render.h"
 
@@ -45,18 +46,20 @@ sh::vec4 v4(const std::array<double, 3>& a) {
 struct BodyDrawable::Impl {
   const gpu::Context& ctx;
   const FrameLoop& loop;
-  BodyPipeline pipe, mirror_pipe;  // the frame's, the planar reflection's
+  BodyPipeline pipe, mirror_pipe, shadow_pipe;  // the frame's, the planar reflection's, the shadow map's
   gpu::Buffer points, indices;
   std::array<Level, kLevels> levels{};
   std::vector<gpu::Buffer> instances;  // per frame slot, host-visible
   std::vector<bool> floating;          // per body, as last seen not held (a held body is kinematic)
   std::uint32_t count = 0;             // instances of the last prepared frame
   std::vector<int> level_of;           // per instance of the last prepared frame
+  std::vector<sh::vec4> spheres;       // per instance of the last prepared frame (world)
   sh::BodyFrame frame{};
 
   Impl(const gpu::Context& c, const FrameLoop& l)
       : ctx(c), loop(l), pipe(create_body_pipeline(c, l.color_format(), FrameLoop::kDepthFormat)),
-        mirror_pipe(create_body_pipeline(c, kReflectionFormat, kReflectionDepthFormat, true)) {
+        mirror_pipe(create_body_pipeline(c, kReflectionFormat, kReflectionDepthFormat, BodyView::mirrored)),
+        shadow_pipe(create_body_pipeline(c, vk::Format::eUndefined, kShadowFormat, BodyView::shadow)) {
     SphereMesh all;  // every level, one after the other
     for (int k = 0; k < kLevels; ++k) {
       const SphereMesh mesh = build_sphere_mesh(kFirstSubdivision + k);
@@ -97,12 +100,14 @@ struct BodyDrawable::Impl {
     floating.resize(count);
     level_of.assign(count, 0);
     std::vector<sh::BodyInstance> drawn(count);
+    spheres.resize(count);
     for (std::uint32_t b = 0; b < count; ++b) {
       const bool held = session.held(b);
       if (!held) floating[b] = specs[b].motion == sim::BodyMotion::floating;
       const sim::BodyState& s = states[b];
       drawn[b].sphere = {static_cast<float>(s.x * h), static_cast<float>(s.y * h), static_cast<float>(s.z * h),
                          static_cast<float>(specs[b].radius)};
+      spheres[b] = drawn[b].sphere;
       drawn[b].albedo = floating[b] ? kFloating : kKinematic;
       drawn[b].albedo.w = held ? 1.0f : 0.0f;
       level_of[b] = level_for(info.view_proj, drawn[b].sphere, info.extent.height);
@@ -120,12 +125,15 @@ struct BodyDrawable::Impl {
     frame.sky = v4(info.lighting.sky);
   }
 
-  // With `with` (pipe, or mirror_pipe in the planar reflection's pass).
+  // With `with` (pipe, mirror_pipe in the planar reflection's pass, shadow_pipe in the shadow map's,
+  // whose projection is info.view_proj).
   void draw(const FrameInfo& info, const BodyPipeline& with) const {
     if (count == 0) return;
     const vk::raii::CommandBuffer& cmd = info.cmd;
     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *with.pipeline);
-    cmd.pushConstants<sh::BodyFrame>(*with.layout, vk::ShaderStageFlagBits::eVertex, 0, frame);
+    sh::BodyFrame pushed = frame;
+    std::memcpy(pushed.view_proj.m, info.view_proj, sizeof pushed.view_proj.m);
+    cmd.pushConstants<sh::BodyFrame>(*with.layout, vk::ShaderStageFlagBits::eVertex, 0, pushed);
     const vk::Buffer buffers[] = {*points.buffer, *instances[info.slot].buffer};
     const vk::DeviceSize offsets[] = {0, 0};
     cmd.bindVertexBuffers(0, buffers, offsets);
@@ -147,6 +155,10 @@ BodyDrawable::~BodyDrawable() {
 void BodyDrawable::prepare(const FrameInfo& frame) { impl_->prepare(frame); }
 void BodyDrawable::draw(const FrameInfo& frame) { impl_->draw(frame, impl_->pipe); }
 void BodyDrawable::draw_reflected(const FrameInfo& frame) { impl_->draw(frame, impl_->mirror_pipe); }
+void BodyDrawable::add_shadow_casters(std::vector<view::ShadowCaster>& casters) const {
+  for (const sh::vec4& s : impl_->spheres) casters.push_back(view::sphere_caster({s.x, s.y, s.z}, s.w));
+}
+void BodyDrawable::draw_shadow(const FrameInfo& frame) { impl_->draw(frame, impl_->shadow_pipe); }
 std::size_t BodyDrawable::drawn() const { return impl_->count; }
 std::size_t BodyDrawable::triangles() const {
   std::size_t n = 0;

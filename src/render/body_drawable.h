@@ -30,6 +30,9 @@ class BodyDrawable final : public PassDrawable {
   void prepare(const FrameInfo& frame) override;
   void draw(const FrameInfo& frame) override;
   void draw_reflected(const FrameInfo& frame) override;  // the part above the water, mirrored
+  // Each body's sphere; drawn into the sun's shadow map (at the frame's level of detail).
+  void add_shadow_casters(std::vector<view::ShadowCaster>& casters) const override;
+  void draw_shadow(const FrameInfo& frame) override;
 
   std::size_t drawn() const;      // bodies in the last prepared frame
   std::size_t triangles() const;  // their triangles (each at its level of detail)

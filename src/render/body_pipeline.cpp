@@ -16,7 +16,8 @@ namespace sh = shared::body_render;
 }  // namespace
 
 BodyPipeline create_body_pipeline(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format,
-                                  bool mirrored) {
+                                  BodyView view) {
+  const bool mirrored = view == BodyView::mirrored;
   BodyPipeline p;
   const vk::PushConstantRange push{.stageFlags = vk::ShaderStageFlagBits::eVertex, .offset = 0,
                                    .size = sizeof(sh::BodyFrame)};
@@ -44,11 +45,14 @@ BodyPipeline create_body_pipeline(const gpu::Context& ctx, vk::Format color_form
       .depthTestEnable = VK_TRUE, .depthWriteEnable = VK_TRUE, .depthCompareOp = vk::CompareOp::eLessOrEqual};
   using CC = vk::ColorComponentFlagBits;
   const vk::PipelineColorBlendAttachmentState blend{.colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
+  const std::span<const std::uint32_t> frag = view == BodyView::shadow ? std::span<const std::uint32_t>()
+                                             : mirrored ? std::span<const std::uint32_t>(pond_spirv_body_mirror_frag)
+                                                        : std::span<const std::uint32_t>(pond_spirv_body_frag);
   p.pipeline = create_graphics_pipeline(
       ctx, p.layout, color_format, depth_format,
-      {mirrored ? std::span<const std::uint32_t>(pond_spirv_body_mirror_vert) : pond_spirv_body_vert,
-       mirrored ? std::span<const std::uint32_t>(pond_spirv_body_mirror_frag) : pond_spirv_body_frag, vertex_input,
-       assembly, raster, depth, blend, mirrored ? "bodies (reflected)" : "bodies", mirrored});
+      {mirrored ? std::span<const std::uint32_t>(pond_spirv_body_mirror_vert) : pond_spirv_body_vert, frag, vertex_input,
+       assembly, raster, depth, blend,
+       view == BodyView::shadow ? "bodies (shadow)" : mirrored ? "bodies (reflected)" : "bodies", mirrored});
   return p;
 }
 

@@ -12,9 +12,15 @@ struct BodyPipeline {
   vk::raii::Pipeline pipeline = nullptr;
 };
 
-// `mirrored`: the planar reflection's variant (body_mirror.vert/.frag: mirrored about y = 0, only
-// what is above the water, clockwise front faces, linear colour).
+enum class BodyView {
+  direct,
+  mirrored,  // the planar reflection's (body_mirror.vert/.frag: mirrored about y = 0, only what is
+             // above the water, clockwise front faces, linear colour)
+  shadow,    // the sun's shadow map's (render/shadow_pass.h): body.vert, depth only (color_format
+             // eUndefined), no fragment shader
+};
+
 BodyPipeline create_body_pipeline(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format,
-                                  bool mirrored = false);
+                                  BodyView view = BodyView::direct);
 
 }  // namespace pond::render

@@ -11,6 +11,7 @@
 #include "gpu/buffer.h"
 #include "render/color_format.h"
 #include "render/reflection_pass.h"
+#include "render/shadow_pass.h"
 #include "view/land_mesh.h"
 #include "render/render_layout.h"
 #include "render/render_target.h"
@@ -56,6 +57,20 @@ shared::water_render::vec4 v4(const std::array<double, 3>& a) {
 // heights: ripples of a few degrees wobble it by a few pixels.
 constexpr float kReflectionShift = 0.05f;
 
+// The sun's shadow map: texels per unit over the camera's pixels per unit at the nearest caster (a
+// shadow on the ground is stretched along the sunlight, and the filter spans two texels), and its
+// largest size. The receivers' heights the shadows are looked for between: the floor and the land's
+// top plus this much for wave crests.
+constexpr double kShadowTexelsPerPixel = 1.5;
+constexpr std::uint32_t kMaxShadowMapSize = 1024;
+constexpr double kShadowWaveMargin = 1.0;
+
+// One frame's shadow map: its view and the target's rectangles where its shadows can show.
+struct FrameShadow {
+  view::SunShadowView view;
+  std::vector<vk::Rect2D> rects;
+};
+
 double ms_since(std::chrono::steady_clock::time_point& t) {
   const auto now = std::chrono::steady_clock::now();
   const double ms = std::chrono::duration<double, std::milli>(now - t).count();
@@ -73,6 +88,7 @@ struct Slot {
   vk::raii::DescriptorSet set = nullptr;
   Image depth;
   ReflectionTarget reflection;
+  Image shadow;  // the sun's shadow map (render/shadow_pass.h)
 };
 
 struct FrameLoop::Impl {
@@ -85,6 +101,7 @@ struct FrameLoop::Impl {
   lod::LodBuilder lod;
   WaterPipelines pipes;
   vk::raii::Sampler reflection_sampler = nullptr;
+  vk::raii::Sampler shadow_sampler = nullptr;
   gpu::Buffer land, mirrored_land, full_indices;  // mirrored_land: the reflection's (view::mirrored_walls)
   std::uint32_t land_vertices = 0, mirrored_land_vertices = 0, full_index_count = 0;
   vk::raii::CommandPool pool = nullptr;
@@ -97,6 +114,7 @@ struct FrameLoop::Impl {
       : ctx(c), session(drawn), lighting(drawn.scene().lighting), color_format(format),
         lod(drawn.model().rows, drawn.model().cols), pipes(create_water_pipelines(c, format, kDepthFormat)) {
     reflection_sampler = create_reflection_sampler(ctx);
+    shadow_sampler = create_shadow_sampler(ctx);
     follow_solver();
     create_static_geometry();
     session.set_before_change([this] { wait_all(); });
@@ -105,7 +123,7 @@ struct FrameLoop::Impl {
                                                    .queueFamilyIndex = ctx.queue_family()});
     const vk::DescriptorPoolSize sizes[] = {{.type = vk::DescriptorType::eUniformBuffer, .descriptorCount = kFramesInFlight},
                                             {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 2 * kFramesInFlight},
-                                            {.type = vk::DescriptorType::eCombinedImageSampler, .descriptorCount = kFramesInFlight}};
+                                            {.type = vk::DescriptorType::eCombinedImageSampler, .descriptorCount = 2 * kFramesInFlight}};
     descriptor_pool = vk::raii::DescriptorPool(
         ctx.device(), vk::DescriptorPoolCreateInfo{.flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
                                                    .maxSets = kFramesInFlight, .poolSizeCount = 3, .pPoolSizes = sizes});
@@ -233,25 +251,63 @@ struct FrameLoop::Impl {
     }
     const bool full = f.view.lod_tolerance_px <= 0;
     const std::array<float, 16> view_proj = view::view_projection(f.camera, model());  // 4. draw
-    write_frame_uniforms(s, f.camera, view_proj, f.bufs.stride, f.bufs.pitch);
     ensure_depth(s, target.extent);
     ensure_reflection_target(ctx, s.reflection, target.extent);  // made even when off: the set is whole
-    bind_buffers(s, f.bufs);
     const FrameInfo info{s.cmd, f.slot, view_proj.data(),
                          {static_cast<float>(f.camera.eye[0]), static_cast<float>(f.camera.eye[1]),
                           static_cast<float>(f.camera.eye[2])},
                          target.extent, static_cast<double>(session.steps_done()) * model().physics.dt,
                          lighting};
     for (PassDrawable* d : drawables) d->prepare(info);
-    record(s, target, info, full ? full_indices : s.indices, static_cast<std::uint32_t>(f.index_count), f.view);
+    const std::optional<FrameShadow> shadow =
+        f.view.effects.shadows ? fit_shadow(view_proj, target.extent) : std::nullopt;
+    ensure_shadow_map(ctx, s.shadow, shadow ? shadow->view.size : 0);  // made even when off: the set is whole
+    bind_buffers(s, f.bufs);
+    write_frame_uniforms(s, f.camera, view_proj, f.bufs.stride, f.bufs.pitch, shadow);
+    record(s, target, info, full ? full_indices : s.indices, static_cast<std::uint32_t>(f.index_count), f.view, shadow);
     submit(s, target);
     if (f.view.wait) wait(s);
     f.stats.draw_ms = ms_since(t);
     return f.stats;
   }
 
+  // The shadow map's view fitted to the drawables' casters this frame, with the parts of the target
+  // its shadows can reach; nothing when nothing casts or no shadow is on screen.
+  std::optional<FrameShadow> fit_shadow(const std::array<float, 16>& view_proj, vk::Extent2D extent) const {
+    std::vector<view::ShadowCaster> casters;
+    for (const PassDrawable* d : drawables) d->add_shadow_casters(casters);
+    // As many texels per unit as the camera gives the nearest caster pixels (by its clip w, the
+    // view depth; |m[5]| h / 2 pixels per unit at depth 1), kShadowTexelsPerPixel times.
+    double pixels = 0.0;
+    for (const view::ShadowCaster& c : casters) {
+      double w = 0.0, reach = 0.0;  // the box centre's view depth; the box's half diagonal
+      for (int k = 0; k < 3; ++k) {
+        w += view_proj[3 + 4 * k] * 0.5 * (c.lo[k] + c.hi[k]);
+        reach += 0.25 * (c.hi[k] - c.lo[k]) * (c.hi[k] - c.lo[k]);
+      }
+      const double depth = std::max(w + view_proj[15] - std::sqrt(reach), 1e-2);
+      pixels = std::max(pixels, std::abs(view_proj[5]) * 0.5 * extent.height / depth);
+    }
+    const std::optional<view::SunShadowView> fitted =
+        view::fit_sun_shadow(lighting.sun, casters, pixels * kShadowTexelsPerPixel, kMaxShadowMapSize);
+    if (!fitted) return std::nullopt;
+    FrameShadow shadow{*fitted, {}};
+    const view::ViewSpec& v = session.scene().view;
+    std::vector<view::PixelRect> rects;
+    for (const view::ShadowCaster& c : casters)
+      if (const auto r = view::shadow_pixels(*fitted, c, view_proj, static_cast<int>(extent.width),
+                                             static_cast<int>(extent.height), -v.floor_depth,
+                                             v.land_height + kShadowWaveMargin))
+        rects.push_back(*r);
+    for (const view::PixelRect& r : view::merge_overlapping(rects))
+      shadow.rects.push_back(vk::Rect2D{{r.x0, r.y0}, {static_cast<std::uint32_t>(r.x1 - r.x0), static_cast<std::uint32_t>(r.y1 - r.y0)}});
+    if (shadow.rects.empty()) return std::nullopt;
+    return shadow;
+  }
+
   void write_frame_uniforms(const Slot& s, const lod::Camera& camera, const std::array<float, 16>& view_proj,
-                            std::uint32_t stride, std::uint32_t pitch) const {
+                            std::uint32_t stride, std::uint32_t pitch,
+                            const std::optional<FrameShadow>& shadow) const {
     const view::LightingSpec& l = lighting;
     const view::ViewSpec& v = session.scene().view;
     const double sl = std::sqrt(l.sun[0] * l.sun[0] + l.sun[1] * l.sun[1] + l.sun[2] * l.sun[2]);
@@ -274,6 +330,9 @@ struct FrameLoop::Impl {
     f.sky_lo = v4(sky.lo);
     f.sky_hi = v4(sky.hi);
     f.screen = {1.0f / static_cast<float>(camera.width), 1.0f / static_cast<float>(camera.height), kReflectionShift, 0.0f};
+    if (shadow) std::memcpy(f.shadow.m, shadow->view.texture.data(), sizeof f.shadow.m);
+    const std::array<float, 3> under_water = view::sunlight_in_water(l.sun);
+    f.shadow_sun = {under_water[0], under_water[1], under_water[2], 0.0f};
     std::memcpy(s.uniforms.mapped, &f, sizeof f);
     s.uniforms.flush(ctx);
   }
@@ -284,6 +343,8 @@ struct FrameLoop::Impl {
     const vk::DescriptorBufferInfo infos[] = {s.uniforms.whole(), b.state->whole(), b.normals->whole()};
     const vk::DescriptorImageInfo reflection{.sampler = *reflection_sampler, .imageView = *s.reflection.color.view,
                                              .imageLayout = vk::ImageLayout::eShaderReadOnlyOptimal};
+    const vk::DescriptorImageInfo shadow{.sampler = *shadow_sampler, .imageView = *s.shadow.view,
+                                         .imageLayout = vk::ImageLayout::eShaderReadOnlyOptimal};
     const vk::WriteDescriptorSet writes[] = {
         {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_FRAME, .descriptorCount = 1,
          .descriptorType = vk::DescriptorType::eUniformBuffer, .pBufferInfo = &infos[0]},
@@ -292,7 +353,9 @@ struct FrameLoop::Impl {
         {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_NORMALS, .descriptorCount = 1,
          .descriptorType = vk::DescriptorType::eStorageBuffer, .pBufferInfo = &infos[2]},
         {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_REFLECTION, .descriptorCount = 1,
-         .descriptorType = vk::DescriptorType::eCombinedImageSampler, .pImageInfo = &reflection}};
+         .descriptorType = vk::DescriptorType::eCombinedImageSampler, .pImageInfo = &reflection},
+        {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_SHADOW, .descriptorCount = 1,
+         .descriptorType = vk::DescriptorType::eCombinedImageSampler, .pImageInfo = &shadow}};
     ctx.device().updateDescriptorSets(writes, nullptr);
   }
 
@@ -315,7 +378,8 @@ struct FrameLoop::Impl {
   }
 
   void record(const Slot& s, const FrameTarget& target, const FrameInfo& info, const gpu::Buffer& indices,
-              std::uint32_t index_count, const FrameView& view) const {
+              std::uint32_t index_count, const FrameView& view,
+              const std::optional<FrameShadow>& shadow) const {
     const vk::raii::CommandBuffer& cmd = s.cmd;
     cmd.reset();
     cmd.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
@@ -333,6 +397,16 @@ struct FrameLoop::Impl {
                        A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite)};
     cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &compute_to_vertex,
                                             .imageMemoryBarrierCount = 2, .pImageMemoryBarriers = begin_images});
+    if (shadow) {
+      FrameInfo sun = info;
+      sun.view_proj = shadow->view.clip.data();
+      sun.extent = s.shadow.extent;
+      record_shadow_pass(cmd, s.shadow, [&] {
+        for (PassDrawable* d : drawables) d->draw_shadow(sun);
+      });
+    } else {
+      record_shadow_map_unused(cmd, s.shadow);
+    }
     const bool reflections = view.effects.reflections;
     if (reflections) {
       FrameInfo mirrored = info;
@@ -363,12 +437,27 @@ struct FrameLoop::Impl {
     cmd.setScissor(0, vk::Rect2D{{0, 0}, target.extent});
     for (PassDrawable* d : drawables) d->draw_occluding(info);
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *s.set, nullptr);
-    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.land);
+    // The land and the water: where a shadow can fall (shadow->rects) with the pipelines that
+    // sample the map, first; then everywhere with those that do not, whose depth test (less) fails
+    // on the pixels already drawn (the same vertex shaders: the same depths), before shading them.
+    auto shaded = [&](const vk::raii::Pipeline& plain, const vk::raii::Pipeline& shadowed, const auto& draw_call) {
+      if (shadow) {
+        cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *shadowed);
+        for (const vk::Rect2D& r : shadow->rects) {
+          cmd.setScissor(0, r);
+          draw_call();
+        }
+        cmd.setScissor(0, vk::Rect2D{{0, 0}, target.extent});
+      }
+      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *plain);
+      draw_call();
+    };
     cmd.bindVertexBuffers(0, *land.buffer, vk::DeviceSize{0});
-    cmd.draw(land_vertices, 1, 0, 0);
+    shaded(pipes.land, pipes.shadowed.land, [&] { cmd.draw(land_vertices, 1, 0, 0); });
     cmd.bindIndexBuffer(*indices.buffer, 0, vk::IndexType::eUint32);
-    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, reflections ? *pipes.water_reflect : *pipes.water);
-    cmd.drawIndexed(index_count, 1, 0, 0, 0);
+    shaded(reflections ? pipes.water_reflect : pipes.water,
+           reflections ? pipes.shadowed.water_reflect : pipes.shadowed.water,
+           [&] { cmd.drawIndexed(index_count, 1, 0, 0, 0); });
     if (view.wireframe && *pipes.wire) {
       cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.wire);
       cmd.drawIndexed(index_count, 1, 0, 0, 0);

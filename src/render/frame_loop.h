@@ -6,8 +6,9 @@
 // ARCHITECTURE.md:
 //
 //   substeps (the session's solver: GPU compute or CPU) -> normals -> LOD (CPU, from the new
-//     positions) -> draw (the planar reflection's pass when on, render/reflection_pass.h; then
-//     dynamic rendering into the caller's image: land, water, LOD wireframe, extra drawables, sky)
+//     positions) -> draw (the sun's shadow map when on, render/shadow_pass.h; the planar
+//     reflection's pass when on, render/reflection_pass.h; then dynamic rendering into the
+//     caller's image: land, water, LOD wireframe, extra drawables, sky)
 //
 // Synchronization: the compute work (substeps + normals) is submitted and waited for, because the
 // CPU LOD builder needs this frame's positions (read straight from the state memory when it is
@@ -31,12 +32,14 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "gpu/context.h"
 #include "lod/camera_budget.h"
 #include "scene/scene.h"
 #include "sim/model.h"
 #include "sim/session.h"
+#include "view/sun_shadow.h"
 #include "view/view_spec.h"
 
 namespace pond::render {
@@ -106,6 +109,12 @@ class PassDrawable {
   // the nearest depth, so the scene's fragments behind them fail the depth test before they are
   // shaded (on llvmpipe the water's shading is most of what a pixel under the panel costs).
   virtual void draw_occluding(const FrameInfo& /*frame*/) {}
+  // After prepare(): the bounding spheres (world) of what this drawable casts into the sun's shadow
+  // map, which is fitted to them (render/shadow_pass.h). None: it casts nothing.
+  virtual void add_shadow_casters(std::vector<view::ShadowCaster>& /*casters*/) const {}
+  // Inside the shadow map's pass (depth only, kShadowFormat; frame.view_proj is the sun's
+  // orthographic projection, frame.extent the map's size): draw the casters, depth only.
+  virtual void draw_shadow(const FrameInfo& /*frame*/) {}
 };
 
 class FrameLoop {

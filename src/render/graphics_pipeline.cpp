@@ -1,5 +1,7 @@
 #include "render/graphics_pipeline.h"
 
+#include <array>
+
 #include "render/color_format.h"
 #include "shared/water_render.h"
 
@@ -14,28 +16,34 @@ vk::raii::ShaderModule module(const gpu::Context& ctx, std::span<const std::uint
 vk::raii::Pipeline create_graphics_pipeline(const gpu::Context& ctx, const vk::raii::PipelineLayout& layout,
                                             vk::Format color, vk::Format depth,
                                             const GraphicsPipelineDesc& d) {
-  const vk::raii::ShaderModule vs = module(ctx, d.vert), fs = module(ctx, d.frag);
+  const bool has_frag = !d.frag.empty(), has_color = color != vk::Format::eUndefined;
+  const vk::raii::ShaderModule vs = module(ctx, d.vert);
+  const vk::raii::ShaderModule fs = has_frag ? module(ctx, d.frag) : vk::raii::ShaderModule(nullptr);
   // The target's encoding is a specialization constant, not a uniform: llvmpipe would otherwise
   // run the per-pixel pow() of the UNORM branch for every pixel under a mask, sRGB targets
   // included (docs/perf.md). Fragment shaders without the constant ignore it.
-  const vk::Bool32 encode_srgb = is_srgb(color) || d.linear_output ? VK_FALSE : VK_TRUE;
-  const vk::SpecializationMapEntry encode_entry{.constantID = POND_SPEC_ENCODE_SRGB, .offset = 0,
-                                                .size = sizeof encode_srgb};
-  const vk::SpecializationInfo frag_constants{.mapEntryCount = 1, .pMapEntries = &encode_entry,
-                                              .dataSize = sizeof encode_srgb, .pData = &encode_srgb};
+  // Likewise the shadows (shared/shadow_sampling.h): off, the shader holds no shadow code.
+  const std::array<vk::Bool32, 2> constants{is_srgb(color) || d.linear_output ? VK_FALSE : VK_TRUE,
+                                            d.shadows ? VK_TRUE : VK_FALSE};
+  const vk::SpecializationMapEntry entries[] = {
+      {.constantID = POND_SPEC_ENCODE_SRGB, .offset = 0, .size = sizeof(vk::Bool32)},
+      {.constantID = POND_SPEC_SHADOWS, .offset = sizeof(vk::Bool32), .size = sizeof(vk::Bool32)}};
+  const vk::SpecializationInfo frag_constants{.mapEntryCount = 2, .pMapEntries = entries,
+                                              .dataSize = sizeof constants, .pData = constants.data()};
   const vk::PipelineShaderStageCreateInfo stages[] = {
       {.stage = vk::ShaderStageFlagBits::eVertex, .module = *vs, .pName = "main"},
       {.stage = vk::ShaderStageFlagBits::eFragment, .module = *fs, .pName = "main",
        .pSpecializationInfo = &frag_constants}};
   const vk::PipelineViewportStateCreateInfo viewport{.viewportCount = 1, .scissorCount = 1};
   const vk::PipelineMultisampleStateCreateInfo multisample{.rasterizationSamples = vk::SampleCountFlagBits::e1};
-  const vk::PipelineColorBlendStateCreateInfo blending{.attachmentCount = 1, .pAttachments = &d.blend};
+  const vk::PipelineColorBlendStateCreateInfo blending{.attachmentCount = has_color ? 1u : 0u, .pAttachments = &d.blend};
   const vk::DynamicState dynamic_states[] = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
   const vk::PipelineDynamicStateCreateInfo dynamic{.dynamicStateCount = 2, .pDynamicStates = dynamic_states};
-  const vk::PipelineRenderingCreateInfo rendering{.colorAttachmentCount = 1, .pColorAttachmentFormats = &color,
+  const vk::PipelineRenderingCreateInfo rendering{.colorAttachmentCount = has_color ? 1u : 0u,
+                                                  .pColorAttachmentFormats = has_color ? &color : nullptr,
                                                   .depthAttachmentFormat = depth};
   const vk::GraphicsPipelineCreateInfo info{.pNext = &rendering,
-                                            .stageCount = 2,
+                                            .stageCount = has_frag ? 2u : 1u,
                                             .pStages = stages,
                                             .pVertexInputState = &d.vertex_input,
                                             .pInputAssemblyState = &d.assembly,

@@ -2,7 +2,8 @@
 // The parts every pond graphics pipeline shares: a vertex and a fragment shader from embedded
 // SPIR-V, one viewport and scissor set per frame (dynamic), no multisampling, one color attachment
 // and a depth attachment through dynamic rendering (so the same pipeline draws into an offscreen
-// image or a swapchain image). Each pipeline file describes only what differs.
+// image or a swapchain image). Each pipeline file describes only what differs. A depth-only
+// pipeline (the sun's shadow map) has colour format eUndefined and may have no fragment shader.
 #include <cstdint>
 #include <span>
 #include <string>
@@ -22,6 +23,8 @@ struct GraphicsPipelineDesc {
   // The target holds linear colour whatever its format (the planar reflection, which the water
   // samples): the fragment shader does not encode sRGB (POND_SPEC_ENCODE_SRGB off).
   bool linear_output = false;
+  // The fragment shader samples the sun's shadow map (POND_SPEC_SHADOWS, shared/shadow_sampling.h).
+  bool shadows = false;
 };
 
 vk::raii::Pipeline create_graphics_pipeline(const gpu::Context& ctx, const vk::raii::PipelineLayout& layout,

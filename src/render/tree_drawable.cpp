@@ -12,9 +12,11 @@
 #include "tree/tree_lod.h"
 #include "tree/tree_mesh.h"
 #include "render/reflection_pass.h"
+#include "render/shadow_pass.h"
 #include "render/tree_pipeline.h"
 #include "sim/wind_ripples.h"
 #include "shared/tree_render.h"
+#include "tree/bend.h"
 #include "tree/noise.h"
 
 namespace pond::render {
@@ -27,6 +29,11 @@ using BU = vk::BufferUsageFlagBits;
 constexpr sh::vec4 kBark{0.16f, 0.1f, 0.06f, 0.0f};
 constexpr sh::vec4 kLeaf{0.09f, 0.24f, 0.045f, 0.0f};
 constexpr sh::vec4 kLine{0.05f, 0.04f, 0.03f, 1.0f};
+
+// The shadow map's level of detail is chosen as for a map with this share of its texels per unit:
+// coarser (fewer tube levels, more of the far leaves pruned, the rest grown to cover the same
+// area), since the tree's vertex work, not the map's few texels, is what its pass costs.
+constexpr float kShadowLodScale = 0.5f;
 
 sh::vec4 v4(const std::array<double, 3>& a) {
   return {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2]), 0.0f};
@@ -49,6 +56,7 @@ struct Instance {
   // pruned as a tree that far away would be.
   tree::TreeWindFrame frame{};
   InstanceLod lod, mirrored_lod;
+  InstanceLod shadow_lod;  // the sun's shadow map's level of detail (draw_shadow())
 };
 
 struct SlotResources {
@@ -68,6 +76,7 @@ struct TreeDrawable::Impl {
   tree::Tree grown;
   tree::TreeMesh mesh;
   tree::TreeBounds bounds;
+  float mesh_reach = 0.0f;  // the largest offset of a mesh vertex from its skeleton vertex (tree units)
   gpu::Buffer vertices, indices, skeleton, parents;
   vk::raii::DescriptorPool pool = nullptr;
   std::vector<SlotResources> slots;
@@ -79,7 +88,7 @@ struct TreeDrawable::Impl {
 
   Impl(const gpu::Context& c, const FrameLoop& loop, const tree::TreeSpec& t, const tree::WindSpec& w)
       : ctx(c), spec(t), wind_spec(w), user(sim::scene_user_wind(w)), noise(tree::make_noise_table(w.seed)),
-        pipes(create_tree_pipelines(c, loop.color_format(), FrameLoop::kDepthFormat, kReflectionFormat)) {
+        pipes(create_tree_pipelines(c, loop.color_format(), FrameLoop::kDepthFormat, kReflectionFormat, kShadowFormat)) {
     const vk::DescriptorPoolSize sizes[] = {
         {.type = vk::DescriptorType::eUniformBuffer, .descriptorCount = FrameLoop::kFramesInFlight},
         {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 2 * FrameLoop::kFramesInFlight}};
@@ -117,6 +126,9 @@ struct TreeDrawable::Impl {
     grown = tree::grow_tree(tree::TreeParams{.depth = spec.depth, .seed = spec.seed, .trunk_length = 1.0f});
     mesh = tree::build_tree_mesh(grown);
     bounds = tree::tree_bounds(grown, mesh);
+    mesh_reach = 0.0f;
+    for (const tree::TreeMeshVertex& v : mesh.vertices)
+      mesh_reach = std::max(mesh_reach, std::sqrt(v.offset.x * v.offset.x + v.offset.y * v.offset.y + v.offset.z * v.offset.z));
     vertices = gpu::create_buffer(ctx, mesh.vertices.size() * sizeof(tree::TreeMeshVertex), BU::eVertexBuffer | BU::eTransferDst,
                              gpu::MemoryUse::device, "tree mesh vertices");
     gpu::upload(ctx, vertices, std::as_bytes(std::span(mesh.vertices)));
@@ -218,11 +230,26 @@ struct TreeDrawable::Impl {
       });
   }
 
-  // `pixel_scale`: 0 for the direct pipelines, the reflection's pixels per frame pixel for the
-  // mirrored ones (TreeInstance::pruning.w).
-  void draw(const FrameInfo& info, const TreeMaterialPipelines& pipelines, float pixel_scale) const {
-    const bool mirrored = pixel_scale > 0.0f;
-    auto lod = [mirrored](const Instance& i) -> const InstanceLod& { return mirrored ? i.mirrored_lod : i.lod; };
+  // The sun's shadow map: the light's projection into the slot's uniforms (host-visible; the slot's
+  // frame is still being recorded), each instance's level of detail at the map's texels per unit.
+  void prepare_shadow(const FrameInfo& info) {
+    const float* m = info.view_proj;  // orthographic: clip x per world unit is its first row's length
+    const float texels_per_unit = std::sqrt(m[0] * m[0] + m[4] * m[4] + m[8] * m[8]) * 0.5f *
+                                  static_cast<float>(info.extent.width);
+    for (Instance& inst : instances)
+      inst.shadow_lod = level_of_detail ? lod_at(texels_per_unit * kShadowLodScale * inst.base.w)
+                                        : lod_at(std::numeric_limits<float>::infinity());
+    const gpu::Buffer& u = slots[info.slot].uniforms;
+    std::memcpy(static_cast<std::byte*>(u.mapped) + offsetof(sh::TreeRenderFrame, light_proj), m, sizeof(sh::mat4));
+    u.flush(ctx);
+  }
+
+  // `lod_of`: which of an instance's levels of detail to draw. `pixel_scale`: 0 for the direct and
+  // shadow pipelines, the reflection's pixels per frame pixel for the mirrored ones
+  // (TreeInstance::pruning.w).
+  void draw(const FrameInfo& info, const TreeMaterialPipelines& pipelines, InstanceLod Instance::*lod_of,
+            float pixel_scale) const {
+    auto lod = [lod_of](const Instance& i) -> const InstanceLod& { return i.*lod_of; };
     const vk::raii::CommandBuffer& cmd = info.cmd;
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *slots[info.slot].set, nullptr);
     cmd.bindVertexBuffers(0, *vertices.buffer, vk::DeviceSize{0});
@@ -262,8 +289,35 @@ TreeDrawable::~TreeDrawable() {
 }
 
 void TreeDrawable::prepare(const FrameInfo& frame) { impl_->prepare(frame); }
-void TreeDrawable::draw(const FrameInfo& frame) { impl_->draw(frame, impl_->pipes.direct, 0.0f); }
-void TreeDrawable::draw_reflected(const FrameInfo& frame) { impl_->draw(frame, impl_->pipes.mirrored, frame.pixel_scale); }
+void TreeDrawable::draw(const FrameInfo& frame) { impl_->draw(frame, impl_->pipes.direct, &Instance::lod, 0.0f); }
+void TreeDrawable::draw_reflected(const FrameInfo& frame) {
+  impl_->draw(frame, impl_->pipes.mirrored, &Instance::mirrored_lod, frame.pixel_scale);
+}
+// The box around each instance's skeleton as this frame bends it (the CPU's bend, the shader's
+// functions), widened by the mesh's reach from it (rings, leaves; pruned far leaves are drawn
+// grown, up to twice as far): much tighter than the level of detail's sphere, which holds any
+// wind, and what decides how much of the screen samples the shadow map.
+void TreeDrawable::add_shadow_casters(std::vector<view::ShadowCaster>& casters) const {
+  const Impl& m = *impl_;
+  std::vector<tree::Vec3> bent(m.grown.size());
+  for (const Instance& inst : m.instances) {
+    tree::bend_tree(m.grown, inst.frame, bent);
+    view::ShadowCaster box{{inst.base.x, inst.base.y, inst.base.z}, {inst.base.x, inst.base.y, inst.base.z}};
+    const float base[3] = {inst.base.x, inst.base.y, inst.base.z}, pad = 2.0f * m.mesh_reach * inst.base.w;
+    for (const tree::Vec3& p : bent) {
+      const float q[3] = {base[0] + p.x * inst.base.w, base[1] + p.y * inst.base.w, base[2] + p.z * inst.base.w};
+      for (int k = 0; k < 3; ++k) {
+        box.lo[k] = std::min(box.lo[k], q[k] - pad);
+        box.hi[k] = std::max(box.hi[k], q[k] + pad);
+      }
+    }
+    casters.push_back(box);
+  }
+}
+void TreeDrawable::draw_shadow(const FrameInfo& frame) {
+  impl_->prepare_shadow(frame);
+  impl_->draw(frame, impl_->pipes.shadow, &Instance::shadow_lod, 0.0f);
+}
 
 void TreeDrawable::set_wind_direction(double radians) {
   impl_->user.direction = static_cast<float>(radians);

@@ -42,6 +42,9 @@ class TreeDrawable final : public PassDrawable {
   void prepare(const FrameInfo& frame) override;
   void draw(const FrameInfo& frame) override;
   void draw_reflected(const FrameInfo& frame) override;  // mirrored, into the planar reflection
+  // Each instance's bent bounding sphere; drawn into the sun's shadow map at the map's level of detail.
+  void add_shadow_casters(std::vector<view::ShadowCaster>& casters) const override;
+  void draw_shadow(const FrameInfo& frame) override;
 
   // ---- Controls ----
   void set_wind_direction(double radians);  // in the xz plane, from +x toward +z

@@ -9,6 +9,7 @@ namespace {
 #include "tree_leaf_frag.spv.h"
 #include "tree_line_frag.spv.h"
 #include "tree_mirror_vert.spv.h"
+#include "tree_shadow_vert.spv.h"
 #include "tree_twig_frag.spv.h"
 #include "tree_vert.spv.h"
 
@@ -21,6 +22,7 @@ struct Variant {
   std::span<const std::uint32_t> frag;  // a variant of tree.frag
   const char* name;
   bool mirrored = false;  // tree_mirror.vert: clockwise front faces
+  bool shadow = false;    // tree_shadow.vert, depth only (`frag` unused)
 };
 
 vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayout& layout, vk::Format color,
@@ -60,11 +62,12 @@ vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayou
       .depthTestEnable = VK_TRUE, .depthWriteEnable = VK_TRUE, .depthCompareOp = vk::CompareOp::eLessOrEqual};
   using CC = vk::ColorComponentFlagBits;
   const vk::PipelineColorBlendAttachmentState blend{.colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
+  const std::span<const std::uint32_t> vert = variant.shadow     ? std::span<const std::uint32_t>(pond_spirv_tree_shadow_vert)
+                                              : variant.mirrored ? std::span<const std::uint32_t>(pond_spirv_tree_mirror_vert)
+                                                                 : tree_vert_spirv();
   return create_graphics_pipeline(ctx, layout, color, depth,
-                                  {variant.mirrored ? std::span<const std::uint32_t>(pond_spirv_tree_mirror_vert)
-                                                    : tree_vert_spirv(),
-                                   variant.frag, vertex_input, assembly, raster,
-                                   depth_state, blend, variant.name, variant.mirrored});
+                                  {vert, variant.shadow ? std::span<const std::uint32_t>() : variant.frag, vertex_input,
+                                   assembly, raster, depth_state, blend, variant.name, variant.mirrored});
 }
 
 }  // namespace
@@ -73,7 +76,7 @@ std::span<const std::uint32_t> tree_vert_spirv() { return pond_spirv_tree_vert; 
 std::span<const std::uint32_t> tree_frag_spirv() { return pond_spirv_tree_frag; }
 
 TreePipelines create_tree_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format,
-                                    vk::Format mirrored_color_format) {
+                                    vk::Format mirrored_color_format, vk::Format shadow_format) {
   TreePipelines p;
   using SS = vk::ShaderStageFlagBits;
   const vk::DescriptorSetLayoutBinding bindings[] = {
@@ -109,6 +112,14 @@ TreePipelines create_tree_pipelines(const gpu::Context& ctx, vk::Format color_fo
   };
   p.direct = materials(color_format, false);
   p.mirrored = materials(mirrored_color_format, true);
+  // The shadow map's: the same geometry, depth only (the twig lines cast a texel-wide shadow).
+  auto shadow = [&](T topology, C cull, const char* name) {
+    return create(ctx, p.layout, vk::Format::eUndefined, shadow_format, {topology, cull, {}, name, false, true});
+  };
+  p.shadow.lines = shadow(T::eLineList, C::eNone, "tree lines, shadow");
+  p.shadow.twigs = shadow(T::eLineList, C::eNone, "tree twig lines, shadow");
+  p.shadow.tubes = shadow(T::eTriangleList, C::eBack, "tree tubes, shadow");
+  p.shadow.leaves = shadow(T::eTriangleList, C::eNone, "tree leaves, shadow");
   return p;
 }
 

@@ -10,7 +10,8 @@
 //  - leaves: triangles, lit, no culling (a leaf is seen from both sides).
 // Each twice: `direct` for the frame's colour format, and `mirrored` for the planar reflection's
 // target (FrameLoop::kReflectionFormat): tree_mirror.vert mirrors the tree about the water's rest
-// plane y = 0, which turns the tubes' winding clockwise.
+// plane y = 0, which turns the tubes' winding clockwise. And `shadow`: depth only, no fragment shader,
+// into the sun's shadow map (render/shadow_pass.h, kShadowFormat) through tree_shadow.vert.
 #include <cstdint>
 #include <span>
 
@@ -28,11 +29,11 @@ struct TreeMaterialPipelines {
 struct TreePipelines {
   vk::raii::DescriptorSetLayout set_layout = nullptr;
   vk::raii::PipelineLayout layout = nullptr;
-  TreeMaterialPipelines direct, mirrored;
+  TreeMaterialPipelines direct, mirrored, shadow;
 };
 
 TreePipelines create_tree_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format,
-                                    vk::Format mirrored_color_format);
+                                    vk::Format mirrored_color_format, vk::Format shadow_format);
 
 // SPIR-V of shaders/tree.vert and tree.frag's bark build (embedded at build time).
 std::span<const std::uint32_t> tree_vert_spirv();

@@ -15,7 +15,11 @@ struct PipelineSpec {
   bool land_vertices = false;  // LandVertex attributes (else vertex pulling, no attributes)
   bool lines = false;          // polygon mode line, depth bias towards the camera, alpha blending
   bool depth_write = true;
+  // Less, not less-or-equal: the frame loop draws the land and the water where shadows can fall
+  // first (the shadowed pipelines), then everywhere, and the second draw must fail there.
+  bool depth_less = false;
   bool linear_output = false;  // GraphicsPipelineDesc::linear_output
+  bool shadows = false;        // GraphicsPipelineDesc::shadows
   const char* name;
 };
 
@@ -45,7 +49,7 @@ vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayou
       .lineWidth = 1.0f};
   const vk::PipelineDepthStencilStateCreateInfo depth_state{
       .depthTestEnable = VK_TRUE, .depthWriteEnable = s.lines || !s.depth_write ? VK_FALSE : VK_TRUE,
-      .depthCompareOp = vk::CompareOp::eLessOrEqual};
+      .depthCompareOp = s.depth_less ? vk::CompareOp::eLess : vk::CompareOp::eLessOrEqual};
   using CC = vk::ColorComponentFlagBits;
   const vk::PipelineColorBlendAttachmentState blend{
       .blendEnable = s.lines ? VK_TRUE : VK_FALSE,
@@ -55,7 +59,8 @@ vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayou
       .alphaBlendOp = vk::BlendOp::eAdd,
       .colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
   return create_graphics_pipeline(ctx, layout, color, depth,
-                                  {s.vert, s.frag, vertex_input, assembly, raster, depth_state, blend, s.name, s.linear_output});
+                                  {s.vert, s.frag, vertex_input, assembly, raster, depth_state, blend, s.name, s.linear_output,
+                                   s.shadows});
 }
 
 }  // namespace
@@ -71,23 +76,35 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
       {.binding = POND_RENDER_BINDING_NORMALS, .descriptorType = vk::DescriptorType::eStorageBuffer,
        .descriptorCount = 1, .stageFlags = SS::eVertex},
       {.binding = POND_RENDER_BINDING_REFLECTION, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
+       .descriptorCount = 1, .stageFlags = SS::eFragment},
+      {.binding = POND_RENDER_BINDING_SHADOW, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
        .descriptorCount = 1, .stageFlags = SS::eFragment}};
   p.set_layout = vk::raii::DescriptorSetLayout(
-      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = 4, .pBindings = bindings});
+      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = 5, .pBindings = bindings});
   const vk::DescriptorSetLayout set_layout = *p.set_layout;
   p.layout = vk::raii::PipelineLayout(ctx.device(),
                                       vk::PipelineLayoutCreateInfo{.setLayoutCount = 1, .pSetLayouts = &set_layout});
   p.land = create(ctx, p.layout, color_format, depth_format,
-                  {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true, .name = "land"});
+                  {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true, .depth_less = true, .name = "land"});
   p.water = create(ctx, p.layout, color_format, depth_format,
-                   {.vert = water_vert_spirv(), .frag = water_frag_spirv(), .name = "water"});
+                   {.vert = water_vert_spirv(), .frag = water_frag_spirv(), .depth_less = true, .name = "water"});
   p.water_reflect = create(ctx, p.layout, color_format, depth_format,
-                           {.vert = water_vert_spirv(), .frag = water_reflect_frag_spirv(), .name = "water, reflecting"});
+                           {.vert = water_vert_spirv(), .frag = water_reflect_frag_spirv(), .depth_less = true,
+                            .name = "water, reflecting"});
   p.land_mirror = create(ctx, p.layout, kReflectionFormat, depth_format,
                          {.vert = land_mirror_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true,
                           .linear_output = true, .name = "land, mirrored"});
   p.sky = create(ctx, p.layout, color_format, depth_format,
                  {.vert = sky_vert_spirv(), .frag = sky_frag_spirv(), .depth_write = false, .name = "sky"});
+  p.shadowed.land = create(ctx, p.layout, color_format, depth_format,
+                           {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true,
+                            .depth_less = true, .shadows = true, .name = "land, shadowed"});
+  p.shadowed.water = create(ctx, p.layout, color_format, depth_format,
+                            {.vert = water_vert_spirv(), .frag = water_frag_spirv(), .depth_less = true, .shadows = true,
+                             .name = "water, shadowed"});
+  p.shadowed.water_reflect = create(ctx, p.layout, color_format, depth_format,
+                                    {.vert = water_vert_spirv(), .frag = water_reflect_frag_spirv(), .depth_less = true, .shadows = true,
+                                     .name = "water, reflecting, shadowed"});
   if (ctx.physical().getFeatures().fillModeNonSolid)
     p.wire = create(ctx, p.layout, color_format, depth_format,
                     {.vert = water_vert_spirv(), .frag = water_wire_frag_spirv(), .lines = true, .name = "water LOD wireframe"});

@@ -8,7 +8,9 @@
 //  - water_reflect: the water sampling the planar reflection (render/reflection_pass.h);
 //  - land_mirror: the land above the water mirrored about y = 0, for the reflection's target;
 //  - sky:   a box standing on the land's outer edge (view::sky_box), drawn last (depth test, no
-//           write), so it shades only what nothing else covered.
+//           write), so it shades only what nothing else covered;
+//  - shadowed: land, water and water_reflect again, sampling the sun's shadow map
+//           (render/shadow_pass.h; POND_SPEC_SHADOWS), used in frames that have one.
 // No culling: large splashes may fold the surface over.
 #include "gpu/context.h"
 
@@ -23,6 +25,9 @@ struct WaterPipelines {
   vk::raii::Pipeline land_mirror = nullptr;
   vk::raii::Pipeline wire = nullptr;
   vk::raii::Pipeline sky = nullptr;
+  struct {
+    vk::raii::Pipeline land = nullptr, water = nullptr, water_reflect = nullptr;
+  } shadowed;
 };
 
 WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format);

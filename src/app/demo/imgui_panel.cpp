@@ -135,6 +135,7 @@ PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, render::TreeDr
     ImGui::Checkbox("reflections (M)", &s.effects.reflections);
     ImGui::SameLine();
     ImGui::Checkbox("vsync (F3)", &s.vsync);
+    ImGui::Checkbox("shadows (L)", &s.effects.shadows);
     if (ImGui::Button("reset camera (C)")) req.reset_camera = true;
     req.apply_sun = edit_sun(s.sun);
   }

@@ -1,0 +1,46 @@
+#pragma once
+// The sun's shadow map (frame_loop.h draws it first each frame when FrameView::effects.shadows is
+// on and something casts): the pass drawables' casters (the trees, the bodies: PassDrawable::
+// draw_shadow) drawn depth-only, orthographically along the sunlight, into a square depth image
+// fitted to their bounding spheres (view/sun_shadow.h). The land and the water sample it with a
+// depth-compare sampler (shared/shadow_sampling.h): the land's sunlit part, the water's glint and
+// diffuse light, and the pool floor seen through the water where its sunlight entered.
+//
+// Only the trees and the bodies cast, and neither the land nor the water is drawn into the map,
+// so the receivers cannot shade themselves: no acne, and no depth bias to detach a shadow from
+// the trunk's foot (peter-panning). The casters' own light comes from their N.L.
+//
+// Filtering: the sampler filters linearly where the device filters the depth format
+// (SAMPLED_IMAGE_FILTER_LINEAR; the spec does not require it for depth formats): the hardware's
+// 2x2 percentage-closer filter, a soft edge a texel wide. Elsewhere it is nearest. Its border is
+// the far depth, so points beyond the casters' bounds compare as lit.
+#include <functional>
+
+#include "gpu/context.h"
+#include "render/render_target.h"
+
+namespace pond::render {
+
+inline constexpr vk::Format kShadowFormat = vk::Format::eD16Unorm;  // sampled and attachment on every device
+
+// (Re)creates `map` (one frame slot's, idle) when it is not `size` x `size` texels; size 0: keeps any
+// map there is (a frame without shadows), else makes the smallest.
+void ensure_shadow_map(const gpu::Context& ctx, Image& map, std::uint32_t size);
+
+// Records the pass: the map to the depth-attachment layout (contents discarded), cleared to the far
+// depth, viewport and scissor the map's, `draw()` inside, then the map to shader-read for the land's
+// and the water's fragment shaders.
+void record_shadow_pass(const vk::raii::CommandBuffer& cmd, const Image& map, const std::function<void()>& draw);
+
+// A frame without a map still binds it (the descriptor set is whole): puts it in the shader-read
+// layout its pipelines (which never read it) declare.
+void record_shadow_map_unused(const vk::raii::CommandBuffer& cmd, const Image& map);
+
+// Whether the device filters kShadowFormat linearly (the sampler's filter).
+bool shadow_map_filtered(const gpu::Context& ctx);
+
+// The depth-compare sampler (less or equal: lit where no deeper than the stored caster), linear
+// where shadow_map_filtered(), clamped to an opaque white (far) border.
+vk::raii::Sampler create_shadow_sampler(const gpu::Context& ctx);
+
+}  // namespace pond::render

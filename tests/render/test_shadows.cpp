@@ -1,0 +1,175 @@
+// The sun's shadows (render/shadow_pass.h; labels image, gpu; validation on, any message fails):
+// golden images of the tree's island and of a sphere over calm water with shadows on and off; the
+// trunk's shadow falls on the island and the water on the side away from the sun (darker there with
+// shadows, unchanged on the sun's side) and is gone with `view.shadows` off; a sphere's shadow
+// darkens the pool floor seen through calm water where the refracted sunlight through its centre
+// meets it, and not the same distance toward the sun.
+// Regenerate the goldens after a deliberate change: POND_REGENERATE_GOLDENS=1 ctest -L image.
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "drawn_session.h"
+#include "golden.h"
+#include "gpu_fixture.h"
+#include "image_compare.h"
+#include "render/body_drawable.h"
+#include "render/frame_loop.h"
+#include "render/render_target.h"
+#include "render/tree_drawable.h"
+#include "scene/scene.h"
+#include "view/sun_shadow.h"
+#include "view/view_projection.h"
+
+namespace pond::test {
+namespace {
+
+constexpr int kWidth = 256, kHeight = 160;
+
+// The island of the reflection tests with a calm, leafless tree (its trunk stands free), seen from
+// above on the side its shadow falls (the default sun is toward -x, +y, -z: shadows run to +x, +z).
+const char* kCalmIsland = R"({"constraints": [{"kind": "fixed", "rows": [30, 35], "cols": [30, 36]}],
+  "camera": {"eye": [44, 12, 50], "target": [35, 0.5, 35], "fovy": 40},
+  "tree": {"depth": 6, "draw": "tubes", "leaves": false, "positions": [[32.5, 33]]},
+  "wind": {"strength": 0}})";
+// The same island with a leafy tree in the wind after a splash (the golden pictures).
+const char* kIsland = R"({"constraints": [{"kind": "fixed", "rows": [30, 35], "cols": [30, 36]}],
+  "camera": {"eye": [46, 14, 52], "target": [35, 0.5, 35], "fovy": 45},
+  "perturbations": [{"step": 0, "row": 40, "col": 20, "radius": 2.0, "amplitude": 1.0}],
+  "tree": {"depth": 7, "draw": "tubes", "leaves": true}, "wind": {"strength": 3}})";
+// A sphere held above calm water (no contact: its bottom is 1 unit up), seen from nearly overhead,
+// so the floor under the water shows where it is (little refraction).
+const char* kSphere = R"({"grid": {"rows": 50, "cols": 50},
+  "camera": {"eye": [26, 60, 30], "target": [25, 0, 25], "fovy": 40},
+  "bodies": [{"shape": "sphere", "radius": 3.0, "motion": "kinematic", "path": [[0, 20.0, 4.0, 20.0]]}]})";
+
+// The pixel a world point projects to (Vulkan clip space: y down), or {-1, -1} behind the camera.
+std::array<int, 2> project(const std::array<float, 16>& m, double x, double y, double z) {
+  const double cx = m[0] * x + m[4] * y + m[8] * z + m[12], cy = m[1] * x + m[5] * y + m[9] * z + m[13];
+  const double cw = m[3] * x + m[7] * y + m[11] * z + m[15];
+  if (cw <= 0) return {-1, -1};
+  return {static_cast<int>(std::floor((cx / cw * 0.5 + 0.5) * kWidth)),
+          static_cast<int>(std::floor((cy / cw * 0.5 + 0.5) * kHeight))};
+}
+
+// Sum of the encoded channels, 0..765.
+int brightness(const Rgba& img, std::array<int, 2> p) {
+  const std::uint8_t* q = &img.pixels[(static_cast<std::size_t>(p[1]) * img.width + p[0]) * 4];
+  return q[0] + q[1] + q[2];
+}
+
+bool on_image(std::array<int, 2> p) { return p[0] >= 0 && p[0] < kWidth && p[1] >= 0 && p[1] < kHeight; }
+
+class ShadowTest : public GpuTest {
+ protected:
+  // One frame of `json` (after `steps` steps) with shadows on or off, its tree and bodies drawn.
+  Rgba render(const char* json, bool shadows, std::int64_t steps = 0) {
+    const scene::Scene scene = scene::parse_scene(json, "test");
+    DrawnSession drawn(ctx(), scene, {}, render::RenderTarget::kFormat);
+    render::FrameLoop& loop = drawn.loop;
+    std::optional<render::TreeDrawable> tree;
+    if (scene.tree) loop.add_drawable(tree.emplace(ctx(), loop, *scene.tree, scene.wind));
+    render::BodyDrawable bodies(ctx(), loop);
+    loop.add_drawable(bodies);
+    const render::RenderTarget target(ctx(), kWidth, kHeight);
+    drawn.session.advance(steps);
+    render::FrameView view;
+    view.camera = loop.default_camera(kWidth, kHeight);
+    view.steps = 0;
+    view.wait = true;
+    view.effects.shadows = shadows;
+    loop.frame(target.frame_target(), view);
+    return Rgba{kWidth, kHeight, target.read_rgba()};
+  }
+
+  static std::array<float, 16> view_proj(const char* json) {
+    const scene::Scene scene = scene::parse_scene(json, "test");
+    const sim::WaterModel model = sim::build_model(scene);
+    return view::view_projection(view::scene_camera(scene.camera, model, kWidth, kHeight), model);
+  }
+};
+
+// The horizontal step along the ground, per unit of height, from a point to its shadow.
+std::array<double, 2> shadow_step(const std::array<double, 3>& sun) { return {-sun[0] / sun[1], -sun[2] / sun[1]}; }
+
+TEST_F(ShadowTest, TrunkShadowFallsAwayFromTheSunAndGoesWithShadowsOff) {
+  const scene::Scene scene = scene::parse_scene(kCalmIsland, "test");
+  const Rgba on = render(kCalmIsland, true), off = render(kCalmIsland, false);
+  expect_golden("shadow_trunk_on", on);
+  expect_golden("shadow_trunk_off", off);
+  const std::array<float, 16> vp = view_proj(kCalmIsland);
+  const double h = sim::build_model(scene).spacing;
+  const double x = scene.tree->positions[0][1] * h, z = scene.tree->positions[0][0] * h;
+  const double land = scene.view.land_height;
+  const auto step = shadow_step(scene.lighting.sun);
+  // Trunk points 0.15 .. 0.9 above its foot: their shadows on the island's top (which ends 2.5
+  // units from the trunk toward +z), and, mirrored through the foot, the points as far toward the
+  // sun, which no shadow reaches.
+  int checked = 0, darker = 0, sun_side_changed = 0;
+  for (double up = 0.15; up <= 0.9; up += 0.05) {
+    const auto p = project(vp, x + step[0] * up, land, z + step[1] * up);
+    const auto q = project(vp, x - step[0] * up, land, z - step[1] * up);
+    ASSERT_TRUE(on_image(p) && on_image(q)) << "off screen at " << up;
+    ++checked;
+    if (brightness(on, p) + 40 < brightness(off, p)) ++darker;
+    if (std::abs(brightness(on, q) - brightness(off, q)) > 12) ++sun_side_changed;
+  }
+  EXPECT_GE(darker, checked * 3 / 4) << darker << " of " << checked << " land points in the trunk's shadow are darker";
+  EXPECT_EQ(sun_side_changed, 0) << "the land toward the sun changed";
+  // Higher up the trunk's shadow reaches past the island onto the water (y = 0): the floor seen
+  // through it loses the sun there. Points on the line of the shadow from 2 to 3 units up.
+  int water_checked = 0, water_darker = 0;
+  for (double up = 2.0; up <= 3.0; up += 0.1) {
+    const double height = land + up;  // above the water's rest plane
+    const auto p = project(vp, x + step[0] * height, 0.0, z + step[1] * height);
+    ASSERT_TRUE(on_image(p));
+    ++water_checked;
+    if (brightness(on, p) + 15 < brightness(off, p)) ++water_darker;
+  }
+  EXPECT_GE(water_darker, water_checked / 2) << water_darker << " of " << water_checked << " water points darker";
+  // With shadows off nothing of the kind: the picture equals a frame of a scene without the key's
+  // effect (the default on, set off by FrameView) -- checked by the golden above; and the tree's
+  // own pixels are the same in both.
+  const auto trunk = project(vp, x, land + 0.5, z);
+  EXPECT_LT(std::abs(brightness(on, trunk) - brightness(off, trunk)), 12);
+}
+
+TEST_F(ShadowTest, SphereShadowsTheFloorThroughCalmWater) {
+  const scene::Scene scene = scene::parse_scene(kSphere, "test");
+  const Rgba on = render(kSphere, true), off = render(kSphere, false);
+  expect_golden("shadow_sphere_on", on);
+  expect_golden("shadow_sphere_off", off);
+  const std::array<float, 16> vp = view_proj(kSphere);
+  const std::array<double, 3> c{20.0, 4.0, 20.0};  // world (spacing 1)
+  const auto& sun = scene.lighting.sun;
+  const auto step = shadow_step(sun);
+  // Where the sunlight through the centre enters the water, then down the refracted sunlight to
+  // the floor; the pixel above that floor point (seen from nearly overhead, refraction shifts it
+  // by a tenth of a unit).
+  const double sx = c[0] + step[0] * c[1], sz = c[2] + step[1] * c[1];
+  const std::array<float, 3> t = view::sunlight_in_water(sun);
+  const double depth = scene.view.floor_depth, run = depth / -t[1];
+  const double fx = sx + t[0] * run, fz = sz + t[2] * run;
+  int checked = 0, darker = 0, sun_side_changed = 0;
+  for (double dx = -0.6; dx <= 0.6; dx += 0.3)
+    for (double dz = -0.6; dz <= 0.6; dz += 0.3) {
+      const auto p = project(vp, fx + dx, 0.0, fz + dz);
+      // As far from the sphere toward the sun: sunlit water in both pictures.
+      const auto q = project(vp, 2 * c[0] - fx + dx, 0.0, 2 * c[2] - fz + dz);
+      ASSERT_TRUE(on_image(p) && on_image(q));
+      ++checked;
+      if (brightness(on, p) + 25 < brightness(off, p)) ++darker;
+      if (std::abs(brightness(on, q) - brightness(off, q)) > 6) ++sun_side_changed;
+    }
+  EXPECT_GE(darker, checked * 3 / 4) << darker << " of " << checked << " floor points in the sphere's shadow are darker";
+  EXPECT_EQ(sun_side_changed, 0) << "the water toward the sun changed";
+}
+
+// Golden pictures of the leafy tree's island after a splash, with and without shadows.
+TEST_F(ShadowTest, IslandGoldens) {
+  expect_golden("shadow_island_on", render(kIsland, true, 12));
+  expect_golden("shadow_island_off", render(kIsland, false, 12));
+}
+
+}  // namespace
+}  // namespace pond::test
