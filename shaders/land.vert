@@ -41,9 +41,6 @@ void main() {
 #ifdef POND_LAND_MIRROR
   gl_Position = f.view_proj * vec4(in_position.x, -in_position.y, in_position.z, 1.0);
 #else
-  // The same depth from every pipeline drawing it (the frame loop draws the land where shadows can
-  // fall, then everywhere else with a depth test that must fail there): no contraction.
-  precise vec4 position = f.view_proj * vec4(in_position.xyz, 1.0);
-  gl_Position = position;
+  gl_Position = f.view_proj * vec4(in_position.xyz, 1.0);
 #endif
 }

@@ -41,10 +41,7 @@ void main() {
   const vec3 world = (rest + u) * POND_FRAME_GRID_SPACING(f);  // grid units -> world
   out_world = world;
   out_normal = normals[n].xyz;
-  // The same depth from every pipeline drawing it (the frame loop draws the water where shadows
-  // can fall, then everywhere else with a depth test that must fail there): no contraction.
-  precise vec4 position = f.view_proj * vec4(world, 1.0);
-  gl_Position = position;
+  gl_Position = f.view_proj * vec4(world, 1.0);
   // w: POND_FLAT_INV_SPACING, the reciprocal: water.frag multiplies by it.
   out_eye = vec4(f.eye.xyz, 1.0 / POND_FRAME_GRID_SPACING(f));
   out_sun = vec4(f.sun.xyz, POND_FRAME_FLOOR_DEPTH(f));  // w: POND_FLAT_FLOOR_DEPTH

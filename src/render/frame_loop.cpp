@@ -65,10 +65,11 @@ constexpr double kShadowTexelsPerPixel = 1.5;
 constexpr std::uint32_t kMaxShadowMapSize = 1024;
 constexpr double kShadowWaveMargin = 1.0;
 
-// One frame's shadow map: its view and the target's rectangles where its shadows can show.
+// One frame's shadow map: its view, the target's rectangles where its shadows can show, and
+// disjoint ones covering the rest of the target.
 struct FrameShadow {
   view::SunShadowView view;
-  std::vector<vk::Rect2D> rects;
+  std::vector<vk::Rect2D> rects, rest;
 };
 
 double ms_since(std::chrono::steady_clock::time_point& t) {
@@ -291,7 +292,7 @@ struct FrameLoop::Impl {
     const std::optional<view::SunShadowView> fitted =
         view::fit_sun_shadow(lighting.sun, casters, pixels * kShadowTexelsPerPixel, kMaxShadowMapSize);
     if (!fitted) return std::nullopt;
-    FrameShadow shadow{*fitted, {}};
+    FrameShadow shadow{*fitted, {}, {}};
     const view::ViewSpec& v = session.scene().view;
     std::vector<view::PixelRect> rects;
     for (const view::ShadowCaster& c : casters)
@@ -299,9 +300,14 @@ struct FrameLoop::Impl {
                                              static_cast<int>(extent.height), -v.floor_depth,
                                              v.land_height + kShadowWaveMargin))
         rects.push_back(*r);
-    for (const view::PixelRect& r : view::merge_overlapping(rects))
-      shadow.rects.push_back(vk::Rect2D{{r.x0, r.y0}, {static_cast<std::uint32_t>(r.x1 - r.x0), static_cast<std::uint32_t>(r.y1 - r.y0)}});
-    if (shadow.rects.empty()) return std::nullopt;
+    auto rect = [](const view::PixelRect& r) {
+      return vk::Rect2D{{r.x0, r.y0}, {static_cast<std::uint32_t>(r.x1 - r.x0), static_cast<std::uint32_t>(r.y1 - r.y0)}};
+    };
+    rects = view::merge_overlapping(rects);
+    if (rects.empty()) return std::nullopt;
+    for (const view::PixelRect& r : rects) shadow.rects.push_back(rect(r));
+    for (const view::PixelRect& r : view::complement(rects, static_cast<int>(extent.width), static_cast<int>(extent.height)))
+      shadow.rest.push_back(rect(r));
     return shadow;
   }
 
@@ -438,19 +444,24 @@ struct FrameLoop::Impl {
     for (PassDrawable* d : drawables) d->draw_occluding(info);
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *s.set, nullptr);
     // The land and the water: where a shadow can fall (shadow->rects) with the pipelines that
-    // sample the map, first; then everywhere with those that do not, whose depth test (less) fails
-    // on the pixels already drawn (the same vertex shaders: the same depths), before shading them.
+    // sample the map, elsewhere (shadow->rest) with those that do not, each pixel by one of them:
+    // llvmpipe runs both sides of a per-pixel branch, so only the scissor keeps the fetches off
+    // the pixels no shadow reaches.
     auto shaded = [&](const vk::raii::Pipeline& plain, const vk::raii::Pipeline& shadowed, const auto& draw_call) {
-      if (shadow) {
-        cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *shadowed);
-        for (const vk::Rect2D& r : shadow->rects) {
+      if (!shadow) {
+        cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *plain);
+        draw_call();
+        return;
+      }
+      for (const auto& [pipeline, rects] : {std::pair{&shadowed, &shadow->rects}, std::pair{&plain, &shadow->rest}}) {
+        if (rects->empty()) continue;
+        cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, **pipeline);
+        for (const vk::Rect2D& r : *rects) {
           cmd.setScissor(0, r);
           draw_call();
         }
-        cmd.setScissor(0, vk::Rect2D{{0, 0}, target.extent});
       }
-      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *plain);
-      draw_call();
+      cmd.setScissor(0, vk::Rect2D{{0, 0}, target.extent});
     };
     cmd.bindVertexBuffers(0, *land.buffer, vk::DeviceSize{0});
     shaded(pipes.land, pipes.shadowed.land, [&] { cmd.draw(land_vertices, 1, 0, 0); });

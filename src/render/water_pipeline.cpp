@@ -15,9 +15,6 @@ struct PipelineSpec {
   bool land_vertices = false;  // LandVertex attributes (else vertex pulling, no attributes)
   bool lines = false;          // polygon mode line, depth bias towards the camera, alpha blending
   bool depth_write = true;
-  // Less, not less-or-equal: the frame loop draws the land and the water where shadows can fall
-  // first (the shadowed pipelines), then everywhere, and the second draw must fail there.
-  bool depth_less = false;
   bool linear_output = false;  // GraphicsPipelineDesc::linear_output
   bool shadows = false;        // GraphicsPipelineDesc::shadows
   const char* name;
@@ -49,7 +46,7 @@ vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayou
       .lineWidth = 1.0f};
   const vk::PipelineDepthStencilStateCreateInfo depth_state{
       .depthTestEnable = VK_TRUE, .depthWriteEnable = s.lines || !s.depth_write ? VK_FALSE : VK_TRUE,
-      .depthCompareOp = s.depth_less ? vk::CompareOp::eLess : vk::CompareOp::eLessOrEqual};
+      .depthCompareOp = vk::CompareOp::eLessOrEqual};
   using CC = vk::ColorComponentFlagBits;
   const vk::PipelineColorBlendAttachmentState blend{
       .blendEnable = s.lines ? VK_TRUE : VK_FALSE,
@@ -85,11 +82,11 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
   p.layout = vk::raii::PipelineLayout(ctx.device(),
                                       vk::PipelineLayoutCreateInfo{.setLayoutCount = 1, .pSetLayouts = &set_layout});
   p.land = create(ctx, p.layout, color_format, depth_format,
-                  {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true, .depth_less = true, .name = "land"});
+                  {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true, .name = "land"});
   p.water = create(ctx, p.layout, color_format, depth_format,
-                   {.vert = water_vert_spirv(), .frag = water_frag_spirv(), .depth_less = true, .name = "water"});
+                   {.vert = water_vert_spirv(), .frag = water_frag_spirv(), .name = "water"});
   p.water_reflect = create(ctx, p.layout, color_format, depth_format,
-                           {.vert = water_vert_spirv(), .frag = water_reflect_frag_spirv(), .depth_less = true,
+                           {.vert = water_vert_spirv(), .frag = water_reflect_frag_spirv(),
                             .name = "water, reflecting"});
   p.land_mirror = create(ctx, p.layout, kReflectionFormat, depth_format,
                          {.vert = land_mirror_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true,
@@ -98,12 +95,12 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
                  {.vert = sky_vert_spirv(), .frag = sky_frag_spirv(), .depth_write = false, .name = "sky"});
   p.shadowed.land = create(ctx, p.layout, color_format, depth_format,
                            {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true,
-                            .depth_less = true, .shadows = true, .name = "land, shadowed"});
+                            .shadows = true, .name = "land, shadowed"});
   p.shadowed.water = create(ctx, p.layout, color_format, depth_format,
-                            {.vert = water_vert_spirv(), .frag = water_frag_spirv(), .depth_less = true, .shadows = true,
+                            {.vert = water_vert_spirv(), .frag = water_frag_spirv(), .shadows = true,
                              .name = "water, shadowed"});
   p.shadowed.water_reflect = create(ctx, p.layout, color_format, depth_format,
-                                    {.vert = water_vert_spirv(), .frag = water_reflect_frag_spirv(), .depth_less = true, .shadows = true,
+                                    {.vert = water_vert_spirv(), .frag = water_reflect_frag_spirv(), .shadows = true,
                                      .name = "water, reflecting, shadowed"});
   if (ctx.physical().getFeatures().fillModeNonSolid)
     p.wire = create(ctx, p.layout, color_format, depth_format,
