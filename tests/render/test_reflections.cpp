@@ -13,6 +13,7 @@
 #include "golden.h"
 #include "gpu_fixture.h"
 #include "image_compare.h"
+#include "pixel_probe.h"
 #include "render/frame_loop.h"
 #include "render/render_target.h"
 #include "render/tree_drawable.h"
@@ -56,19 +57,9 @@ class ReflectionTest : public GpuTest {
   }
 };
 
-// Luminance-ish brightness of a pixel (sum of the encoded channels, 0..765).
-int brightness(const Rgba& img, int x, int y) {
-  const std::uint8_t* p = &img.pixels[(static_cast<std::size_t>(y) * img.width + x) * 4];
-  return p[0] + p[1] + p[2];
-}
-
-// The pixel a world point projects to (Vulkan clip space: y down), or {-1, -1} behind the camera.
+int brightness(const Rgba& img, int x, int y) { return pixel_brightness(img, x, y); }
 std::array<int, 2> project(const std::array<float, 16>& m, double x, double y, double z) {
-  const double cx = m[0] * x + m[4] * y + m[8] * z + m[12], cy = m[1] * x + m[5] * y + m[9] * z + m[13];
-  const double cw = m[3] * x + m[7] * y + m[11] * z + m[15];
-  if (cw <= 0) return {-1, -1};
-  return {static_cast<int>(std::floor((cx / cw * 0.5 + 0.5) * kWidth)),
-          static_cast<int>(std::floor((cy / cw * 0.5 + 0.5) * kHeight))};
+  return project_to_pixel(m, x, y, z, kWidth, kHeight);
 }
 
 TEST_F(ReflectionTest, TrunkIsMirroredAboutTheWaterlineAndGoneWithoutReflections) {

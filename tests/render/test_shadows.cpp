@@ -13,6 +13,7 @@
 #include "golden.h"
 #include "gpu_fixture.h"
 #include "image_compare.h"
+#include "pixel_probe.h"
 #include "render/body_drawable.h"
 #include "render/frame_loop.h"
 #include "render/render_target.h"
@@ -43,20 +44,11 @@ const char* kSphere = R"({"grid": {"rows": 50, "cols": 50},
   "camera": {"eye": [26, 60, 30], "target": [25, 0, 25], "fovy": 40},
   "bodies": [{"shape": "sphere", "radius": 3.0, "motion": "kinematic", "path": [[0, 20.0, 4.0, 20.0]]}]})";
 
-// The pixel a world point projects to (Vulkan clip space: y down), or {-1, -1} behind the camera.
 std::array<int, 2> project(const std::array<float, 16>& m, double x, double y, double z) {
-  const double cx = m[0] * x + m[4] * y + m[8] * z + m[12], cy = m[1] * x + m[5] * y + m[9] * z + m[13];
-  const double cw = m[3] * x + m[7] * y + m[11] * z + m[15];
-  if (cw <= 0) return {-1, -1};
-  return {static_cast<int>(std::floor((cx / cw * 0.5 + 0.5) * kWidth)),
-          static_cast<int>(std::floor((cy / cw * 0.5 + 0.5) * kHeight))};
+  return project_to_pixel(m, x, y, z, kWidth, kHeight);
 }
 
-// Sum of the encoded channels, 0..765.
-int brightness(const Rgba& img, std::array<int, 2> p) {
-  const std::uint8_t* q = &img.pixels[(static_cast<std::size_t>(p[1]) * img.width + p[0]) * 4];
-  return q[0] + q[1] + q[2];
-}
+int brightness(const Rgba& img, std::array<int, 2> p) { return pixel_brightness(img, p[0], p[1]); }
 
 bool on_image(std::array<int, 2> p) { return p[0] >= 0 && p[0] < kWidth && p[1] >= 0 && p[1] < kHeight; }
 
