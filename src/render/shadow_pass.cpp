@@ -56,15 +56,10 @@ void record_shadow_map_unused(const vk::raii::CommandBuffer& cmd, const Image& m
   cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &b});
 }
 
-bool shadow_map_filtered(const gpu::Context& ctx) {
-  return static_cast<bool>(ctx.physical().getFormatProperties(kShadowFormat).optimalTilingFeatures &
-                           vk::FormatFeatureFlagBits::eSampledImageFilterLinear);
-}
-
 vk::raii::Sampler create_shadow_sampler(const gpu::Context& ctx) {
   using AM = vk::SamplerAddressMode;
-  const vk::Filter filter = shadow_map_filtered(ctx) ? vk::Filter::eLinear : vk::Filter::eNearest;
-  return vk::raii::Sampler(ctx.device(), vk::SamplerCreateInfo{.magFilter = filter, .minFilter = filter,
+  return vk::raii::Sampler(ctx.device(), vk::SamplerCreateInfo{.magFilter = vk::Filter::eNearest,
+                                                               .minFilter = vk::Filter::eNearest,
                                                                .mipmapMode = vk::SamplerMipmapMode::eNearest,
                                                                .addressModeU = AM::eClampToBorder,
                                                                .addressModeV = AM::eClampToBorder,

@@ -10,10 +10,11 @@
 // so the receivers cannot shade themselves: no acne, and no depth bias to detach a shadow from
 // the trunk's foot (peter-panning). The casters' own light comes from their N.L.
 //
-// Filtering: the sampler filters linearly where the device filters the depth format
-// (SAMPLED_IMAGE_FILTER_LINEAR; the spec does not require it for depth formats): the hardware's
-// 2x2 percentage-closer filter, a soft edge a texel wide. Elsewhere it is nearest. Its border is
-// the far depth, so points beyond the casters' bounds compare as lit.
+// Filtering: the shaders compare the four texels around a point in one gather and blend them
+// bilinearly (a 2x2 percentage-closer filter, a soft edge a texel wide), the same on every device:
+// the hardware's linear compare filter needs SAMPLED_IMAGE_FILTER_LINEAR on the depth format, which
+// the spec does not require (lavapipe lacks it for D16). The sampler's border is the far depth, so
+// points beyond the casters' bounds compare as lit.
 #include <functional>
 
 #include "gpu/context.h"
@@ -36,11 +37,8 @@ void record_shadow_pass(const vk::raii::CommandBuffer& cmd, const Image& map, co
 // layout its pipelines (which never read it) declare.
 void record_shadow_map_unused(const vk::raii::CommandBuffer& cmd, const Image& map);
 
-// Whether the device filters kShadowFormat linearly (the sampler's filter).
-bool shadow_map_filtered(const gpu::Context& ctx);
-
-// The depth-compare sampler (less or equal: lit where no deeper than the stored caster), linear
-// where shadow_map_filtered(), clamped to an opaque white (far) border.
+// The depth-compare sampler (less or equal: lit where no deeper than the stored caster), nearest,
+// clamped to an opaque white (far) border.
 vk::raii::Sampler create_shadow_sampler(const gpu::Context& ctx);
 
 }  // namespace pond::render
