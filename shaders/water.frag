@@ -13,6 +13,7 @@
 // where it holds something, shifted by the normal's tilt, and the sky where it is transparent.
 #extension GL_GOOGLE_include_directive : require
 
+#include "shared/caustics.h"
 #include "shared/water_render.h"
 #include "shared/water_shading.h"
 
@@ -31,6 +32,9 @@ layout(location = POND_WATER_FLAT_SCREEN) flat in vec3 in_screen;    // WaterFra
 #ifdef POND_WATER_REFLECTIONS
 layout(set = 0, binding = POND_RENDER_BINDING_REFLECTION) uniform sampler2D reflection;
 #endif
+layout(location = POND_WATER_FLAT_CAUSTICS) flat in vec4 in_caustics;  // WaterFrame::caustics
+layout(set = 0, binding = POND_RENDER_BINDING_CAUSTICS) uniform sampler2D caustics;
+layout(constant_id = POND_SPEC_CAUSTICS) const bool kCaustics = false;
 layout(location = 0) out vec4 out_color;
 
 // The pool floor at a world point: sand with soft ripples a few cells across, so refraction shows.
@@ -47,6 +51,15 @@ vec3 wall_color(vec3 p) {
   const vec2 q = vec2(p.x + p.z, p.y) * POND_FLAT_INV_SPACING(in_eye);
   const float grout = max(step(0.9, fract(q.x)), step(0.9, fract(q.y)));
   return in_ground * (0.75 - 0.3 * grout);
+}
+
+// The sun's light at a point of the floor or a submerged wall relative to calm water's, from this
+// frame's caustics map (render/caustics_pass.h); a wall point reads the texel its depth's calm ray
+// offset gives, clamped to the floor's edge (approximate: the map is the floor's). A nearest fetch:
+// the ripples' refraction hides the texels.
+float caustic_light(vec3 p) {
+  if (!kCaustics) return 1.0;
+  return textureLod(caustics, p.xz * in_caustics.xy + p.y * in_caustics.zw, 0.0).r * kCausticsDecode;
 }
 
 // exp(-x) for x >= 0, without exp: llvmpipe evaluates exp per lane and channel in software
@@ -88,7 +101,7 @@ void main() {
   const vec3 hit = in_world + t * path;
   const vec3 transmit = exp_neg(in_absorb * path);
   const vec3 body = in_water * (0.35 + 0.65 * diffuse);  // scattered light: diffuse-lit water colour
-  const vec3 bottom = wall ? wall_color(hit) : floor_color(hit.xz);
+  const vec3 bottom = (wall ? wall_color(hit) : floor_color(hit.xz)) * caustic_light(hit);
   const vec3 seen_through = bottom * transmit + body * (vec3(1.0) - transmit);
 
   const vec3 r = reflect(-v, n);

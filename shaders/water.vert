@@ -4,6 +4,7 @@
 // CPU solver) wrote this frame. No vertex attributes, no CPU copy of the vertex data.
 #extension GL_GOOGLE_include_directive : require
 
+#include "shared/caustics.h"
 #include "shared/water_render.h"
 #include "shared/water_shading.h"
 
@@ -24,6 +25,7 @@ layout(location = POND_WATER_FLAT_HORIZON) flat out vec3 out_horizon;
 layout(location = POND_WATER_FLAT_ABSORB) flat out vec3 out_absorb;
 layout(location = POND_WATER_FLAT_POOL) flat out vec2 out_pool;
 layout(location = POND_WATER_FLAT_SCREEN) flat out vec3 out_screen;
+layout(location = POND_WATER_FLAT_CAUSTICS) flat out vec4 out_caustics;
 
 void main() {
   const uint n = uint(gl_VertexIndex);  // compact: row * cols + col
@@ -42,9 +44,10 @@ void main() {
   out_sun = vec4(f.sun.xyz, POND_FRAME_FLOOR_DEPTH(f));  // w: POND_FLAT_FLOOR_DEPTH
   out_sky = f.sky.rgb;
   out_water = f.water.rgb;
-  out_ground = f.ground.rgb * (0.45 + 0.55 * max(f.sun.y, 0.0));
+  out_ground = f.ground.rgb * (kFloorAmbient + (1.0 - kFloorAmbient) * max(f.sun.y, 0.0));
   out_horizon = sky_horizon(f.sky.rgb);
   out_absorb = (vec3(1.0) - f.water.rgb) * (0.45 / POND_FRAME_GRID_SPACING(f));
   out_pool = vec2(float(cols - 1u), float(POND_FRAME_ROWS(f) - 1u));
   out_screen = f.screen.xyz;
+  out_caustics = f.caustics;
 }

@@ -10,6 +10,8 @@
 //   2: storage buffer, the normals: one vec4 per node, compact (node i * cols + j)
 //   3: combined image sampler, the planar reflection (render/reflection_pass.h), per frame slot;
 //      read only by water_reflect.frag
+//   4: combined image sampler, the caustics map (render/caustics_pass.h), per frame slot; read by
+//      water.frag where POND_SPEC_CAUSTICS is on
 // The water is drawn with vertex pulling: the index buffer holds node indices n = row * cols + col
 // (the LOD builder's output as is), the vertex shader reads the normals at gl_VertexIndex and the
 // state at its row * pitch + col.
@@ -41,6 +43,7 @@ struct mat4 {
 #define POND_RENDER_BINDING_STATE 1
 #define POND_RENDER_BINDING_NORMALS 2
 #define POND_RENDER_BINDING_REFLECTION 3
+#define POND_RENDER_BINDING_CAUSTICS 4
 
 // The fragment shaders take the frame's constants as flat varyings from their vertex shader, not
 // from the uniform block: llvmpipe (Mesa 22.3) reads a uniform (or push constant) in a fragment
@@ -58,6 +61,7 @@ struct mat4 {
 #define POND_WATER_FLAT_ABSORB 8   // the water's absorption per world unit (rgb)
 #define POND_WATER_FLAT_POOL 9     // xy: the pool's far corner (cols - 1, rows - 1), grid units
 #define POND_WATER_FLAT_SCREEN 10  // WaterFrame::screen
+#define POND_WATER_FLAT_CAUSTICS 11  // WaterFrame::caustics
 // The w lanes of the EYE and SUN varyings by name (each macro is the lane itself: no extra varying,
 // no extra instruction):
 #define POND_FLAT_INV_SPACING(eye) ((eye).w)  // 1 / the grid spacing (grid units per world unit)
@@ -66,6 +70,8 @@ struct mat4 {
 // Fragment-shader specialization constant (bool), set by render/graphics_pipeline.cpp from the colour
 // format: true when the target is UNORM and the shader must encode sRGB itself.
 #define POND_SPEC_ENCODE_SRGB 0
+// Fragment-shader specialization constant (bool): water.frag lights the floor with the caustics map.
+#define POND_SPEC_CAUSTICS 1
 
 // Everything a frame's shaders need, one uniform block (std140), written per frame slot. Every
 // member is a vec4 (or mat4), so the layout is the same in both languages; the lanes that hold
@@ -87,6 +93,8 @@ struct WaterFrame {
   vec4 sky_hi;
   vec4 screen;  // xy: 1 / the target's size (pixels); z: the reflection's shift per unit of the
                 // normal's xz tilt (in screen widths and heights); w: 0
+  vec4 caustics;  // a world point p's place in the caustics map: uv = p.xz * xy + p.y * zw
+                  // (render/caustics_pass.h caustics_lookup)
 };
 
 // The packed lanes of a WaterFrame by name. Macros, so that one spelling serves both languages

@@ -130,8 +130,8 @@ void GpuSolver::create_buffers() {
   state_[0] = create_buffer(ctx_, state_bytes, state_usage, MemoryUse::device, "water state A");
   state_[1] = create_buffer(ctx_, state_bytes, state_usage, MemoryUse::device, "water state B");
   normals_ = create_buffer(ctx_, std::max<std::size_t>(1, model_.nodes()) * 4 * sizeof(float),
-                           BU::eStorageBuffer | BU::eTransferSrc | BU::eVertexBuffer, MemoryUse::device,
-                           "water normals");
+                           BU::eStorageBuffer | BU::eTransferSrc | BU::eVertexBuffer | BU::eUniformTexelBuffer,
+                           MemoryUse::device, "water normals");  // texel buffer: render/caustics_pass.h reads it
 }
 
 // Where every device-local memory type the state could be in is also host-visible, cached and

@@ -6,7 +6,8 @@
 // ARCHITECTURE.md:
 //
 //   substeps (the session's solver: GPU compute or CPU) -> normals -> LOD (CPU, from the new
-//     positions) -> draw (the planar reflection's pass when on, render/reflection_pass.h; then
+//     positions) -> draw (the caustics' compute pass when on, render/caustics_pass.h; the planar
+//     reflection's pass when on, render/reflection_pass.h; then
 //     dynamic rendering into the caller's image: land, water, LOD wireframe, extra drawables, sky)
 //
 // Synchronization: the compute work (substeps + normals) is submitted and waited for, because the

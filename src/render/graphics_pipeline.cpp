@@ -17,12 +17,14 @@ vk::raii::Pipeline create_graphics_pipeline(const gpu::Context& ctx, const vk::r
   const vk::raii::ShaderModule vs = module(ctx, d.vert), fs = module(ctx, d.frag);
   // The target's encoding is a specialization constant, not a uniform: llvmpipe would otherwise
   // run the per-pixel pow() of the UNORM branch for every pixel under a mask, sRGB targets
-  // included (docs/perf.md). Fragment shaders without the constant ignore it.
-  const vk::Bool32 encode_srgb = is_srgb(color) || d.linear_output ? VK_FALSE : VK_TRUE;
-  const vk::SpecializationMapEntry encode_entry{.constantID = POND_SPEC_ENCODE_SRGB, .offset = 0,
-                                                .size = sizeof encode_srgb};
-  const vk::SpecializationInfo frag_constants{.mapEntryCount = 1, .pMapEntries = &encode_entry,
-                                              .dataSize = sizeof encode_srgb, .pData = &encode_srgb};
+  // included (docs/perf.md). Fragment shaders without a constant ignore it.
+  const vk::Bool32 frag_values[] = {is_srgb(color) || d.linear_output ? VK_FALSE : VK_TRUE,
+                                     d.caustics ? VK_TRUE : VK_FALSE};
+  const vk::SpecializationMapEntry frag_entries[] = {
+      {.constantID = POND_SPEC_ENCODE_SRGB, .offset = 0, .size = sizeof(vk::Bool32)},
+      {.constantID = POND_SPEC_CAUSTICS, .offset = sizeof(vk::Bool32), .size = sizeof(vk::Bool32)}};
+  const vk::SpecializationInfo frag_constants{.mapEntryCount = 2, .pMapEntries = frag_entries,
+                                              .dataSize = sizeof frag_values, .pData = frag_values};
   const vk::PipelineShaderStageCreateInfo stages[] = {
       {.stage = vk::ShaderStageFlagBits::eVertex, .module = *vs, .pName = "main"},
       {.stage = vk::ShaderStageFlagBits::eFragment, .module = *fs, .pName = "main",

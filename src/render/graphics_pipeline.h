@@ -22,6 +22,8 @@ struct GraphicsPipelineDesc {
   // The target holds linear colour whatever its format (the planar reflection, which the water
   // samples): the fragment shader does not encode sRGB (POND_SPEC_ENCODE_SRGB off).
   bool linear_output = false;
+  // The water lights the floor it sees with the caustics map (POND_SPEC_CAUSTICS).
+  bool caustics = false;
 };
 
 vk::raii::Pipeline create_graphics_pipeline(const gpu::Context& ctx, const vk::raii::PipelineLayout& layout,

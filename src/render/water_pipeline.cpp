@@ -16,6 +16,7 @@ struct PipelineSpec {
   bool lines = false;          // polygon mode line, depth bias towards the camera, alpha blending
   bool depth_write = true;
   bool linear_output = false;  // GraphicsPipelineDesc::linear_output
+  bool caustics = false;       // GraphicsPipelineDesc::caustics
   const char* name;
 };
 
@@ -55,7 +56,8 @@ vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayou
       .alphaBlendOp = vk::BlendOp::eAdd,
       .colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
   return create_graphics_pipeline(ctx, layout, color, depth,
-                                  {s.vert, s.frag, vertex_input, assembly, raster, depth_state, blend, s.name, s.linear_output});
+                                  {s.vert, s.frag, vertex_input, assembly, raster, depth_state, blend, s.name, s.linear_output,
+                                   s.caustics});
 }
 
 }  // namespace
@@ -71,9 +73,11 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
       {.binding = POND_RENDER_BINDING_NORMALS, .descriptorType = vk::DescriptorType::eStorageBuffer,
        .descriptorCount = 1, .stageFlags = SS::eVertex},
       {.binding = POND_RENDER_BINDING_REFLECTION, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
+       .descriptorCount = 1, .stageFlags = SS::eFragment},
+      {.binding = POND_RENDER_BINDING_CAUSTICS, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
        .descriptorCount = 1, .stageFlags = SS::eFragment}};
   p.set_layout = vk::raii::DescriptorSetLayout(
-      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = 4, .pBindings = bindings});
+      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = 5, .pBindings = bindings});
   const vk::DescriptorSetLayout set_layout = *p.set_layout;
   p.layout = vk::raii::PipelineLayout(ctx.device(),
                                       vk::PipelineLayoutCreateInfo{.setLayoutCount = 1, .pSetLayouts = &set_layout});
@@ -83,6 +87,12 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
                    {.vert = water_vert_spirv(), .frag = water_frag_spirv(), .name = "water"});
   p.water_reflect = create(ctx, p.layout, color_format, depth_format,
                            {.vert = water_vert_spirv(), .frag = water_reflect_frag_spirv(), .name = "water, reflecting"});
+  p.water_caustics = create(ctx, p.layout, color_format, depth_format,
+                            {.vert = water_vert_spirv(), .frag = water_frag_spirv(), .caustics = true,
+                             .name = "water, caustics"});
+  p.water_reflect_caustics = create(ctx, p.layout, color_format, depth_format,
+                                    {.vert = water_vert_spirv(), .frag = water_reflect_frag_spirv(), .caustics = true,
+                                     .name = "water, reflecting, caustics"});
   p.land_mirror = create(ctx, p.layout, kReflectionFormat, depth_format,
                          {.vert = land_mirror_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true,
                           .linear_output = true, .name = "land, mirrored"});

@@ -6,6 +6,8 @@
 //  - wire:  the same triangles as lines over the water (the LOD overlay); null when the device
 //           lacks fillModeNonSolid;
 //  - water_reflect: the water sampling the planar reflection (render/reflection_pass.h);
+//  - water_caustics, water_reflect_caustics: the two above lighting the floor with the caustics
+//    map (render/caustics_pass.h; POND_SPEC_CAUSTICS), so the effect costs nothing when off;
 //  - land_mirror: the land above the water mirrored about y = 0, for the reflection's target;
 //  - sky:   a box standing on the land's outer edge (view::sky_box), drawn last (depth test, no
 //           write), so it shades only what nothing else covered.
@@ -20,9 +22,17 @@ struct WaterPipelines {
   vk::raii::Pipeline land = nullptr;
   vk::raii::Pipeline water = nullptr;
   vk::raii::Pipeline water_reflect = nullptr;
+  vk::raii::Pipeline water_caustics = nullptr;
+  vk::raii::Pipeline water_reflect_caustics = nullptr;
   vk::raii::Pipeline land_mirror = nullptr;
   vk::raii::Pipeline wire = nullptr;
   vk::raii::Pipeline sky = nullptr;
+
+  // The water's pipeline for a frame's effects.
+  const vk::raii::Pipeline& water_for(bool reflections, bool caustics) const {
+    if (caustics) return reflections ? water_reflect_caustics : water_caustics;
+    return reflections ? water_reflect : water;
+  }
 };
 
 WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format);

@@ -17,6 +17,7 @@ struct CameraSpec {
 // The picture's optional effects (the scene's "view" keys of the same names; FrameView::effects).
 struct Effects {
   bool reflections = true;  // planar reflection of the land and the trees in the water
+  bool caustics = true;     // the sun's light focused by the waves on the pool floor
 };
 
 // "view": what a rendered frame advances and how the pond around the water is shaped.
@@ -25,7 +26,7 @@ struct ViewSpec {
   double lod_tolerance_px = 1.0;     // LOD screen-space error bound; 0 = the full mesh
   double floor_depth = 3.0;          // the pool floor lies this far below the rest surface
   double land_height = 1.0;          // shore, islands and pool rim rise this far above it
-  Effects effects;                   // "reflections": true | false
+  Effects effects;                   // "reflections", "caustics": true | false
 };
 
 // "lighting": the sun and the colours the water shader mixes (linear RGB in [0, 1]).
