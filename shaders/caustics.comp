@@ -1,7 +1,7 @@
 #version 460
-// Caustics (shared/caustics.h): per texel of the floor's map, the surface point whose refracted sun
-// ray lands there and the area ratio of the refracted grid of rays at that point: the floor's
-// sunlight relative to calm water. One dispatch: a workgroup first traces the rays of the cells
+// Caustics (shared/caustics.h): per corner of the floor map's texels, the surface point whose
+// refracted sun ray lands there and the area ratio of the refracted grid of rays at that point: the
+// floor's sunlight relative to calm water. One dispatch: a workgroup first traces the rays of the cells
 // its texels lie in into shared memory, then each invocation shades its texel from them.
 #extension GL_GOOGLE_include_directive : require
 
@@ -14,9 +14,12 @@ layout(set = 0, binding = POND_CAUSTICS_BINDING_NORMALS) uniform samplerBuffer n
 layout(set = 0, binding = POND_CAUSTICS_BINDING_MAP, rgba8) uniform restrict writeonly image2D map;
 layout(push_constant) uniform Push { CausticsPush p; };
 
-// The rays of the workgroup's cells: POND_CAUSTICS_LOCAL texels span at most that many cells, so
-// their cells' corners are POND_CAUSTICS_TILE rays across.
+// The rays of the workgroup's texels' cells with a ring of one more around them (for the gradients):
+// POND_CAUSTICS_LOCAL texels' corners lie in at most POND_CAUSTICS_LOCAL + 1 cells across, whose
+// corners are POND_CAUSTICS_TILE - 2 rays across. `tile`: each ray's offset d; `grad`: its gradient
+// (d/ds.x, d/ds.y), by central differences over the neighbouring rays.
 shared vec2 tile[POND_CAUSTICS_TILE * POND_CAUSTICS_TILE];
+shared vec4 grad[POND_CAUSTICS_TILE * POND_CAUSTICS_TILE];
 
 // Where the sun's ray refracted at ray (column, row) lands on the floor relative to where calm water
 // lands it, in units of the rays' spacing. The ray takes the nearest node's surface (the same node
@@ -32,44 +35,62 @@ vec2 ray_offset(uvec2 ray) {
   return (u.xz + t.xz * along - p.light.xy) / p.coarse.xy;
 }
 
+// The light at q (in units of the rays' spacing) from the tile, whose ray (1, 1) is `origin`. The
+// ray landing on q starts at the s with s + d(s) = q: one Newton step from s = q (the waves' d is a
+// fraction of a cell), s = q - J^-1 d(q), with J = I + grad d the Jacobian of the map s -> s + d(s),
+// d and grad d bilinear between the rays of q's cell (so J is continuous: no seams along the
+// cells). A patch of surface of area A lights A |det J| of floor, so the light there is 1 / |det J|
+// of calm water's, J taken at s (on the same bilinear patch, continued past the cell's edge if s
+// lies beyond it).
+float light_at(vec2 q, uvec2 origin, vec2 last_cell) {
+  const vec2 cell = clamp(floor(q), vec2(0.0), last_cell);
+  vec2 f = q - cell;
+  const uint i = (uint(cell.y) - origin.y + 1u) * POND_CAUSTICS_TILE + (uint(cell.x) - origin.x + 1u);
+  const uint i10 = i + 1u, i01 = i + POND_CAUSTICS_TILE, i11 = i01 + 1u;
+  const vec2 dq = mix(mix(tile[i], tile[i10], f.x), mix(tile[i01], tile[i11], f.x), f.y);
+  vec4 g = mix(mix(grad[i], grad[i10], f.x), mix(grad[i01], grad[i11], f.x), f.y);  // (d/ds.x, d/ds.y)
+  const float det_q = (1.0 + g.x) * (1.0 + g.w) - g.y * g.z;
+  const float safe = (det_q < 0.0 ? -1.0 : 1.0) * max(abs(det_q), 0.05);  // J is near singular at a focus
+  const vec2 step = clamp(vec2((1.0 + g.w) * dq.x - g.z * dq.y, (1.0 + g.x) * dq.y - g.y * dq.x) / safe,
+                          vec2(-1.0), vec2(1.0));
+  f -= step;
+  g = mix(mix(grad[i], grad[i10], f.x), mix(grad[i01], grad[i11], f.x), f.y);
+  const float det = (1.0 + g.x) * (1.0 + g.w) - g.y * g.z;
+  const float focus = 1.0 / max(abs(det), 1.0 / p.light.w);
+  return (1.0 + p.light.z * (focus - 1.0)) * kCausticsUnit;
+}
+
 void main() {
   // In units of the rays' spacing (the Jacobian is the same in any unit): q, (column, row).
   const uvec2 rays = p.map.zw;
   const vec2 last_cell = vec2(rays) - vec2(2.0);
   const vec2 texel_size = (vec2(rays) - vec2(1.0)) / vec2(p.map.xy);
   const uvec2 texel = gl_GlobalInvocationID.xy;
-  const vec2 q = (vec2(texel) + 0.5) * texel_size;
 
-  // 1. The tile's rays, from the cell of the workgroup's first texel on.
-  const uvec2 origin = uvec2(min(floor((vec2(gl_WorkGroupID.xy * POND_CAUSTICS_LOCAL) + 0.5) * texel_size), last_cell));
-  for (uint k = gl_LocalInvocationIndex; k < POND_CAUSTICS_TILE * POND_CAUSTICS_TILE;
-       k += POND_CAUSTICS_LOCAL * POND_CAUSTICS_LOCAL) {
-    const uvec2 at = origin + uvec2(k % POND_CAUSTICS_TILE, k / POND_CAUSTICS_TILE);
-    tile[k] = ray_offset(min(at, rays - 1u));
+  // 1. The tile's rays, from one before the cell of the workgroup's first texel's corner on.
+  const uvec2 origin = uvec2(min(floor(vec2(gl_WorkGroupID.xy * POND_CAUSTICS_LOCAL) * texel_size), last_cell));
+  const uint tile_size = POND_CAUSTICS_TILE * POND_CAUSTICS_TILE, group = POND_CAUSTICS_LOCAL * POND_CAUSTICS_LOCAL;
+  for (uint k = gl_LocalInvocationIndex; k < tile_size; k += group) {
+    const ivec2 at = ivec2(origin) - 1 + ivec2(k % POND_CAUSTICS_TILE, k / POND_CAUSTICS_TILE);
+    tile[k] = ray_offset(uvec2(clamp(at, ivec2(0), ivec2(rays) - 1)));
+  }
+  barrier();
+  // 2. Their gradients (one-sided at the pool's edge; the tile's own edge is never read).
+  for (uint k = gl_LocalInvocationIndex; k < tile_size; k += group) {
+    const ivec2 t = ivec2(k % POND_CAUSTICS_TILE, k / POND_CAUSTICS_TILE);
+    const ivec2 at = ivec2(origin) - 1 + t, last = ivec2(rays) - 1;
+    const ivec2 lo = max(t - 1, ivec2(0)), hi = min(t + 1, ivec2(POND_CAUSTICS_TILE - 1));
+    const vec2 span = vec2(min(at + 1, last) - max(at - 1, ivec2(0)));  // rays apart, at the pool's edge 1
+    const int row = t.y * POND_CAUSTICS_TILE;
+    grad[k] = vec4((tile[row + hi.x] - tile[row + lo.x]) / max(span.x, 1.0),
+                   (tile[hi.y * POND_CAUSTICS_TILE + t.x] - tile[lo.y * POND_CAUSTICS_TILE + t.x]) / max(span.y, 1.0));
   }
   barrier();
   if (texel.x >= p.map.x || texel.y >= p.map.y) return;
 
-  // 2. The ray landing on q starts at the s with s + d(s) = q, d bilinear between the rays of q's
-  // cell: one Newton step from s = q (the waves' d is a fraction of a cell), s = q - J^-1 d(q), with
-  // J = I + grad d the Jacobian of the map s -> s + d(s). A patch of surface of area A lights
-  // A |det J| of floor, so the light there is 1 / |det J| of calm water's, det J taken at s (on the
-  // same bilinear patch, continued past the cell's edge if s lies beyond it).
-  const vec2 cell = clamp(floor(q), vec2(0.0), last_cell);
-  const vec2 f = q - cell;
-  const uint i = (uint(cell.y) - origin.y) * POND_CAUSTICS_TILE + (uint(cell.x) - origin.x);
-  const vec2 d00 = tile[i], d10 = tile[i + 1u], d01 = tile[i + POND_CAUSTICS_TILE], d11 = tile[i + POND_CAUSTICS_TILE + 1u];
-  const vec2 e = d00 - d10 - d01 + d11;  // the patch's twist: grad d changes by e per unit
-  vec2 dx = d10 - d00 + e * f.y;         // d/ds.x at q
-  vec2 dy = d01 - d00 + e * f.x;         // d/ds.y at q
-  const vec2 dq = d00 + (d10 - d00) * f.x + dy * f.y;
-  const float det_q = (1.0 + dx.x) * (1.0 + dy.y) - dx.y * dy.x;
-  const float safe = (det_q < 0.0 ? -1.0 : 1.0) * max(abs(det_q), 0.05);  // J is near singular at a focus
-  const vec2 step = clamp(vec2((1.0 + dy.y) * dq.x - dy.x * dq.y, (1.0 + dx.x) * dq.y - dx.y * dq.x) / safe,
-                          vec2(-1.0), vec2(1.0));
-  dx -= e * step.y;  // at s = q - step
-  dy -= e * step.x;
-  const float det = (1.0 + dx.x) * (1.0 + dy.y) - dx.y * dy.x;
-  const float focus = 1.0 / max(abs(det), 1.0 / p.light.w);
-  imageStore(map, ivec2(texel), vec4((1.0 + p.light.z * (focus - 1.0)) * kCausticsUnit));
+  // 3. The light at the texel's four corners (shared/caustics.h: the water interpolates them).
+  const vec2 q = vec2(texel) * texel_size;
+  imageStore(map, ivec2(texel), vec4(light_at(q, origin, last_cell), light_at(q + vec2(texel_size.x, 0.0), origin, last_cell),
+                                     light_at(q + vec2(0.0, texel_size.y), origin, last_cell),
+                                     light_at(q + texel_size, origin, last_cell)));
 }

@@ -33,6 +33,7 @@ layout(location = POND_WATER_FLAT_SCREEN) flat in vec3 in_screen;    // WaterFra
 layout(set = 0, binding = POND_RENDER_BINDING_REFLECTION) uniform sampler2D reflection;
 #endif
 layout(location = POND_WATER_FLAT_CAUSTICS) flat in vec4 in_caustics;  // WaterFrame::caustics
+layout(location = POND_WATER_FLAT_CAUSTICS_SIZE) flat in vec2 in_caustics_size;  // the map's texels
 layout(set = 0, binding = POND_RENDER_BINDING_CAUSTICS) uniform sampler2D caustics;
 layout(constant_id = POND_SPEC_CAUSTICS) const bool kCaustics = false;
 layout(location = 0) out vec4 out_color;
@@ -54,12 +55,15 @@ vec3 wall_color(vec3 p) {
 }
 
 // The sun's light at a point of the floor or a submerged wall relative to calm water's, from this
-// frame's caustics map (render/caustics_pass.h); a wall point reads the texel its depth's calm ray
-// offset gives, clamped to the floor's edge (approximate: the map is the floor's). A nearest fetch:
-// the ripples' refraction hides the texels.
+// frame's caustics map (render/caustics_pass.h; shared/caustics.h): one nearest fetch of the texel's
+// four corners, interpolated. A wall point reads the texel its depth's calm ray offset gives,
+// clamped to the floor's edge (approximate: the map is the floor's).
 float caustic_light(vec3 p) {
   if (!kCaustics) return 1.0;
-  return textureLod(caustics, p.xz * in_caustics.xy + p.y * in_caustics.zw, 0.0).r * kCausticsDecode;
+  const vec2 uv = p.xz * in_caustics.xy + p.y * in_caustics.zw;
+  const vec4 c = textureLod(caustics, uv, 0.0);
+  const vec2 f = fract(uv * in_caustics_size);
+  return mix(mix(c.r, c.g, f.x), mix(c.b, c.a, f.x), f.y) * kCausticsDecode;
 }
 
 // exp(-x) for x >= 0, without exp: llvmpipe evaluates exp per lane and channel in software

@@ -26,6 +26,7 @@ layout(location = POND_WATER_FLAT_ABSORB) flat out vec3 out_absorb;
 layout(location = POND_WATER_FLAT_POOL) flat out vec2 out_pool;
 layout(location = POND_WATER_FLAT_SCREEN) flat out vec3 out_screen;
 layout(location = POND_WATER_FLAT_CAUSTICS) flat out vec4 out_caustics;
+layout(location = POND_WATER_FLAT_CAUSTICS_SIZE) flat out vec2 out_caustics_size;
 
 void main() {
   const uint n = uint(gl_VertexIndex);  // compact: row * cols + col
@@ -50,4 +51,5 @@ void main() {
   out_pool = vec2(float(cols - 1u), float(POND_FRAME_ROWS(f) - 1u));
   out_screen = f.screen.xyz;
   out_caustics = f.caustics;
+  out_caustics_size = vec2(f.caustics_size.xy);
 }

@@ -1,13 +1,15 @@
 // The caustics pass's CPU<->GPU layouts, declared once: included by shaders/caustics.comp and
 // water.frag as GLSL and by src/render/caustics_pass.h as C++ (static_asserts there).
 //
-// The map: one value per texel (kCausticsUnit), the pool floor's sunlight relative to calm water
-// (1 = as calm water lights it), over the pool [0, cols - 1] x [0, rows - 1] (grid units; texel
-// (x, y) centred at ((x + 0.5) (cols - 1) / width, (y + 0.5) (rows - 1) / height), x along the
-// columns). Its coordinates are the floor point shifted back by the calm surface's refraction
-// offset (the place where calm water's sun ray through rest node (j, i) meets the floor is (j, i)
-// on the map), so calm water maps every cell onto its own texels and the map is 1 everywhere, up to
-// the pool's edges.
+// The map: the pool floor's sunlight relative to calm water (1 = as calm water lights it, stored as
+// kCausticsUnit), over the pool [0, cols - 1] x [0, rows - 1] (grid units, x along the columns).
+// Texel (x, y) covers [x, x + 1] (cols - 1) / width by [y, y + 1] (rows - 1) / height and holds the
+// light at its four corners, rgba = (x, y), (x + 1, y), (x, y + 1), (x + 1, y + 1): one nearest
+// fetch gives the water all it needs to interpolate bilinearly (a bilinear fetch costs llvmpipe
+// several times more). Its coordinates are the floor point shifted back by the calm surface's
+// refraction offset (the place where calm water's sun ray through rest node (j, i) meets the floor
+// is (j, i) on the map), so calm water maps every cell onto its own texels and the map is 1
+// everywhere, up to the pool's edges.
 //
 // One compute dispatch a frame (render/caustics_pass.h, shaders/caustics.comp), over a grid of rays
 // at most kCausticsRays cells across (every node of a grid up to that size, every second node of a
@@ -15,8 +17,9 @@
 //  - per ray: the sun's ray refracted through the water surface at the nearest node (its displaced
 //    position and normal) and followed to the floor plane; d = its landing point's offset from the
 //    calm one (in units of the rays' spacing);
-//  - per texel q: the surface point s whose ray lands there, by one Newton step of s + d(s) = q
-//    (d bilinear between the rays), and the area ratio there, 1 / |det(I + grad d)|: how much the
+//  - per texel corner q: the surface point s whose ray lands there, by one Newton step of s + d(s) = q
+//    (d and its gradient, by central differences at the rays, bilinear between the rays), and the
+//    area ratio there, 1 / |det(I + grad d)|: how much the
 //    surface focuses (> 1) or spreads (< 1) the light falling on it. Only the direct sun's share of
 //    the floor's light is scaled.
 #ifndef POND_CAUSTICS_H
@@ -33,7 +36,7 @@ using water_render::vec4;
 #endif
 
 #define POND_CAUSTICS_LOCAL 8  // caustics.comp's workgroups: 8 x 8 texels
-#define POND_CAUSTICS_TILE 10  // the rays a workgroup traces: 10 x 10 (its texels' cells' corners)
+#define POND_CAUSTICS_TILE 12  // the rays a workgroup traces: 12 x 12 (its texels' cells' corners and one more)
 
 // Bindings (set 0). Texel buffers for the reads: on llvmpipe a texel fetch is a gather, an SSBO load
 // a loop over the lanes.
@@ -59,9 +62,9 @@ POND_CAUSTICS_CONST float kWaterIor = 1.33f;
 // The floor's light is kFloorAmbient of the sky's plus (1 - kFloorAmbient) * sun.y of the sun's
 // (water.vert's POND_WATER_FLAT_GROUND): the caustics scale the second part.
 POND_CAUSTICS_CONST float kFloorAmbient = 0.45f;
-// The map holds light * kCausticsUnit in the red channel of an R8G8B8A8_UNORM image (a storage
-// format every device has, and a fast one for llvmpipe to sample): light 1 is level 64 exactly,
-// the brightest 255/64, steps of 1/64.
+// The map holds light * kCausticsUnit in an R8G8B8A8_UNORM image (a storage format every device
+// has, and a fast one for llvmpipe to sample): light 1 is level 64 exactly, the brightest 255/64,
+// steps of 1/64.
 POND_CAUSTICS_CONST float kCausticsUnit = 64.0f / 255.0f;
 POND_CAUSTICS_CONST float kCausticsDecode = 255.0f / 64.0f;
 // The rays' grid has at most kCausticsRays cells across, and the map whole texels per cell of it,

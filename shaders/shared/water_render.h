@@ -62,6 +62,7 @@ struct mat4 {
 #define POND_WATER_FLAT_POOL 9     // xy: the pool's far corner (cols - 1, rows - 1), grid units
 #define POND_WATER_FLAT_SCREEN 10  // WaterFrame::screen
 #define POND_WATER_FLAT_CAUSTICS 11  // WaterFrame::caustics
+#define POND_WATER_FLAT_CAUSTICS_SIZE 12  // WaterFrame::caustics_size.xy
 // The w lanes of the EYE and SUN varyings by name (each macro is the lane itself: no extra varying,
 // no extra instruction):
 #define POND_FLAT_INV_SPACING(eye) ((eye).w)  // 1 / the grid spacing (grid units per world unit)
@@ -93,6 +94,7 @@ struct WaterFrame {
   vec4 sky_hi;
   vec4 screen;  // xy: 1 / the target's size (pixels); z: the reflection's shift per unit of the
                 // normal's xz tilt (in screen widths and heights); w: 0
+  uvec4 caustics_size;  // xy: the caustics map's size (texels); zw: 0
   vec4 caustics;  // a world point p's place in the caustics map: uv = p.xz * xy + p.y * zw
                   // (render/caustics_pass.h caustics_lookup)
 };

@@ -65,7 +65,8 @@ class CausticsPass {
 
   const Image& map(std::uint32_t slot) const { return slots_[slot].map; }
   // Copies slot `slot`'s map back (waits for the device to be idle first) and decodes it: width x
-  // height floats, the light relative to calm water, row y = map row y (for tests and tools).
+  // height floats, the light relative to calm water at each texel's first corner (x, y), row y =
+  // map row y (for tests and tools).
   std::vector<float> read_map(std::uint32_t slot) const;
 
  private:

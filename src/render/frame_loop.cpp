@@ -288,6 +288,8 @@ struct FrameLoop::Impl {
     f.screen = {1.0f / static_cast<float>(camera.width), 1.0f / static_cast<float>(camera.height), kReflectionShift, 0.0f};
     const std::array<float, 4> c = caustics_lookup(model(), unit_sun());
     f.caustics = {c[0], c[1], c[2], c[3]};
+    const vk::Extent2D map = caustics_extent(model().rows, model().cols);
+    f.caustics_size = {map.width, map.height, 0, 0};
     std::memcpy(s.uniforms.mapped, &f, sizeof f);
     s.uniforms.flush(ctx);
   }
