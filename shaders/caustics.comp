@@ -20,6 +20,9 @@ layout(push_constant) uniform Push { CausticsPush p; };
 // (d/ds.x, d/ds.y), by central differences over the neighbouring rays.
 shared vec2 tile[POND_CAUSTICS_TILE * POND_CAUSTICS_TILE];
 shared vec4 grad[POND_CAUSTICS_TILE * POND_CAUSTICS_TILE];
+// The light at the workgroup's texels' corners (each computed once, shared by up to four texels).
+#define CORNERS (POND_CAUSTICS_LOCAL + 1)
+shared float corner[CORNERS * CORNERS];
 
 // Where the sun's ray refracted at ray (column, row) lands on the floor relative to where calm water
 // lands it, in units of the rays' spacing. The ray takes the nearest node's surface (the same node
@@ -86,11 +89,15 @@ void main() {
                    (tile[hi.y * POND_CAUSTICS_TILE + t.x] - tile[lo.y * POND_CAUSTICS_TILE + t.x]) / max(span.y, 1.0));
   }
   barrier();
+  // 3. The light at the workgroup's texels' corners.
+  for (uint k = gl_LocalInvocationIndex; k < CORNERS * CORNERS; k += group) {
+    const uvec2 at = gl_WorkGroupID.xy * POND_CAUSTICS_LOCAL + uvec2(k % CORNERS, k / CORNERS);
+    corner[k] = light_at(vec2(at) * texel_size, origin, last_cell);
+  }
+  barrier();
   if (texel.x >= p.map.x || texel.y >= p.map.y) return;
 
-  // 3. The light at the texel's four corners (shared/caustics.h: the water interpolates them).
-  const vec2 q = vec2(texel) * texel_size;
-  imageStore(map, ivec2(texel), vec4(light_at(q, origin, last_cell), light_at(q + vec2(texel_size.x, 0.0), origin, last_cell),
-                                     light_at(q + vec2(0.0, texel_size.y), origin, last_cell),
-                                     light_at(q + texel_size, origin, last_cell)));
+  // 4. Each texel's four (shared/caustics.h: the water interpolates them).
+  const uint c = gl_LocalInvocationID.y * CORNERS + gl_LocalInvocationID.x;
+  imageStore(map, ivec2(texel), vec4(corner[c], corner[c + 1u], corner[c + CORNERS], corner[c + CORNERS + 1u]));
 }

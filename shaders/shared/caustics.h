@@ -68,11 +68,10 @@ POND_CAUSTICS_CONST float kFloorAmbient = 0.45f;
 POND_CAUSTICS_CONST float kCausticsUnit = 64.0f / 255.0f;
 POND_CAUSTICS_CONST float kCausticsDecode = 255.0f / 64.0f;
 // The rays' grid has at most kCausticsRays cells across, and the map whole texels per cell of it,
-// as many as fit in kCausticsTexels (at least one): the pass's cost is about proportional to the
-// texels (a 257 x 257 grid: rays on every second node, 128 x 128 texels; 50 x 50: every node,
-// 147 x 147 texels).
-POND_CAUSTICS_CONST int kCausticsRays = 128;
-POND_CAUSTICS_CONST int kCausticsTexels = 192;
+// as many as fit in kCausticsTexels (at least one): the pass's cost grows with both (docs/perf.md).
+// A 257 x 257 grid: rays on every fourth node, 64 x 64 texels; 50 x 50: every node, 49 x 49.
+POND_CAUSTICS_CONST int kCausticsRays = 64;
+POND_CAUSTICS_CONST int kCausticsTexels = 64;
 // 1 / |det| where the surface focuses the light to a line (det -> 0) is clamped to this.
 POND_CAUSTICS_CONST float kMaxFocus = 8.0f;
 
