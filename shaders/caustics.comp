@@ -1,8 +1,9 @@
 #version 460
 // Caustics (shared/caustics.h): per corner of the floor map's texels, the surface point whose
 // refracted sun ray lands there and the area ratio of the refracted grid of rays at that point: the
-// floor's sunlight relative to calm water. One dispatch: a workgroup first traces the rays of the cells
-// its texels lie in into shared memory, then each invocation shades its texel from them.
+// floor's sunlight relative to calm water. One dispatch; a workgroup, in three steps between
+// barriers, traces the rays around its texels into shared memory, takes their gradients, computes
+// the light at its texels' corners; then each invocation writes its texel's four corners.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/caustics.h"
