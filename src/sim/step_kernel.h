@@ -317,6 +317,16 @@ POND_KERNEL_INLINE typename W::F integrate_at(const StepView& view, int i, int j
   return check;
 }
 
+// The largest lane of v (the reach's, once per substep and part).
+template <class W>
+float max_lanes(typename W::F v) {
+  alignas(64) float lanes[W::width];
+  W::store(lanes, v);
+  float m = lanes[0];
+  for (float x : lanes) m = x > m ? x : m;
+  return m;
+}
+
 // The integration of row i of a block, chunk by chunk, with its blow-up check (and the reach of
 // the horizontal displacements) per chunk width.
 template <class W, bool Reach>
@@ -346,7 +356,7 @@ struct RowIntegrate {
   }
   float sum() const { return W::sum_lanes(check) + Half::sum_lanes(half_check) + tail_check; }
   float max_reach() const {
-    const float a = W::max_lanes(reach), b = Half::max_lanes(half_reach);
+    const float a = max_lanes<W>(reach), b = max_lanes<Half>(half_reach);
     const float m = a > b ? a : b;
     return tail_reach > m ? tail_reach : m;
   }

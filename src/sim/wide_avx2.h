@@ -33,13 +33,6 @@ struct WideAvx2 {
   }
   static F keep(M m, F v) { return _mm256_and_ps(m, v); }
   static F max_abs(F acc, F v) { return _mm256_max_ps(_mm256_andnot_ps(_mm256_set1_ps(-0.0f), v), acc); }
-  static float max_lanes(F v) {
-    alignas(32) float l[8];
-    _mm256_store_ps(l, v);
-    float m = l[0];
-    for (float x : l) m = x > m ? x : m;
-    return m;
-  }
   static float sum_lanes(F v) {
     alignas(32) float l[8];
     _mm256_store_ps(l, v);

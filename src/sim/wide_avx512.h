@@ -41,13 +41,6 @@ struct WideAvx512 {
     const __m512 a = _mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(v), _mm512_set1_epi32(INT32_MAX)));
     return _mm512_maskz_max_ps(0xffff, a, acc);  // the masked form: see rsqrt_seed
   }
-  static float max_lanes(F v) {
-    alignas(64) float l[16];
-    _mm512_store_ps(l, v);
-    float m = l[0];
-    for (float x : l) m = x > m ? x : m;
-    return m;
-  }
   static float sum_lanes(F v) {
     alignas(64) float l[16];
     _mm512_store_ps(l, v);

@@ -40,7 +40,6 @@ struct WideScalar {
     return a > acc ? a : acc;
   }
   static float sum_lanes(F v) { return v; }
-  static float max_lanes(F v) { return v; }
 };
 
 }  // namespace POND_ISA

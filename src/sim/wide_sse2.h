@@ -36,13 +36,6 @@ struct WideSse2 {
   }
   static F keep(M m, F v) { return _mm_and_ps(m, v); }
   static F max_abs(F acc, F v) { return _mm_max_ps(_mm_andnot_ps(_mm_set1_ps(-0.0f), v), acc); }
-  static float max_lanes(F v) {
-    alignas(16) float l[4];
-    _mm_store_ps(l, v);
-    float m = l[0];
-    for (float x : l) m = x > m ? x : m;
-    return m;
-  }
   static float sum_lanes(F v) {
     alignas(16) float l[4];
     _mm_store_ps(l, v);
