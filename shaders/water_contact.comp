@@ -31,10 +31,11 @@ spirv_execution_mode(capabilities = [4464], 4459, 32);  // DenormPreserve, 32-bi
 layout(local_size_x = POND_CONTACT_LOCAL_X, local_size_y = 1, local_size_z = 1) in;
 layout(local_size_x_id = POND_SPEC_CONTACT_LOCAL_X) in;
 
-layout(std430, set = 0, binding = POND_CONTACT_BINDING_STATE) coherent restrict buffer State { float state[]; };
-// ux, uz and the kinds, which this pass never writes, through texel-buffer views (a straight-line
-// gather on llvmpipe; see water_step.comp); uy and vy, which an earlier body of the same pass may
-// have moved, through the coherent storage buffer.
+// uy and vy, which an earlier body of the same pass may have moved, through the coherent storage
+// buffer; ux, uz and the kinds, which this pass never writes, through texel-buffer views (a
+// straight-line gather on llvmpipe; see water_step.comp). The state's view aliases `state` (on
+// components it does not write), so `state` is not `restrict`.
+layout(std430, set = 0, binding = POND_CONTACT_BINDING_STATE) coherent buffer State { float state[]; };
 layout(set = 0, binding = POND_CONTACT_BINDING_STATE1) uniform samplerBuffer state1;  // R32F: float n
 layout(set = 0, binding = POND_CONTACT_BINDING_KINDS4) uniform usamplerBuffer kinds4;  // RGBA8UI: nodes 4t..4t+3
 layout(std430, set = 0, binding = POND_CONTACT_BINDING_BODIES) coherent restrict buffer Bodies { BodyState bodies[]; };

@@ -3,8 +3,7 @@
 // backend (all cores) and on the GPU solver (the device pond chooses, validation off). Counter
 // "cost": time with bodies / time without - 1 (the target is at most 0.15); "cpu cost": the same
 // with the process's CPU time (all its threads: on a CPU device such as lavapipe, the "GPU"'s
-// work too), which a busy host's preemption disturbs far less than the real time. And the CPU's
-// contact pass alone.
+// work too). And the CPU's contact pass alone.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
