@@ -50,6 +50,12 @@ layout(push_constant) uniform Push { ContactPush p; };
 
 shared float lane_sums[POND_CONTACT_LANES];
 shared uint lane_counts[POND_CONTACT_LANES];
+// A floating body's pass 1 keeps each lane's first kCacheDepth nodes inside (index, height on the
+// surface) for pass 2, at slot lane + LANES * m: pass 2 then only writes them, where it would load
+// and test the footprint again. A lane with more nodes inside (a large body) walks it again.
+const uint kCacheDepth = 16u;
+shared uint cached_node[POND_CONTACT_LANES * kCacheDepth];
+shared float cached_height[POND_CONTACT_LANES * kCacheDepth];
 
 const uint kY = 1u, kVy = 4u;  // component arrays of the state (water_gpu.h)
 
@@ -108,6 +114,10 @@ void main() {
             float half_height, y;
             if (inside_at(i, j, b, c.radius2, n, half_height, y)) {
               sum = sum + state[kVy * p.stride + n];
+              if (nodes < kCacheDepth) {
+                cached_node[lane + POND_CONTACT_LANES * nodes] = n;
+                cached_height[lane + POND_CONTACT_LANES * nodes] = contact_surface(y, b.y, half_height);
+              }
               ++nodes;
             }
           }
@@ -125,6 +135,14 @@ void main() {
       b.vy = contact_fall(common_v, c.gravity_dt);
     }
     for (uint lane = first_lane; lane < POND_CONTACT_LANES; lane += invocations) {
+      if (c.floating != 0u && lane_counts[lane] <= kCacheDepth) {  // pass 1 kept all of this lane's
+        for (uint m = 0u; m < lane_counts[lane]; ++m) {
+          const uint n = cached_node[lane + POND_CONTACT_LANES * m];
+          state[kY * p.stride + n] = cached_height[lane + POND_CONTACT_LANES * m];
+          state[kVy * p.stride + n] = common_v;
+        }
+        continue;
+      }
       const int lane_i = int(lane) / POND_CONTACT_LANE_SIDE, lane_j = int(lane) % POND_CONTACT_LANE_SIDE;
       for (int i = first_of_lane(i0, lane_i); i <= i1; i += POND_CONTACT_LANE_SIDE)
         for (int j = first_of_lane(j0, lane_j); j <= j1; j += POND_CONTACT_LANE_SIDE) {
