@@ -36,15 +36,18 @@ ctest --preset sanitize-gpu -j "$jobs"
 
 # The GPU suite again under the discrete-GPU test layer (layers/, built by the release preset):
 # staging, flush/invalidate of non-coherent memory, no shaderInt64, with and without
-# shaderDenormPreserveFloat32, the validation layer above it (README: the test layer). The parity
-# runs at 0.3 of their length here; the plain run below keeps the full length.
+# shaderDenormPreserveFloat32, the validation layer above it (README: the test layer). The whole
+# GPU label with the feature, then without it only the solver's tests and `pond check` (denormals
+# reach only the solver).
+# The parity runs at 0.3 of their length here; the plain run below keeps the full length.
 stage "GPU tests under the discrete-GPU layer"
 validation_json=$(dpkg -L vulkan-validationlayers | grep -m1 'VkLayer_khronos_validation.json$')
-for denorm in 1 0; do
+for pass in "1 gpu" "0 gpu_solver|parity"; do
+  read -r denorm label <<< "$pass"
   VK_LAYER_PATH="$(dirname "$validation_json"):$PWD/build/layers" \
   VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation:VK_LAYER_POND_discrete_gpu \
   POND_DISCRETE_GPU_DENORM_PRESERVE=$denorm POND_PARITY_STEP_SCALE=0.3 \
-    ctest --preset release -j "$jobs" -L gpu -LE "soak|layer"
+    ctest --preset release -j "$jobs" -L "$label" -LE "soak|layer"
 done
 
 # Last, so its summary closes the output.

@@ -13,6 +13,7 @@
 // where it holds something, shifted by the normal's tilt, and the sky where it is transparent.
 #extension GL_GOOGLE_include_directive : require
 
+#include "shared/caustics.h"
 #include "shared/water_render.h"
 #include "shared/water_shading.h"
 #include "shared/shadow_sampling.h"
@@ -22,12 +23,12 @@ layout(location = 1) in vec3 in_normal;
 // The frame's constants (water.vert; not the uniform block, see shared/water_render.h).
 layout(location = POND_WATER_FLAT_EYE) flat in vec4 in_eye;  // xyz: camera; w: POND_FLAT_INV_SPACING
 layout(location = POND_WATER_FLAT_SUN) flat in vec4 in_sun;  // xyz: to the sun; w: POND_FLAT_FLOOR_DEPTH
-layout(location = POND_WATER_FLAT_SKY) flat in vec3 in_sky;
-layout(location = POND_WATER_FLAT_WATER) flat in vec3 in_water;
-layout(location = POND_WATER_FLAT_GROUND) flat in vec3 in_ground;  // lit by the sun
-layout(location = POND_WATER_FLAT_HORIZON) flat in vec3 in_horizon;
+layout(location = POND_WATER_FLAT_SKY) flat in vec4 in_sky;      // a: POND_FLAT_CAUSTICS
+layout(location = POND_WATER_FLAT_WATER) flat in vec4 in_water;  // a: POND_FLAT_CAUSTICS
+layout(location = POND_WATER_FLAT_GROUND) flat in vec4 in_ground;  // lit by the sun; a: POND_FLAT_CAUSTICS
+layout(location = POND_WATER_FLAT_HORIZON) flat in vec4 in_horizon;  // a: POND_FLAT_CAUSTICS
 layout(location = POND_WATER_FLAT_ABSORB) flat in vec3 in_absorb;    // per world unit
-layout(location = POND_WATER_FLAT_POOL) flat in vec2 in_pool;        // the far corner, grid units
+layout(location = POND_WATER_FLAT_POOL) flat in vec4 in_pool;  // xy: the far corner, grid units; zw: POND_FLAT_CAUSTICS_SIZE
 layout(location = POND_WATER_FLAT_SCREEN) flat in vec3 in_screen;    // WaterFrame::screen.xyz
 layout(location = POND_WATER_SHADOW) in vec3 in_shadow;            // this point in the shadow map
 layout(location = POND_WATER_FLAT_SHADOW_X) flat in vec4 in_shadow_x;  // WaterFrame::shadow's rows
@@ -37,6 +38,8 @@ layout(location = POND_WATER_FLAT_SHADOW_SUN) flat in vec4 in_shadow_sun;  // su
 #ifdef POND_WATER_REFLECTIONS
 layout(set = 0, binding = POND_RENDER_BINDING_REFLECTION) uniform sampler2D reflection;
 #endif
+layout(set = 0, binding = POND_RENDER_BINDING_CAUSTICS) uniform sampler2D caustics;
+layout(constant_id = POND_SPEC_CAUSTICS) const bool kCaustics = false;
 layout(location = 0) out vec4 out_color;
 
 // The pool floor at a world point: sand with soft ripples a few cells across, so refraction shows.
@@ -45,14 +48,27 @@ float tri(float x) { return abs(fract(x) - 0.5) * 4.0 - 1.0; }
 vec3 floor_color(vec2 xz) {
   const vec2 p = xz * POND_FLAT_INV_SPACING(in_eye);  // world -> grid units
   const float ripple = tri(p.x * 0.21 + 0.27 * tri(p.y * 0.07)) * tri(p.y * 0.17 + 0.21 * tri(p.x * 0.06));
-  return in_ground * (0.85 + 0.15 * ripple);
+  return in_ground.rgb * (0.85 + 0.15 * ripple);
 }
 
 // The rim's wall under water at a world point: tiles a grid unit square with dark grout lines.
 vec3 wall_color(vec3 p) {
   const vec2 q = vec2(p.x + p.z, p.y) * POND_FLAT_INV_SPACING(in_eye);
   const float grout = max(step(0.9, fract(q.x)), step(0.9, fract(q.y)));
-  return in_ground * (0.75 - 0.3 * grout);
+  return in_ground.rgb * (0.75 - 0.3 * grout);
+}
+
+// The sun's light at a point of the floor or a submerged wall relative to calm water's, from this
+// frame's caustics map (render/caustics_pass.h; shared/caustics.h): one nearest fetch of the texel's
+// four corners, interpolated. A wall point reads the texel its depth's calm ray offset gives,
+// clamped to the floor's edge (approximate: the map is the floor's).
+float caustic_light(vec3 p) {
+  if (!kCaustics) return 1.0;
+  const vec4 place = POND_FLAT_CAUSTICS(in_sky, in_water, in_ground, in_horizon);  // WaterFrame::caustics
+  const vec2 uv = p.xz * place.xy + p.y * place.zw;
+  const vec4 c = textureLod(caustics, uv, 0.0);
+  const vec2 f = fract(uv * POND_FLAT_CAUSTICS_SIZE(in_pool));
+  return mix(mix(c.r, c.g, f.x), mix(c.b, c.a, f.x), f.y) * kCausticsDecode;
 }
 
 // exp(-x) for x >= 0, without exp: llvmpipe evaluates exp per lane and channel in software
@@ -95,7 +111,7 @@ void main() {
   // Where the ray leaves the pool's box [0, cols - 1] x [0, rows - 1] (grid units) before the floor,
   // it meets a rim wall.
   const vec2 start = in_world.xz * POND_FLAT_INV_SPACING(in_eye), dir = t.xz * POND_FLAT_INV_SPACING(in_eye);
-  const vec2 room = mix(start, in_pool - start, greaterThan(dir, vec2(0.0)));  // to the wall ahead
+  const vec2 room = mix(start, in_pool.xy - start, greaterThan(dir, vec2(0.0)));  // to the wall ahead
   const vec2 exits = max(room, vec2(0.0)) / max(abs(dir), vec2(1e-6));
   const float exit_path = min(exits.x, exits.y);
   const bool wall = exit_path < path;
@@ -103,12 +119,13 @@ void main() {
   const vec3 hit = in_world + t * path;
   const vec3 transmit = exp_neg(in_absorb * path);
   const vec2 sun = water_sun_light(hit);  // the shadows of the tree and the bodies
-  const vec3 body = in_water * (0.35 + 0.65 * diffuse * sun.x);  // scattered light: diffuse-lit water colour
-  const vec3 bottom = (wall ? wall_color(hit) : floor_color(hit.xz)) * mix(in_shadow_sun.w, 1.0, sun.y);
+  const vec3 body = in_water.rgb * (0.35 + 0.65 * diffuse * sun.x);  // scattered light: diffuse-lit water colour
+  // The floor's light: the sky's share, and the sun's, focused by the waves and shadowed.
+  const vec3 bottom = (wall ? wall_color(hit) : floor_color(hit.xz)) * mix(in_shadow_sun.w, caustic_light(hit), sun.y);
   const vec3 seen_through = bottom * transmit + body * (vec3(1.0) - transmit);
 
   const vec3 r = reflect(-v, n);
-  vec3 reflected = sky_color(in_sky, in_horizon, r, l);
+  vec3 reflected = sky_color(in_sky.rgb, in_horizon.rgb, r, l);
 #ifdef POND_WATER_REFLECTIONS
   // The mirror image at this pixel, shifted by the surface's tilt (a flat surface: no shift); its
   // alpha is 0 where nothing above the water is mirrored there, and the sky shows instead.

@@ -4,6 +4,7 @@
 // CPU solver) wrote this frame. No vertex attributes, no CPU copy of the vertex data.
 #extension GL_GOOGLE_include_directive : require
 
+#include "shared/caustics.h"
 #include "shared/water_render.h"
 #include "shared/water_shading.h"
 
@@ -17,12 +18,12 @@ layout(location = 1) out vec3 out_normal;
 // shared/water_render.h for why not the uniform block).
 layout(location = POND_WATER_FLAT_EYE) flat out vec4 out_eye;
 layout(location = POND_WATER_FLAT_SUN) flat out vec4 out_sun;
-layout(location = POND_WATER_FLAT_SKY) flat out vec3 out_sky;
-layout(location = POND_WATER_FLAT_WATER) flat out vec3 out_water;
-layout(location = POND_WATER_FLAT_GROUND) flat out vec3 out_ground;
-layout(location = POND_WATER_FLAT_HORIZON) flat out vec3 out_horizon;
+layout(location = POND_WATER_FLAT_SKY) flat out vec4 out_sky;
+layout(location = POND_WATER_FLAT_WATER) flat out vec4 out_water;
+layout(location = POND_WATER_FLAT_GROUND) flat out vec4 out_ground;
+layout(location = POND_WATER_FLAT_HORIZON) flat out vec4 out_horizon;
 layout(location = POND_WATER_FLAT_ABSORB) flat out vec3 out_absorb;
-layout(location = POND_WATER_FLAT_POOL) flat out vec2 out_pool;
+layout(location = POND_WATER_FLAT_POOL) flat out vec4 out_pool;
 layout(location = POND_WATER_FLAT_SCREEN) flat out vec3 out_screen;
 layout(location = POND_WATER_SHADOW) out vec3 out_shadow;
 layout(location = POND_WATER_FLAT_SHADOW_X) flat out vec4 out_shadow_x;
@@ -45,17 +46,17 @@ void main() {
   // w: POND_FLAT_INV_SPACING, the reciprocal: water.frag multiplies by it.
   out_eye = vec4(f.eye.xyz, 1.0 / POND_FRAME_GRID_SPACING(f));
   out_sun = vec4(f.sun.xyz, POND_FRAME_FLOOR_DEPTH(f));  // w: POND_FLAT_FLOOR_DEPTH
-  out_sky = f.sky.rgb;
-  out_water = f.water.rgb;
-  const float floor_sun = 0.55 * max(f.sun.y, 0.0);  // the floor's light: sky 0.45, sun the rest
-  out_ground = f.ground.rgb * (0.45 + floor_sun);
-  out_horizon = sky_horizon(f.sky.rgb);
+  out_sky = vec4(f.sky.rgb, f.caustics.x);  // the caustics' place in spare lanes (POND_FLAT_CAUSTICS)
+  out_water = vec4(f.water.rgb, f.caustics.y);
+  const float floor_sun = (1.0 - kFloorAmbient) * max(f.sun.y, 0.0);  // the floor's light: sky, then sun
+  out_ground = vec4(f.ground.rgb * (kFloorAmbient + floor_sun), f.caustics.z);
+  out_horizon = vec4(sky_horizon(f.sky.rgb), f.caustics.w);
   out_absorb = (vec3(1.0) - f.water.rgb) * (0.45 / POND_FRAME_GRID_SPACING(f));
-  out_pool = vec2(float(cols - 1u), float(POND_FRAME_ROWS(f) - 1u));
+  out_pool = vec4(float(cols - 1u), float(POND_FRAME_ROWS(f) - 1u), vec2(f.caustics_size.xy));
   out_screen = f.screen.xyz;
   out_shadow = (f.shadow * vec4(world, 1.0)).xyz;
   out_shadow_x = vec4(f.shadow[0][0], f.shadow[1][0], f.shadow[2][0], f.shadow[3][0]);  // rows
   out_shadow_y = vec4(f.shadow[0][1], f.shadow[1][1], f.shadow[2][1], f.shadow[3][1]);
   out_shadow_z = vec4(f.shadow[0][2], f.shadow[1][2], f.shadow[2][2], f.shadow[3][2]);
-  out_shadow_sun = vec4(f.shadow_sun.xyz, 0.45 / (0.45 + floor_sun));
+  out_shadow_sun = vec4(f.shadow_sun.xyz, kFloorAmbient / (kFloorAmbient + floor_sun));
 }

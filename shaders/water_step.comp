@@ -72,6 +72,10 @@ layout(local_size_x_id = POND_SPEC_STEP_LOCAL_X) in;
 layout(constant_id = POND_SPEC_FAST_MATH) const bool kFastMath = false;
 layout(constant_id = POND_SPEC_RSQRT_STEPS) const int kRsqrtSteps = kRsqrtStepsExact;
 layout(constant_id = POND_SPEC_PADDED_ROWS) const bool kPaddedRows = true;
+// Scenes with bodies: the largest |u'x|, |u'z| written goes to `reach_bits` (the contact's bound
+// on how far a node can have moved sideways, shared/bodies.h), as an atomic max of the float bits
+// (non-negative floats order as their bits); the contact pass reads it and sets it back to 0.
+layout(constant_id = POND_SPEC_TRACK_REACH) const bool kTrackReach = false;
 
 // The bindings of shared/water_gpu.h (POND_STEP_BINDING_*): views of the source state, the
 // destination state and the kinds.
@@ -90,6 +94,8 @@ layout(std430, set = 0, binding = POND_STEP_BINDING_DST4) restrict writeonly buf
 void store4(uint index, vec4 v) { dst4[index] = v; }
 #endif
 layout(set = 0, binding = POND_STEP_BINDING_KINDS4) uniform usamplerBuffer kinds4;  // RGBA8UI: nodes 4n..4n+3
+layout(std430, set = 0, binding = POND_STEP_BINDING_REACH) restrict buffer Reach { uint reach_bits; };
+shared uint group_reach;
 layout(push_constant) uniform Push { StepPush p; };
 
 float load1(uint n) { return texelFetch(src1, int(n)).x; }
@@ -209,6 +215,7 @@ void main_quad() {
   const uint q4 = p.stride >> 2u;
 
   vec3 mid[6], up[6];
+  vec4 reach = vec4(0.0);  // the largest |u'x|, |u'z| of the invocation's nodes (kTrackReach)
   load_row(i0, i0 * Q + q0, j0, has_l, has_r, mid);
   // The lower band of row i0 (re-evaluated from row i0-1: the same inputs, the same bits).
   vec3 bs[4], bd1[5], bd2[5];
@@ -257,6 +264,7 @@ void main_quad() {
     const vec4 ovx = vec4(v1[0].x, v1[1].x, v1[2].x, v1[3].x);
     const vec4 ovy = vec4(v1[0].y, v1[1].y, v1[2].y, v1[3].y);
     const vec4 ovz = vec4(v1[0].z, v1[1].z, v1[2].z, v1[3].z);
+    if (kTrackReach) reach = max(reach, max(abs(ox), abs(oz)));
     if (in_grid) {
       store4(q, ox);
       store4(q4 + q, oy);
@@ -273,6 +281,13 @@ void main_quad() {
 
     bs = s; bd1 = d1; bd2 = d2;
     mid = up;
+  }
+  if (kTrackReach) {  // one global atomic per workgroup (the group's invocations meet in shared memory)
+    if (gl_LocalInvocationIndex == 0u) group_reach = 0u;
+    barrier();
+    atomicMax(group_reach, floatBitsToUint(max(max(reach.x, reach.y), max(reach.z, reach.w))));
+    barrier();
+    if (gl_LocalInvocationIndex == 0u) atomicMax(reach_bits, group_reach);
   }
 }
 

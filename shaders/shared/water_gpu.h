@@ -36,6 +36,7 @@
 #define POND_SPEC_STEP_LOCAL_X 3   // specialization constant: water_step.comp's local_size_x
 #define POND_SPEC_NORMALS_LOCAL_X 4  // specialization constant: water_normals.comp's local_size_x
 #define POND_SPEC_PADDED_ROWS 5    // specialization constant: bool, the state's rows end in padding (pitch > cols)
+#define POND_SPEC_TRACK_REACH 6    // specialization constant: bool, keep the reach (scenes with bodies)
 
 // Bindings of water_step.comp: texel-buffer views of the state and the kinds (see the buffer notes
 // above; the buffers are the same, only the views differ).
@@ -43,7 +44,9 @@
 #define POND_STEP_BINDING_SRC4 1    // uniform texel buffer, R32G32B32A32_SFLOAT view of the source state
 #define POND_STEP_BINDING_DST4 2    // storage buffer: the destination state as vec4[] (4 floats per element)
 #define POND_STEP_BINDING_KINDS4 3  // uniform texel buffer, R8G8B8A8_UINT view (nodes 4t..4t+3 = texel t)
-#define POND_STEP_BINDINGS 4
+#define POND_STEP_BINDING_REACH 4   // storage buffer: uint, the float bits of the largest |ux|, |uz| written
+                                    // (atomic max; with POND_SPEC_TRACK_REACH; shared/bodies.h step 2)
+#define POND_STEP_BINDINGS 5
 
 // Bindings of water_normals.comp.
 #define POND_NORMALS_BINDING_STATE 0    // uniform texel buffer, R32_SFLOAT view of the state

@@ -13,6 +13,8 @@
 //   4: combined image sampler with depth compare (sampler2DShadow), the sun's shadow map
 //      (render/shadow_pass.h), per frame slot; read by the land and the water when
 //      POND_SPEC_SHADOWS is on
+//   5: combined image sampler, the caustics map (render/caustics_pass.h), per frame slot; read by
+//      water.frag where POND_SPEC_CAUSTICS is on
 // The water is drawn with vertex pulling: the index buffer holds node indices n = row * cols + col
 // (the LOD builder's output as is), the vertex shader reads the normals at gl_VertexIndex and the
 // state at its row * pitch + col.
@@ -45,6 +47,7 @@ struct mat4 {
 #define POND_RENDER_BINDING_NORMALS 2
 #define POND_RENDER_BINDING_REFLECTION 3
 #define POND_RENDER_BINDING_SHADOW 4
+#define POND_RENDER_BINDING_CAUSTICS 5
 
 // The fragment shaders take the frame's constants as flat varyings from their vertex shader, not
 // from the uniform block: llvmpipe (Mesa 22.3) reads a uniform (or push constant) in a fragment
@@ -55,12 +58,13 @@ struct mat4 {
 // water.frag:
 #define POND_WATER_FLAT_EYE 2      // xyz: the camera; w: POND_FLAT_INV_SPACING
 #define POND_WATER_FLAT_SUN 3      // xyz: WaterFrame::sun; w: POND_FLAT_FLOOR_DEPTH
-#define POND_WATER_FLAT_SKY 4      // WaterFrame::sky.rgb (the zenith)
-#define POND_WATER_FLAT_WATER 5    // WaterFrame::water.rgb
-#define POND_WATER_FLAT_GROUND 6   // WaterFrame::ground.rgb lit by the sun (the pool floor's light)
-#define POND_WATER_FLAT_HORIZON 7  // the sky's colour at the horizon
+#define POND_WATER_FLAT_SKY 4      // rgb: WaterFrame::sky.rgb (the zenith); a: POND_FLAT_CAUSTICS
+#define POND_WATER_FLAT_WATER 5    // rgb: WaterFrame::water.rgb; a: POND_FLAT_CAUSTICS
+#define POND_WATER_FLAT_GROUND 6   // rgb: WaterFrame::ground.rgb lit by the sun; a: POND_FLAT_CAUSTICS
+#define POND_WATER_FLAT_HORIZON 7  // rgb: the sky's colour at the horizon; a: POND_FLAT_CAUSTICS
 #define POND_WATER_FLAT_ABSORB 8   // the water's absorption per world unit (rgb)
-#define POND_WATER_FLAT_POOL 9     // xy: the pool's far corner (cols - 1, rows - 1), grid units
+#define POND_WATER_FLAT_POOL 9     // xy: the pool's far corner (cols - 1, rows - 1), grid units;
+                                   // zw: POND_FLAT_CAUSTICS_SIZE
 #define POND_WATER_FLAT_SCREEN 10  // WaterFrame::screen
 #define POND_WATER_SHADOW 11       // (smooth) the surface point in the shadow map (shadow_sampling.h)
 #define POND_WATER_FLAT_SHADOW_X 12  // WaterFrame::shadow's rows x, y, z (world -> shadow map)
@@ -68,10 +72,14 @@ struct mat4 {
 #define POND_WATER_FLAT_SHADOW_Z 14
 #define POND_WATER_FLAT_SHADOW_SUN 15  // xyz: the sunlight's direction under the water; w: the floor's
                                        // light in shadow over its light in the sun
-// The w lanes of the EYE and SUN varyings by name (each macro is the lane itself: no extra varying,
-// no extra instruction):
+// The spare lanes of these varyings by name (each macro is the lanes themselves: no extra varying,
+// no extra instruction). The caustics map's place rides in spare lanes because the locations above
+// are all 16 that every device has (maxFragmentInputComponents is at least 64).
 #define POND_FLAT_INV_SPACING(eye) ((eye).w)  // 1 / the grid spacing (grid units per world unit)
 #define POND_FLAT_FLOOR_DEPTH(sun) ((sun).w)  // the pool floor's depth (POND_FRAME_FLOOR_DEPTH)
+#define POND_FLAT_CAUSTICS(sky, water, ground, horizon) \
+  vec4((sky).w, (water).w, (ground).w, (horizon).w)    // WaterFrame::caustics
+#define POND_FLAT_CAUSTICS_SIZE(pool) ((pool).zw)    // WaterFrame::caustics_size.xy, as floats
 
 // Fragment-shader specialization constant (bool), set by render/graphics_pipeline.cpp from the colour
 // format: true when the target is UNORM and the shader must encode sRGB itself.
@@ -79,6 +87,8 @@ struct mat4 {
 // Fragment-shader specialization constant (bool): the land and the water sample the sun's shadow map
 // (render/shadow_pass.h). Off, the shaders contain no shadow code at all.
 #define POND_SPEC_SHADOWS 1
+// Fragment-shader specialization constant (bool): water.frag lights the floor with the caustics map.
+#define POND_SPEC_CAUSTICS 2
 
 // Everything a frame's shaders need, one uniform block (std140), written per frame slot. Every
 // member is a vec4 (or mat4), so the layout is the same in both languages; the lanes that hold
@@ -105,6 +115,9 @@ struct WaterFrame {
   mat4 shadow;
   vec4 shadow_sun;  // xyz: the sunlight's direction in the water (refracted, unit, pointing down);
                     // w: unused
+  uvec4 caustics_size;  // xy: the caustics map's size (texels); zw: 0
+  vec4 caustics;  // a world point p's place in the caustics map: uv = p.xz * xy + p.y * zw
+                  // (render/caustics_pass.h caustics_lookup)
 };
 
 // The packed lanes of a WaterFrame by name. Macros, so that one spelling serves both languages

@@ -42,7 +42,8 @@ void print_effect_costs(render::FrameLoop& loop, const render::RenderTarget& tar
     const char* name;
     bool view::Effects::*flag;
   };
-  for (const Effect e : {Effect{"reflections", &view::Effects::reflections}, Effect{"shadows", &view::Effects::shadows}}) {
+  for (const Effect e : {Effect{"reflections", &view::Effects::reflections}, Effect{"caustics", &view::Effects::caustics},
+                         Effect{"shadows", &view::Effects::shadows}}) {
     if (!(view.effects.*e.flag)) continue;
     std::vector<double> on, off;
     for (int k = 0; k < pairs; ++k)

@@ -32,10 +32,12 @@ std::uint32_t contact_invocations(std::uint32_t subgroup_size) {
 }
 
 BodyContact::BodyContact(const Context& ctx, const sim::WaterModel& model, std::size_t pitch, std::size_t stride,
-                         const Buffer (&state)[2], const Buffer& kinds, std::int64_t max_substeps,
+                         const Buffer (&state)[2], const vk::raii::BufferView (&state_r32)[2],
+                         const vk::raii::BufferView& kinds_rgba8, const Buffer& reach, std::int64_t max_substeps,
                          bool denorm_preserve)
     : ctx_(ctx), model_(model), pitch_(pitch), stride_(stride), max_substeps_(max_substeps) {
-  const std::vector<vk::DescriptorType> bindings(POND_CONTACT_BINDINGS, vk::DescriptorType::eStorageBuffer);
+  std::vector<vk::DescriptorType> bindings(POND_CONTACT_BINDINGS, vk::DescriptorType::eStorageBuffer);
+  bindings[POND_CONTACT_BINDING_STATE1] = bindings[POND_CONTACT_BINDING_KINDS4] = vk::DescriptorType::eUniformTexelBuffer;
   const SpecConstant local_x[] = {{POND_SPEC_CONTACT_LOCAL_X, contact_invocations(ctx_.subgroup_size())}};
   pipe_ = create_compute_pipeline(ctx_, water_contact_spirv(denorm_preserve), bindings, sizeof(ContactPush), local_x,
                                   "water_contact (" + std::to_string(local_x[0].value) + " invocations)");
@@ -49,11 +51,12 @@ BodyContact::BodyContact(const Context& ctx, const sim::WaterModel& model, std::
   schedule_ = create_buffer(ctx_, static_cast<vk::DeviceSize>(max_substeps_) * count * sizeof(BodyState),
                             BU::eStorageBuffer, MemoryUse::upload, "kinematic body schedule");
 
-  const vk::DescriptorPoolSize size{.type = vk::DescriptorType::eStorageBuffer,
-                                    .descriptorCount = kSets * POND_CONTACT_BINDINGS};
+  const vk::DescriptorPoolSize sizes[] = {
+      {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = kSets * (POND_CONTACT_BINDINGS - 2)},
+      {.type = vk::DescriptorType::eUniformTexelBuffer, .descriptorCount = kSets * 2}};
   pool_ = vk::raii::DescriptorPool(ctx_.device(),
                                    vk::DescriptorPoolCreateInfo{.flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
-                                                                .maxSets = kSets, .poolSizeCount = 1, .pPoolSizes = &size});
+                                                                .maxSets = kSets, .poolSizeCount = 2, .pPoolSizes = sizes});
   const vk::DescriptorSetLayout layouts[kSets] = {*pipe_.set_layout, *pipe_.set_layout};
   vk::raii::DescriptorSets sets(ctx_.device(), vk::DescriptorSetAllocateInfo{.descriptorPool = *pool_,
                                                                              .descriptorSetCount = kSets,
@@ -61,15 +64,22 @@ BodyContact::BodyContact(const Context& ctx, const sim::WaterModel& model, std::
   for (auto& s : sets) sets_.push_back(std::move(s));
   for (std::uint32_t c = 0; c < kSets; ++c) {
     vk::DescriptorBufferInfo infos[POND_CONTACT_BINDINGS];
+    vk::BufferView views[POND_CONTACT_BINDINGS] = {};
     infos[POND_CONTACT_BINDING_STATE] = state[c].whole();
-    infos[POND_CONTACT_BINDING_KINDS] = kinds.whole();
+    views[POND_CONTACT_BINDING_KINDS4] = *kinds_rgba8;
+    views[POND_CONTACT_BINDING_STATE1] = *state_r32[c];
     infos[POND_CONTACT_BINDING_BODIES] = bodies_.whole();
     infos[POND_CONTACT_BINDING_CONSTANTS] = constants_.whole();
     infos[POND_CONTACT_BINDING_SCHEDULE] = schedule_.whole();
+    infos[POND_CONTACT_BINDING_REACH] = reach.whole();
     std::vector<vk::WriteDescriptorSet> writes;
     for (std::uint32_t b = 0; b < POND_CONTACT_BINDINGS; ++b)
-      writes.push_back({.dstSet = *sets_[c], .dstBinding = b, .descriptorCount = 1,
-                        .descriptorType = vk::DescriptorType::eStorageBuffer, .pBufferInfo = &infos[b]});
+      if (bindings[b] == vk::DescriptorType::eStorageBuffer)
+        writes.push_back({.dstSet = *sets_[c], .dstBinding = b, .descriptorCount = 1,
+                          .descriptorType = bindings[b], .pBufferInfo = &infos[b]});
+      else
+        writes.push_back({.dstSet = *sets_[c], .dstBinding = b, .descriptorCount = 1,
+                          .descriptorType = bindings[b], .pTexelBufferView = &views[b]});
     ctx_.device().updateDescriptorSets(writes, nullptr);
   }
 }

@@ -19,11 +19,14 @@ std::uint32_t contact_invocations(std::uint32_t subgroup_size);
 
 class BodyContact {
  public:
-  // For the bodies of `model` (which must outlive this, as the context and the buffers) on the
-  // solver's two state buffers (rows `pitch` nodes apart, components `stride` floats apart) and
-  // its packed kinds; `max_substeps` is the most substeps one submission records.
+  // For the bodies of `model` (which must outlive this, as the context, the buffers and the views)
+  // on the solver's two state buffers (rows `pitch` nodes apart, components `stride` floats
+  // apart), their R32F views, the kinds' RGBA8UI view and the step shader's reach (which the pass
+  // sets back to 0); `max_substeps` is the most substeps one submission records.
   BodyContact(const Context& ctx, const sim::WaterModel& model, std::size_t pitch, std::size_t stride,
-              const Buffer (&state)[2], const Buffer& kinds, std::int64_t max_substeps, bool denorm_preserve);
+              const Buffer (&state)[2], const vk::raii::BufferView (&state_r32)[2],
+              const vk::raii::BufferView& kinds_rgba8, const Buffer& reach, std::int64_t max_substeps,
+              bool denorm_preserve);
 
   void set_bodies(const std::vector<sim::BodyState>& bodies);  // uploads them (waits)
   void upload_constants();  // the model's bodies' constants, where they changed (waits then)

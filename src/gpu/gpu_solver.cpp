@@ -57,6 +57,7 @@ std::vector<vk::DescriptorType> step_bindings() {
   b[POND_STEP_BINDING_SRC1] = b[POND_STEP_BINDING_SRC4] = DT::eUniformTexelBuffer;
   b[POND_STEP_BINDING_DST4] = DT::eStorageBuffer;
   b[POND_STEP_BINDING_KINDS4] = DT::eUniformTexelBuffer;
+  b[POND_STEP_BINDING_REACH] = DT::eStorageBuffer;
   return b;
 }
 std::vector<vk::DescriptorType> perturb_bindings() {
@@ -83,7 +84,7 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model)
   upload_kinds_and_perturbations();
   create_descriptor_sets();
   if (!model_.bodies.empty())
-    contact_ = std::make_unique<BodyContact>(ctx_, model_, pitch_, stride_, state_, kinds_,
+    contact_ = std::make_unique<BodyContact>(ctx_, model_, pitch_, stride_, state_, state_r32_, kinds_rgba8_, reach_,
                                              steps_per_submit() * model_.substeps,
                                              model_.math == sim::MathMode::exact && ctx_.denorm_preserve());
   set_state(sim::rest_state(model_), 0);
@@ -103,7 +104,8 @@ void GpuSolver::create_pipelines() {
       {POND_SPEC_FAST_MATH, fast ? 1u : 0u},
       {POND_SPEC_RSQRT_STEPS, static_cast<std::uint32_t>(model_.constants.rsqrt_steps)},
       {POND_SPEC_STEP_LOCAL_X, step_local_x_},
-      {POND_SPEC_PADDED_ROWS, pitch_ != static_cast<std::size_t>(model_.cols) ? 1u : 0u}};
+      {POND_SPEC_PADDED_ROWS, pitch_ != static_cast<std::size_t>(model_.cols) ? 1u : 0u},
+      {POND_SPEC_TRACK_REACH, model_.bodies.empty() ? 0u : 1u}};
   const bool int64_stores = ctx_.has_int64();
   // Exact math declares DenormPreserve where the device allows it; fast math leaves denormals to
   // the device.
@@ -130,8 +132,14 @@ void GpuSolver::create_buffers() {
   state_[0] = create_buffer(ctx_, state_bytes, state_usage, MemoryUse::device, "water state A");
   state_[1] = create_buffer(ctx_, state_bytes, state_usage, MemoryUse::device, "water state B");
   normals_ = create_buffer(ctx_, std::max<std::size_t>(1, model_.nodes()) * 4 * sizeof(float),
-                           BU::eStorageBuffer | BU::eTransferSrc | BU::eVertexBuffer, MemoryUse::device,
-                           "water normals");
+                           BU::eStorageBuffer | BU::eTransferSrc | BU::eVertexBuffer | BU::eUniformTexelBuffer,
+                           MemoryUse::device, "water normals");  // texel buffer: render/caustics_pass.h reads it
+  // The reach the step shader keeps for the bodies' contact (POND_STEP_BINDING_REACH), from 0; the
+  // contact pass sets it back to 0 after every substep.
+  reach_ = create_buffer(ctx_, sizeof(std::uint32_t), BU::eStorageBuffer | BU::eTransferDst, MemoryUse::device,
+                         "water reach");
+  const std::uint32_t zero = 0;
+  upload(ctx_, reach_, std::as_bytes(std::span(&zero, 1)));
 }
 
 // Where every device-local memory type the state could be in is also host-visible, cached and
@@ -217,11 +225,12 @@ void GpuSolver::create_descriptor_sets() {
     views[POND_STEP_BINDING_DST4] = *state_rgba32_[1 - c];
     views[POND_STEP_BINDING_KINDS4] = *kinds_rgba8_;
     std::vector<vk::WriteDescriptorSet> writes;
-    const vk::DescriptorBufferInfo dst_info = state_[1 - c].whole();
+    const vk::DescriptorBufferInfo dst_info = state_[1 - c].whole(), reach_info = reach_.whole();
     for (std::uint32_t b = 0; b < views.size(); ++b)
       if (step_types[b] == DT::eStorageBuffer)
         writes.push_back({.dstSet = *step_sets_[c], .dstBinding = b, .descriptorCount = 1,
-                          .descriptorType = step_types[b], .pBufferInfo = &dst_info});
+                          .descriptorType = step_types[b],
+                          .pBufferInfo = b == POND_STEP_BINDING_REACH ? &reach_info : &dst_info});
       else
         writes.push_back({.dstSet = *step_sets_[c], .dstBinding = b, .descriptorCount = 1,
                           .descriptorType = step_types[b], .pTexelBufferView = &views[b]});

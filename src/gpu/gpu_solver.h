@@ -100,6 +100,7 @@ class GpuSolver final : public sim::Solver {
   std::size_t stride_ = 0;  // state_stride(rows * pitch_)
   ComputePipeline step_pipe_, perturb_pipe_, normals_pipe_;
   Buffer state_[2], kinds_, table_, normals_;
+  Buffer reach_;  // the step shader's reach for the bodies' contact (POND_STEP_BINDING_REACH)
   // Texel-buffer views the step shader reads and writes the state through (water_gpu.h,
   // POND_STEP_BINDING_*): state c as R32F and RGBA32F, kinds as RGBA8UI.
   vk::raii::BufferView state_r32_[2] = {nullptr, nullptr}, state_rgba32_[2] = {nullptr, nullptr};

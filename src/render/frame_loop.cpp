@@ -9,6 +9,7 @@
 
 #include "core/errors.h"
 #include "gpu/buffer.h"
+#include "render/caustics_pass.h"
 #include "render/color_format.h"
 #include "render/reflection_pass.h"
 #include "render/shadow_pass.h"
@@ -101,8 +102,9 @@ struct FrameLoop::Impl {
   std::uint64_t water_generation = 0;  // the session's solver_generation() `water` reads
   lod::LodBuilder lod;
   WaterPipelines pipes;
-  vk::raii::Sampler reflection_sampler = nullptr;
+  vk::raii::Sampler reflection_sampler = nullptr;  // nearest, clamped: also the caustics map's
   vk::raii::Sampler shadow_sampler = nullptr;
+  CausticsPass caustics;
   gpu::Buffer land, mirrored_land, full_indices;  // mirrored_land: the reflection's (view::mirrored_walls)
   std::uint32_t land_vertices = 0, mirrored_land_vertices = 0, full_index_count = 0;
   vk::raii::CommandPool pool = nullptr;
@@ -113,7 +115,8 @@ struct FrameLoop::Impl {
 
   Impl(const gpu::Context& c, sim::Session& drawn, vk::Format format)
       : ctx(c), session(drawn), lighting(drawn.scene().lighting), color_format(format),
-        lod(drawn.model().rows, drawn.model().cols), pipes(create_water_pipelines(c, format, kDepthFormat)) {
+        lod(drawn.model().rows, drawn.model().cols), pipes(create_water_pipelines(c, format, kDepthFormat)),
+        caustics(c, drawn.model(), kFramesInFlight) {
     reflection_sampler = create_reflection_sampler(ctx);
     shadow_sampler = create_shadow_sampler(ctx);
     follow_solver();
@@ -154,6 +157,7 @@ struct FrameLoop::Impl {
     if (water && water_generation == session.solver_generation()) return;
     simulated.reset();  // its buffers are the old solver's
     wait_all();
+    caustics.forget_water_buffers();
     water.reset();
     water = std::make_unique<WaterSource>(ctx, session.solver(), kFramesInFlight);
     water_generation = session.solver_generation();
@@ -252,6 +256,8 @@ struct FrameLoop::Impl {
     }
     const bool full = f.view.lod_tolerance_px <= 0;
     const std::array<float, 16> view_proj = view::view_projection(f.camera, model());  // 4. draw
+    const CausticsPush caustics_constants =
+        caustics_push(model(), unit_sun(), session.scene().view.floor_depth, f.bufs.stride, f.bufs.pitch);
     ensure_depth(s, target.extent);
     ensure_reflection_target(ctx, s.reflection, target.extent);  // made even when off: the set is whole
     const FrameInfo info{s.cmd, f.slot, view_proj.data(),
@@ -263,9 +269,10 @@ struct FrameLoop::Impl {
     const std::optional<FrameShadow> shadow =
         f.view.effects.shadows ? fit_shadow(view_proj, target.extent) : std::nullopt;
     ensure_shadow_map(ctx, s.shadow, shadow ? shadow->view.size : 0);  // made even when off: the set is whole
-    bind_buffers(s, f.bufs);
+    bind_buffers(f.slot, s, f.bufs);
     write_frame_uniforms(s, f.camera, view_proj, f.bufs.stride, f.bufs.pitch, shadow);
-    record(s, target, info, full ? full_indices : s.indices, static_cast<std::uint32_t>(f.index_count), f.view, shadow);
+    record(s, target, info, full ? full_indices : s.indices, static_cast<std::uint32_t>(f.index_count), f.view, shadow,
+           caustics_constants);
     submit(s, target);
     if (f.view.wait) wait(s);
     f.stats.draw_ms = ms_since(t);
@@ -311,17 +318,22 @@ struct FrameLoop::Impl {
     return shadow;
   }
 
+  std::array<double, 3> unit_sun() const {
+    const auto& d = lighting.sun;
+    const double sl = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    return {d[0] / sl, d[1] / sl, d[2] / sl};
+  }
+
   void write_frame_uniforms(const Slot& s, const lod::Camera& camera, const std::array<float, 16>& view_proj,
                             std::uint32_t stride, std::uint32_t pitch,
                             const std::optional<FrameShadow>& shadow) const {
     const view::LightingSpec& l = lighting;
     const view::ViewSpec& v = session.scene().view;
-    const double sl = std::sqrt(l.sun[0] * l.sun[0] + l.sun[1] * l.sun[1] + l.sun[2] * l.sun[2]);
     WaterFrame f;
     std::memcpy(f.view_proj.m, view_proj.data(), sizeof f.view_proj.m);
     f.eye = v4(camera.eye);
     POND_FRAME_GRID_SPACING(f) = model().spacing;
-    f.sun = v4({l.sun[0] / sl, l.sun[1] / sl, l.sun[2] / sl});
+    f.sun = v4(unit_sun());
     f.sky = v4(l.sky);
     f.water = v4(l.water);
     f.ground = v4(l.ground);
@@ -339,18 +351,25 @@ struct FrameLoop::Impl {
     if (shadow) std::memcpy(f.shadow.m, shadow->view.texture.data(), sizeof f.shadow.m);
     const std::array<float, 3> under_water = view::sunlight_in_water(l.sun);
     f.shadow_sun = {under_water[0], under_water[1], under_water[2], 0.0f};
+    const std::array<float, 4> c = caustics_lookup(model(), unit_sun());
+    f.caustics = {c[0], c[1], c[2], c[3]};
+    const vk::Extent2D map = caustics_extent(model().rows, model().cols);
+    f.caustics_size = {map.width, map.height, 0, 0};
     std::memcpy(s.uniforms.mapped, &f, sizeof f);
     s.uniforms.flush(ctx);
   }
 
   // The slot's descriptor set points at this frame's buffers (the GPU solver's current ping-pong
-  // buffer, or the slot's CPU copies); the slot is idle, so updating it is allowed.
-  void bind_buffers(const Slot& s, const WaterSource::DrawBuffers& b) const {
+  // buffer, or the slot's CPU copies); the slot is idle, so updating it is allowed. The caustics
+  // pass reads the same buffers.
+  void bind_buffers(std::uint32_t slot, const Slot& s, const WaterSource::DrawBuffers& b) {
     const vk::DescriptorBufferInfo infos[] = {s.uniforms.whole(), b.state->whole(), b.normals->whole()};
     const vk::DescriptorImageInfo reflection{.sampler = *reflection_sampler, .imageView = *s.reflection.color.view,
                                              .imageLayout = vk::ImageLayout::eShaderReadOnlyOptimal};
     const vk::DescriptorImageInfo shadow{.sampler = *shadow_sampler, .imageView = *s.shadow.view,
                                          .imageLayout = vk::ImageLayout::eShaderReadOnlyOptimal};
+    const vk::DescriptorImageInfo caustics_map{.sampler = *reflection_sampler, .imageView = *caustics.map(slot).view,
+                                               .imageLayout = vk::ImageLayout::eShaderReadOnlyOptimal};
     const vk::WriteDescriptorSet writes[] = {
         {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_FRAME, .descriptorCount = 1,
          .descriptorType = vk::DescriptorType::eUniformBuffer, .pBufferInfo = &infos[0]},
@@ -361,8 +380,11 @@ struct FrameLoop::Impl {
         {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_REFLECTION, .descriptorCount = 1,
          .descriptorType = vk::DescriptorType::eCombinedImageSampler, .pImageInfo = &reflection},
         {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_SHADOW, .descriptorCount = 1,
-         .descriptorType = vk::DescriptorType::eCombinedImageSampler, .pImageInfo = &shadow}};
+         .descriptorType = vk::DescriptorType::eCombinedImageSampler, .pImageInfo = &shadow},
+        {.dstSet = *s.set, .dstBinding = POND_RENDER_BINDING_CAUSTICS, .descriptorCount = 1,
+         .descriptorType = vk::DescriptorType::eCombinedImageSampler, .pImageInfo = &caustics_map}};
     ctx.device().updateDescriptorSets(writes, nullptr);
+    caustics.bind(slot, *b.state, *b.normals);
   }
 
   void ensure_depth(Slot& s, vk::Extent2D extent) const {
@@ -384,15 +406,16 @@ struct FrameLoop::Impl {
   }
 
   void record(const Slot& s, const FrameTarget& target, const FrameInfo& info, const gpu::Buffer& indices,
-              std::uint32_t index_count, const FrameView& view,
-              const std::optional<FrameShadow>& shadow) const {
+              std::uint32_t index_count, const FrameView& view, const std::optional<FrameShadow>& shadow,
+              const CausticsPush& caustics_constants) const {
     const vk::raii::CommandBuffer& cmd = s.cmd;
     cmd.reset();
     cmd.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
-    // Compute (substeps, normals) -> vertex shader reads of state and normals. The color barrier
-    // waits at color output, where the swapchain's acquire semaphore is waited.
+    // Compute (substeps, normals) -> vertex shader (and caustics) reads of state and normals. The
+    // color barrier waits at color output, where the swapchain's acquire semaphore is waited.
     const vk::MemoryBarrier2 compute_to_vertex{.srcStageMask = S::eComputeShader, .srcAccessMask = A::eShaderWrite,
-                                               .dstStageMask = S::eVertexShader, .dstAccessMask = A::eShaderRead};
+                                               .dstStageMask = S::eVertexShader | S::eComputeShader,
+                                               .dstAccessMask = A::eShaderRead};
     const vk::ImageMemoryBarrier2 begin_images[] = {
         layout_barrier(target.image, vk::ImageAspectFlagBits::eColor, target.old_layout,
                        vk::ImageLayout::eColorAttachmentOptimal, S::eColorAttachmentOutput, {},
@@ -403,6 +426,7 @@ struct FrameLoop::Impl {
                        A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite)};
     cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &compute_to_vertex,
                                             .imageMemoryBarrierCount = 2, .pImageMemoryBarriers = begin_images});
+    if (view.effects.caustics) caustics.record(cmd, info.slot, caustics_constants);
     if (shadow) {
       FrameInfo sun = info;
       sun.view_proj = shadow->view.clip.data();
@@ -464,10 +488,10 @@ struct FrameLoop::Impl {
       cmd.setScissor(0, vk::Rect2D{{0, 0}, target.extent});
     };
     cmd.bindVertexBuffers(0, *land.buffer, vk::DeviceSize{0});
-    shaded(pipes.land, pipes.shadowed.land, [&] { cmd.draw(land_vertices, 1, 0, 0); });
+    shaded(pipes.land, pipes.land_shadowed, [&] { cmd.draw(land_vertices, 1, 0, 0); });
     cmd.bindIndexBuffer(*indices.buffer, 0, vk::IndexType::eUint32);
-    shaded(reflections ? pipes.water_reflect : pipes.water,
-           reflections ? pipes.shadowed.water_reflect : pipes.shadowed.water,
+    const bool caustics_on = view.effects.caustics;
+    shaded(pipes.water_for(reflections, caustics_on, false), pipes.water_for(reflections, caustics_on, true),
            [&] { cmd.drawIndexed(index_count, 1, 0, 0, 0); });
     if (view.wireframe && *pipes.wire) {
       cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.wire);
@@ -481,13 +505,15 @@ struct FrameLoop::Impl {
     cmd.endRendering();
 
     // The image to its final layout; and the next frame's substeps must not overwrite the state
-    // or normals while this draw reads them (write-after-read: an execution dependency).
+    // or normals while this draw (or the caustics pass) reads them (write-after-read: an execution
+    // dependency).
     const bool present = target.final_layout == vk::ImageLayout::ePresentSrcKHR;
     const vk::ImageMemoryBarrier2 end_image = layout_barrier(
         target.image, vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eColorAttachmentOptimal, target.final_layout,
         S::eColorAttachmentOutput, A::eColorAttachmentWrite, present ? S::eNone : S::eCopy,
         present ? A::eNone : A::eTransferRead);
-    const vk::MemoryBarrier2 vertex_to_compute{.srcStageMask = S::eVertexShader, .dstStageMask = S::eComputeShader | S::eCopy};
+    const vk::MemoryBarrier2 vertex_to_compute{.srcStageMask = S::eVertexShader | S::eComputeShader,
+                                               .dstStageMask = S::eComputeShader | S::eCopy};
     cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &vertex_to_compute,
                                             .imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &end_image});
     cmd.end();

@@ -6,9 +6,10 @@
 // ARCHITECTURE.md:
 //
 //   substeps (the session's solver: GPU compute or CPU) -> normals -> LOD (CPU, from the new
-//     positions) -> draw (the sun's shadow map when on, render/shadow_pass.h; the planar
-//     reflection's pass when on, render/reflection_pass.h; then dynamic rendering into the
-//     caller's image: land, water, LOD wireframe, extra drawables, sky)
+//     positions) -> draw (the caustics' compute pass when on, render/caustics_pass.h; the sun's
+//     shadow map when on, render/shadow_pass.h; the planar reflection's pass when on,
+//     render/reflection_pass.h; then dynamic rendering into the caller's image: land, water, LOD
+//     wireframe, extra drawables, sky)
 //
 // Synchronization: the compute work (substeps + normals) is submitted and waited for, because the
 // CPU LOD builder needs this frame's positions (read straight from the state memory when it is

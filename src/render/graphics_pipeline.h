@@ -25,6 +25,8 @@ struct GraphicsPipelineDesc {
   bool linear_output = false;
   // The fragment shader samples the sun's shadow map (POND_SPEC_SHADOWS, shared/shadow_sampling.h).
   bool shadows = false;
+  // The water lights the floor it sees with the caustics map (POND_SPEC_CAUSTICS).
+  bool caustics = false;
 };
 
 vk::raii::Pipeline create_graphics_pipeline(const gpu::Context& ctx, const vk::raii::PipelineLayout& layout,

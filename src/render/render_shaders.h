@@ -1,5 +1,6 @@
 #pragma once
-// The SPIR-V of the water renderer's shaders (shaders/water.*, land.*, sky.*), compiled at build time,
+// The SPIR-V of the water renderer's shaders (shaders/water.*, land.*, sky.*,
+// caustics.comp), compiled at build time,
 // validated with spirv-val and embedded (cmake/Shaders.cmake).
 #include <cstdint>
 #include <span>
@@ -15,5 +16,6 @@ std::span<const std::uint32_t> water_reflect_frag_spirv();
 std::span<const std::uint32_t> land_mirror_vert_spirv();
 std::span<const std::uint32_t> sky_vert_spirv();
 std::span<const std::uint32_t> sky_frag_spirv();
+std::span<const std::uint32_t> caustics_comp_spirv();
 
 }  // namespace pond::render

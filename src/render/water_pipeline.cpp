@@ -1,6 +1,8 @@
 #include "render/water_pipeline.h"
 
+#include <iterator>
 #include <span>
+#include <stdexcept>
 
 #include "render/graphics_pipeline.h"
 #include "render/reflection_pass.h"
@@ -17,6 +19,7 @@ struct PipelineSpec {
   bool depth_write = true;
   bool linear_output = false;  // GraphicsPipelineDesc::linear_output
   bool shadows = false;        // GraphicsPipelineDesc::shadows
+  bool caustics = false;       // GraphicsPipelineDesc::caustics
   const char* name;
 };
 
@@ -57,7 +60,7 @@ vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayou
       .colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
   return create_graphics_pipeline(ctx, layout, color, depth,
                                   {s.vert, s.frag, vertex_input, assembly, raster, depth_state, blend, s.name, s.linear_output,
-                                   s.shadows});
+                                   s.shadows, s.caustics});
 }
 
 }  // namespace
@@ -75,33 +78,36 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
       {.binding = POND_RENDER_BINDING_REFLECTION, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
        .descriptorCount = 1, .stageFlags = SS::eFragment},
       {.binding = POND_RENDER_BINDING_SHADOW, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
+       .descriptorCount = 1, .stageFlags = SS::eFragment},
+      {.binding = POND_RENDER_BINDING_CAUSTICS, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
        .descriptorCount = 1, .stageFlags = SS::eFragment}};
   p.set_layout = vk::raii::DescriptorSetLayout(
-      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = 5, .pBindings = bindings});
+      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = 6, .pBindings = bindings});
   const vk::DescriptorSetLayout set_layout = *p.set_layout;
   p.layout = vk::raii::PipelineLayout(ctx.device(),
                                       vk::PipelineLayoutCreateInfo{.setLayoutCount = 1, .pSetLayouts = &set_layout});
   p.land = create(ctx, p.layout, color_format, depth_format,
                   {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true, .name = "land"});
-  p.water = create(ctx, p.layout, color_format, depth_format,
-                   {.vert = water_vert_spirv(), .frag = water_frag_spirv(), .name = "water"});
-  p.water_reflect = create(ctx, p.layout, color_format, depth_format,
-                           {.vert = water_vert_spirv(), .frag = water_reflect_frag_spirv(),
-                            .name = "water, reflecting"});
+  p.land_shadowed = create(ctx, p.layout, color_format, depth_format,
+                           {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true,
+                            .shadows = true, .name = "land, shadowed"});
+  static const char* const kWaterNames[] = {
+      "water", "water, reflecting", "water, caustics", "water, reflecting, caustics", "water, shadowed",
+      "water, reflecting, shadowed", "water, caustics, shadowed", "water, reflecting, caustics, shadowed"};
+  for (std::size_t v = 0; v < std::size(kWaterNames); ++v) {
+    const bool reflections = v & 1u, caustics = v & 2u, shadows = v & 4u;
+    if (WaterPipelines::water_variant(reflections, caustics, shadows) != p.waters.size())
+      throw std::logic_error("water pipeline variants out of order");
+    p.waters.push_back(create(ctx, p.layout, color_format, depth_format,
+                              {.vert = water_vert_spirv(),
+                               .frag = reflections ? water_reflect_frag_spirv() : water_frag_spirv(),
+                               .shadows = shadows, .caustics = caustics, .name = kWaterNames[v]}));
+  }
   p.land_mirror = create(ctx, p.layout, kReflectionFormat, depth_format,
                          {.vert = land_mirror_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true,
                           .linear_output = true, .name = "land, mirrored"});
   p.sky = create(ctx, p.layout, color_format, depth_format,
                  {.vert = sky_vert_spirv(), .frag = sky_frag_spirv(), .depth_write = false, .name = "sky"});
-  p.shadowed.land = create(ctx, p.layout, color_format, depth_format,
-                           {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true,
-                            .shadows = true, .name = "land, shadowed"});
-  p.shadowed.water = create(ctx, p.layout, color_format, depth_format,
-                            {.vert = water_vert_spirv(), .frag = water_frag_spirv(), .shadows = true,
-                             .name = "water, shadowed"});
-  p.shadowed.water_reflect = create(ctx, p.layout, color_format, depth_format,
-                                    {.vert = water_vert_spirv(), .frag = water_reflect_frag_spirv(), .shadows = true,
-                                     .name = "water, reflecting, shadowed"});
   if (ctx.physical().getFeatures().fillModeNonSolid)
     p.wire = create(ctx, p.layout, color_format, depth_format,
                     {.vert = water_vert_spirv(), .frag = water_wire_frag_spirv(), .lines = true, .name = "water LOD wireframe"});

@@ -5,13 +5,17 @@
 //  - water: the surface pulled from the state and normal buffers by node index;
 //  - wire:  the same triangles as lines over the water (the LOD overlay); null when the device
 //           lacks fillModeNonSolid;
-//  - water_reflect: the water sampling the planar reflection (render/reflection_pass.h);
+//  - waters: the water for each set of effects (water_for): sampling the planar reflection
+//    (render/reflection_pass.h), lighting the floor with the caustics map (render/caustics_pass.h;
+//    POND_SPEC_CAUSTICS), sampling the sun's shadow map (render/shadow_pass.h; POND_SPEC_SHADOWS),
+//    so an effect that is off costs nothing;
 //  - land_mirror: the land above the water mirrored about y = 0, for the reflection's target;
 //  - sky:   a box standing on the land's outer edge (view::sky_box), drawn last (depth test, no
 //           write), so it shades only what nothing else covered;
-//  - shadowed: land, water and water_reflect again, sampling the sun's shadow map
-//           (render/shadow_pass.h; POND_SPEC_SHADOWS), used in frames that have one.
+//  - land_shadowed: the land sampling the sun's shadow map, used in frames that have one.
 // No culling: large splashes may fold the surface over.
+#include <vector>
+
 #include "gpu/context.h"
 
 namespace pond::render {
@@ -20,14 +24,19 @@ struct WaterPipelines {
   vk::raii::DescriptorSetLayout set_layout = nullptr;
   vk::raii::PipelineLayout layout = nullptr;
   vk::raii::Pipeline land = nullptr;
-  vk::raii::Pipeline water = nullptr;
-  vk::raii::Pipeline water_reflect = nullptr;
+  vk::raii::Pipeline land_shadowed = nullptr;
+  std::vector<vk::raii::Pipeline> waters;  // by water_variant()
   vk::raii::Pipeline land_mirror = nullptr;
   vk::raii::Pipeline wire = nullptr;
   vk::raii::Pipeline sky = nullptr;
-  struct {
-    vk::raii::Pipeline land = nullptr, water = nullptr, water_reflect = nullptr;
-  } shadowed;
+
+  // The index in `waters` of the water drawn with these effects.
+  static std::size_t water_variant(bool reflections, bool caustics, bool shadows) {
+    return (reflections ? 1u : 0u) | (caustics ? 2u : 0u) | (shadows ? 4u : 0u);
+  }
+  const vk::raii::Pipeline& water_for(bool reflections, bool caustics, bool shadows) const {
+    return waters[water_variant(reflections, caustics, shadows)];
+  }
 };
 
 WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format);

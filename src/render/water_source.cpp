@@ -22,9 +22,11 @@ WaterSource::WaterSource(const gpu::Context& ctx, sim::Solver& solver, std::uint
   } else {
     const std::size_t stride = gpu::state_stride(model.nodes());  // compact: the rows cols nodes apart
     for (std::uint32_t s = 0; s < slots; ++s) {
-      slot_state_.push_back(gpu::create_buffer(ctx, 3 * stride * sizeof(float), BU::eStorageBuffer, gpu::MemoryUse::upload,
+      // Storage buffers for the water's vertex shader, texel buffers for the caustics pass.
+      const auto usage = BU::eStorageBuffer | BU::eUniformTexelBuffer;
+      slot_state_.push_back(gpu::create_buffer(ctx, 3 * stride * sizeof(float), usage, gpu::MemoryUse::upload,
                                           "CPU water state, slot " + std::to_string(s)));
-      slot_normals_.push_back(gpu::create_buffer(ctx, model.nodes() * 4 * sizeof(float), BU::eStorageBuffer,
+      slot_normals_.push_back(gpu::create_buffer(ctx, model.nodes() * 4 * sizeof(float), usage,
                                             gpu::MemoryUse::upload, "CPU water normals, slot " + std::to_string(s)));
     }
   }

@@ -15,15 +15,14 @@ std::string number_text(double v) {
 }
 
 // A world position [x, y, z] must lie over the grid: x in [0, (cols-1) h], z in [0, (rows-1) h].
-void check_over_grid(JsonFields& f, const char* key, const std::array<double, 3>& p, const sim::GridSpec& g) {
+std::optional<std::string> off_grid(const std::array<double, 3>& p, const sim::GridSpec& g) {
   const double max_x = (g.cols - 1) * g.spacing, max_z = (g.rows - 1) * g.spacing;
-  if (!(p[0] >= 0.0 && p[0] <= max_x && p[2] >= 0.0 && p[2] <= max_z))
-    f.fail(key, "is outside the grid: x must be in [0, " + number_text(max_x) + "] and z in [0, " +
-                    number_text(max_z) + "]");
+  if (p[0] >= 0.0 && p[0] <= max_x && p[2] >= 0.0 && p[2] <= max_z) return std::nullopt;
+  return "is outside the grid: x must be in [0, " + number_text(max_x) + "] and z in [0, " + number_text(max_z) + "]";
 }
 
 // "path": [[step, x, y, z], ...], steps integers >= 0 in increasing order.
-std::vector<sim::PathKey> parse_path(JsonFields& f, const sim::GridSpec& g) {
+std::vector<sim::PathKey> parse_path(JsonFields& f) {
   if (!f.has("path")) f.fail("path", "is missing (a kinematic body follows a path of [step, x, y, z] keys)");
   const auto& keys = f.array("path");
   if (keys.empty()) f.fail("path", "is empty");
@@ -43,7 +42,6 @@ std::vector<sim::PathKey> parse_path(JsonFields& f, const sim::GridSpec& g) {
     if (!path.empty() && p.step <= path.back().step)
       f.fail(key.c_str(), "has step " + std::to_string(p.step) + ", not after the key before it (step " +
                               std::to_string(path.back().step) + "): steps must increase");
-    check_over_grid(f, key.c_str(), p.position, g);
     path.push_back(p);
   }
   return path;
@@ -59,28 +57,39 @@ sim::BodySpec parse_body(JsonFields f, const sim::GridSpec& g) {
                                                                                     : sim::BodyMotion::floating;
   if (!f.has("radius")) f.fail("radius", "is missing");
   b.radius = f.number("radius", b.radius);
-  if (!(b.radius > 0.0)) f.fail("radius", "must be positive");
-  if (!(b.radius >= g.spacing))
-    f.fail("radius", "is " + number_text(b.radius) + ", less than the grid spacing " + number_text(g.spacing) +
-                         ": a smaller sphere slips between the nodes");
-  if (!(b.radius <= 0.25 * std::max(g.rows, g.cols) * g.spacing))
-    f.fail("radius", "is " + number_text(b.radius) + ", more than a quarter of the grid's extent");
   if (b.motion == sim::BodyMotion::floating) {
     if (f.has("path")) f.fail("path", "is for kinematic bodies (this one is floating)");
     if (!f.has("mass")) f.fail("mass", "is missing (a floating body needs one)");
     b.mass = f.number("mass", b.mass);
-    if (!(b.mass > 0.0 && std::isfinite(b.mass))) f.fail("mass", "must be positive");
     if (!f.has("position")) f.fail("position", "is missing");
     b.position = f.vec3("position", b.position);
-    check_over_grid(f, "position", b.position, g);
     b.velocity = f.vec3("velocity", b.velocity);
   } else {
     for (const char* key : {"mass", "position", "velocity"})
       if (f.has(key)) f.fail(key, "is for floating bodies (this one is kinematic and follows its path)");
-    b.path = parse_path(f, g);
+    b.path = parse_path(f);
   }
+  if (const std::optional<Problem> problem = body_problem(b, g)) f.fail(problem->key.c_str(), problem->what);
   f.finish();
   return b;
+}
+
+std::optional<Problem> body_problem(const sim::BodySpec& b, const sim::GridSpec& g) {
+  if (!(b.radius > 0.0)) return Problem{"radius", "must be positive"};
+  if (!(b.radius >= g.spacing))
+    return Problem{"radius", "is " + number_text(b.radius) + ", less than the grid spacing " + number_text(g.spacing) +
+                                 ": a smaller sphere slips between the nodes"};
+  if (!(b.radius <= 0.25 * std::max(g.rows, g.cols) * g.spacing))
+    return Problem{"radius", "is " + number_text(b.radius) + ", more than a quarter of the grid's extent"};
+  if (b.motion == sim::BodyMotion::floating) {
+    if (!(b.mass > 0.0 && std::isfinite(b.mass))) return Problem{"mass", "must be positive"};
+    if (const std::optional<std::string> what = off_grid(b.position, g)) return Problem{"position", *what};
+  }
+  if (b.motion == sim::BodyMotion::kinematic && b.path.empty()) return Problem{"path", "is empty"};
+  for (std::size_t k = 0; k < b.path.size(); ++k)
+    if (const std::optional<std::string> what = off_grid(b.path[k].position, g))
+      return Problem{"path[" + std::to_string(k) + "]", *what};
+  return std::nullopt;
 }
 
 }  // namespace pond::scene

@@ -133,6 +133,7 @@ void parse_view(JsonFields f, ViewSpec& v) {
   v.land_height = f.number("land_height", v.land_height);
   if (!(v.land_height > 0.0)) f.fail("land_height", "must be positive");
   v.effects.reflections = f.boolean("reflections", v.effects.reflections);
+  v.effects.caustics = f.boolean("caustics", v.effects.caustics);
   v.effects.shadows = f.boolean("shadows", v.effects.shadows);
   f.finish();
 }

@@ -46,9 +46,9 @@ bool cpu_supports(Backend b) {
   switch (b) {
     case Backend::scalar: return true;
     case Backend::sse: return __builtin_cpu_supports("sse2");
-    case Backend::avx2: return step_rows_avx2(shared::kRsqrtStepsExact) != nullptr && __builtin_cpu_supports("avx2");
+    case Backend::avx2: return step_rows_avx2(shared::kRsqrtStepsExact, false) != nullptr && __builtin_cpu_supports("avx2");
     case Backend::avx512:
-      return step_rows_avx512(shared::kRsqrtStepsExact) != nullptr && __builtin_cpu_supports("avx512f");
+      return step_rows_avx512(shared::kRsqrtStepsExact, false) != nullptr && __builtin_cpu_supports("avx512f");
   }
   return false;
 }
@@ -76,9 +76,9 @@ std::optional<Backend> parse_backend(std::string_view name) {
   return std::nullopt;
 }
 
-StepRowsFn step_rows_for(Backend b, int rsqrt_steps) {
-  if ((b == Backend::avx2 && step_rows_avx2(rsqrt_steps) == nullptr) ||
-      (b == Backend::avx512 && step_rows_avx512(rsqrt_steps) == nullptr))
+StepRowsFn step_rows_for(Backend b, int rsqrt_steps, bool reach) {
+  if ((b == Backend::avx2 && step_rows_avx2(rsqrt_steps, reach) == nullptr) ||
+      (b == Backend::avx512 && step_rows_avx512(rsqrt_steps, reach) == nullptr))
     throw InputError(std::string("solver ") + backend_name(b) +
                      " is not in this build (IA-32 builds have scalar and sse)");
   if (!cpu_supports(b)) {
@@ -88,10 +88,10 @@ StepRowsFn step_rows_for(Backend b, int rsqrt_steps) {
                                 : "this CPU lacks " + feature));
   }
   switch (b) {
-    case Backend::scalar: return step_rows_scalar(rsqrt_steps);
-    case Backend::sse: return step_rows_sse2(rsqrt_steps);
-    case Backend::avx2: return step_rows_avx2(rsqrt_steps);
-    case Backend::avx512: return step_rows_avx512(rsqrt_steps);
+    case Backend::scalar: return step_rows_scalar(rsqrt_steps, reach);
+    case Backend::sse: return step_rows_sse2(rsqrt_steps, reach);
+    case Backend::avx2: return step_rows_avx2(rsqrt_steps, reach);
+    case Backend::avx512: return step_rows_avx512(rsqrt_steps, reach);
   }
   return nullptr;
 }

@@ -10,20 +10,22 @@ namespace pond::sim {
 
 enum class Backend { scalar, sse, avx2, avx512 };
 
-// A substep of rows [r0, r1) with a scratch of kSpringRows * kSlots floats.
-using StepRowsFn = float (*)(const StepView&, int r0, int r1, float* scratch);
+// A substep of rows [r0, r1) with a scratch of kSpringRows * kSlots floats. Returns the blow-up
+// check; a kernel that tracks the reach also stores the rows' largest |u'x|, |u'z| in *reach.
+using StepRowsFn = float (*)(const StepView&, int r0, int r1, float* scratch, float* reach);
 
-// The kernel of one backend for a number of Newton steps (shared::kRsqrtStepsExact or ...Fast).
-StepRowsFn step_rows_scalar(int rsqrt_steps);
-StepRowsFn step_rows_sse2(int rsqrt_steps);
-StepRowsFn step_rows_avx2(int rsqrt_steps);    // nullptr in builds without AVX2 (IA-32)
-StepRowsFn step_rows_avx512(int rsqrt_steps);  // nullptr in builds without AVX-512 (IA-32)
+// The kernel of one backend for a number of Newton steps (shared::kRsqrtStepsExact or ...Fast),
+// tracking the reach (scenes with bodies) or not.
+StepRowsFn step_rows_scalar(int rsqrt_steps, bool reach);
+StepRowsFn step_rows_sse2(int rsqrt_steps, bool reach);
+StepRowsFn step_rows_avx2(int rsqrt_steps, bool reach);    // nullptr in builds without AVX2 (IA-32)
+StepRowsFn step_rows_avx512(int rsqrt_steps, bool reach);  // nullptr in builds without AVX-512 (IA-32)
 
 // Tests hide CPU features with POND_CPU_FEATURES_MASK=avx2 (sse2|avx2|avx512f,...; wider ones go too).
 bool cpu_supports(Backend b);        // compiled in, supported by this CPU and not masked (line above)
 Backend best_backend();              // the widest supported
 const char* backend_name(Backend b);  // "scalar", "sse", "avx2", "avx512"
 std::optional<Backend> parse_backend(std::string_view name);
-StepRowsFn step_rows_for(Backend b, int rsqrt_steps);  // throws InputError naming the missing CPU feature
+StepRowsFn step_rows_for(Backend b, int rsqrt_steps, bool reach);  // throws InputError naming the missing CPU feature
 
 }  // namespace pond::sim

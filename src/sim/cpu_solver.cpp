@@ -18,7 +18,7 @@ constexpr std::size_t kMinNodesPerPart = 16384;
 }  // namespace
 
 CpuSolver::CpuSolver(WaterModel model, Backend backend, int threads)
-    : model_(std::move(model)), backend_(backend), kernel_(step_rows_for(backend, model_.constants.rsqrt_steps)) {
+    : model_(std::move(model)), backend_(backend), kernel_(step_rows_for(backend, model_.constants.rsqrt_steps, !model_.bodies.empty())) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const std::size_t by_size = std::max<std::size_t>(1, model_.nodes() / kMinNodesPerPart);
   parts_ = static_cast<int>(std::min<std::size_t>({static_cast<std::size_t>(threads), by_size,
@@ -26,6 +26,7 @@ CpuSolver::CpuSolver(WaterModel model, Backend backend, int threads)
   threads_ = std::make_unique<RowThreads>(parts_);
   for (int p = 0; p < parts_; ++p) scratch_.emplace_back(std::size_t{kSpringRows} * kSlots);
   checks_.resize(parts_);
+  reaches_.resize(parts_);
   cur_ = rest_state(model_);
   next_ = WaterState(model_.nodes());
 }
@@ -50,14 +51,16 @@ void CpuSolver::substep(int substep_index) {
   threads_->run(parts_, [&](int p) {
     const int r0 = static_cast<int>(static_cast<long long>(model_.rows) * p / parts_);
     const int r1 = static_cast<int>(static_cast<long long>(model_.rows) * (p + 1) / parts_);
-    checks_[p] = kernel_(v, r0, r1, scratch_[p].data());
+    checks_[p] = kernel_(v, r0, r1, scratch_[p].data(), &reaches_[p]);
   });
   std::swap(cur_, next_);
   cur_.bodies.swap(next_.bodies);  // the bodies live in the current state only
   for (float c : checks_)
     if (!std::isfinite(c)) throw_blow_up(cur_, model_, "step " + std::to_string(step_) + ": ");
   if (!model_.bodies.empty()) {
-    resolve_contacts(cur_, model_, step_, substep_index);
+    float reach = 0.0f;  // the largest horizontal displacement of any node
+    for (float r : reaches_) reach = r > reach ? r : reach;
+    resolve_contacts(cur_, model_, step_, substep_index, reach);
     if (first_blown_up_body(cur_)) throw_blow_up(cur_, model_, "step " + std::to_string(step_) + ": ");
   }
 }

@@ -45,6 +45,7 @@ class CpuSolver final : public Solver {
   WaterState cur_, next_;
   std::vector<AlignedBuffer<float>> scratch_;  // spring rows, one per part
   std::vector<float> checks_;                  // blow-up check of each part
+  std::vector<float> reaches_;                 // largest |ux|, |uz| of each part (with bodies)
   std::size_t next_perturbation_ = 0;
   std::int64_t step_ = 0;
 };

@@ -4,8 +4,5 @@
 #include "sim/wide_avx2.h"
 
 namespace pond::sim {
-StepRowsFn step_rows_avx2(int rsqrt_steps) {
-  return rsqrt_steps == shared::kRsqrtStepsFast ? &step_rows<WideAvx2, shared::kRsqrtStepsFast>
-                                                : &step_rows<WideAvx2, shared::kRsqrtStepsExact>;
-}
+StepRowsFn step_rows_avx2(int rsqrt_steps, bool reach) { return step_rows_of<WideAvx2>(rsqrt_steps, reach); }
 }  // namespace pond::sim

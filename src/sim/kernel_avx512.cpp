@@ -4,8 +4,5 @@
 #include "sim/wide_avx512.h"
 
 namespace pond::sim {
-StepRowsFn step_rows_avx512(int rsqrt_steps) {
-  return rsqrt_steps == shared::kRsqrtStepsFast ? &step_rows<WideAvx512, shared::kRsqrtStepsFast>
-                                                : &step_rows<WideAvx512, shared::kRsqrtStepsExact>;
-}
+StepRowsFn step_rows_avx512(int rsqrt_steps, bool reach) { return step_rows_of<WideAvx512>(rsqrt_steps, reach); }
 }  // namespace pond::sim

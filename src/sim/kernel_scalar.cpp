@@ -3,8 +3,5 @@
 #include "sim/wide_scalar.h"
 
 namespace pond::sim {
-StepRowsFn step_rows_scalar(int rsqrt_steps) {
-  return rsqrt_steps == shared::kRsqrtStepsFast ? &step_rows<WideScalar, shared::kRsqrtStepsFast>
-                                                : &step_rows<WideScalar, shared::kRsqrtStepsExact>;
-}
+StepRowsFn step_rows_scalar(int rsqrt_steps, bool reach) { return step_rows_of<WideScalar>(rsqrt_steps, reach); }
 }  // namespace pond::sim

@@ -3,8 +3,5 @@
 #include "sim/wide_sse2.h"
 
 namespace pond::sim {
-StepRowsFn step_rows_sse2(int rsqrt_steps) {
-  return rsqrt_steps == shared::kRsqrtStepsFast ? &step_rows<WideSse2, shared::kRsqrtStepsFast>
-                                                : &step_rows<WideSse2, shared::kRsqrtStepsExact>;
-}
+StepRowsFn step_rows_sse2(int rsqrt_steps, bool reach) { return step_rows_of<WideSse2>(rsqrt_steps, reach); }
 }  // namespace pond::sim

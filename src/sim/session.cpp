@@ -4,6 +4,7 @@
 #include <array>
 
 #include "core/errors.h"
+#include "scene/body_fields.h"
 #include "sim/cpu_solver.h"
 #include "sim/diagnostics.h"
 #include "sim/perturbation.h"
@@ -120,16 +121,10 @@ void Session::set_solver(SolverChoice choice) {
 }
 
 void Session::add_body(const BodySpec& body) {
-  const double h = scene_.grid.spacing;
-  const double max_x = (scene_.grid.cols - 1) * h, max_z = (scene_.grid.rows - 1) * h;
-  if (scene_.bodies.size() >= 64) throw InputError("a scene holds at most 64 bodies");
-  if (!(body.radius >= h)) throw InputError("a body's radius must be at least the grid spacing");
-  if (body.motion == BodyMotion::floating && !(body.mass > 0.0)) throw InputError("a body's mass must be positive");
-  const auto& p = body.motion == BodyMotion::floating ? body.position
-                  : body.path.empty()                  ? body.position
-                                                       : body.path.front().position;
-  if (!(p[0] >= 0.0 && p[0] <= max_x && p[2] >= 0.0 && p[2] <= max_z))
-    throw InputError("a body must lie over the grid");
+  if (scene_.bodies.size() >= scene::kMaxBodies)
+    throw InputError("a scene holds at most " + std::to_string(scene::kMaxBodies) + " bodies");
+  if (const std::optional<scene::Problem> p = scene::body_problem(body, scene_.grid))
+    throw InputError("bodies[" + std::to_string(scene_.bodies.size()) + "]." + p->key + " " + p->what);
   WaterState state = solver_->read_state();
   const std::int64_t steps = solver_->steps_done();
   scene_.bodies.push_back(body);

@@ -30,6 +30,7 @@
 #include <utility>
 
 #include "shared/exact_math.h"
+#include "sim/backends.h"
 #include "sim/isa_namespace.h"
 #include "sim/step_view.h"
 #include "sim/wide_scalar.h"
@@ -271,11 +272,12 @@ POND_KERNEL_INLINE void block_springs(const StepView& view, int i, int block_beg
 }
 
 // Sums the spring terms of nodes [j, j + width) of row i in canonical order and integrates them.
-// Returns `check` plus the new velocity components (non-finite iff the step blew up).
-template <class W>
+// Returns `check` plus the new velocity components (non-finite iff the step blew up). With Reach,
+// `reach` also takes the largest |u'x| and |u'z| (the bodies' contact needs that bound).
+template <class W, bool Reach>
 POND_KERNEL_INLINE typename W::F integrate_at(const StepView& view, int i, int j, int block_begin,
                                               const float* scratch, int h_index, int below,
-                                              int above, typename W::F check) {
+                                              int above, typename W::F check, typename W::F& reach) {
   using F = typename W::F;
   const std::size_t n = static_cast<std::size_t>(i) * view.cols + j;
   const int slot = j - block_begin + 1;  // slot of column j
@@ -306,14 +308,28 @@ POND_KERNEL_INLINE typename W::F integrate_at(const StepView& view, int i, int j
     F new_v = W::add(old_v, W::sub(W::mul(sum, kc), W::mul(old_v, kd)));
     new_v = W::keep(axis == 1 ? free_v : free_h, new_v);
     W::store(out_vel[axis] + n, new_v);
-    W::store(out_pos[axis] + n, W::add(W::load(pos[axis] + n), W::mul(new_v, dt)));
+    const F new_u = W::add(W::load(pos[axis] + n), W::mul(new_v, dt));
+    W::store(out_pos[axis] + n, new_u);
+    if constexpr (Reach)
+      if (axis != 1) reach = W::max_abs(reach, new_u);
     check = W::add(check, new_v);
   }
   return check;
 }
 
-// The integration of row i of a block, chunk by chunk, with its blow-up check per chunk width.
+// The largest lane of v (the reach's, once per substep and part).
 template <class W>
+float max_lanes(typename W::F v) {
+  alignas(64) float lanes[W::width];
+  W::store(lanes, v);
+  float m = lanes[0];
+  for (float x : lanes) m = x > m ? x : m;
+  return m;
+}
+
+// The integration of row i of a block, chunk by chunk, with its blow-up check (and the reach of
+// the horizontal displacements) per chunk width.
+template <class W, bool Reach>
 struct RowIntegrate {
   using Half = typename W::Half;
   const StepView& view;
@@ -322,31 +338,40 @@ struct RowIntegrate {
   typename W::F check = W::set1(0.0f);
   typename Half::F half_check = Half::set1(0.0f);
   float tail_check = 0.0f;
+  typename W::F reach = W::set1(0.0f);
+  typename Half::F half_reach = Half::set1(0.0f);
+  float tail_reach = 0.0f;
 
   explicit RowIntegrate(const StepView& step_view) : view(step_view) {}
   template <class V, bool>
   POND_KERNEL_INLINE void operator()(int j) {
     if constexpr (V::width == W::width && W::width > 1)
-      check = integrate_at<W>(view, i, j, block_begin, scratch, h_index, below, above, check);
+      check = integrate_at<W, Reach>(view, i, j, block_begin, scratch, h_index, below, above, check, reach);
     else if constexpr (V::width == Half::width && Half::width > 1)
-      half_check =
-          integrate_at<Half>(view, i, j, block_begin, scratch, h_index, below, above, half_check);
+      half_check = integrate_at<Half, Reach>(view, i, j, block_begin, scratch, h_index, below, above,
+                                             half_check, half_reach);
     else
-      tail_check = integrate_at<WideScalar>(view, i, j, block_begin, scratch, h_index, below, above,
-                                            tail_check);
+      tail_check = integrate_at<WideScalar, Reach>(view, i, j, block_begin, scratch, h_index, below,
+                                                   above, tail_check, tail_reach);
   }
   float sum() const { return W::sum_lanes(check) + Half::sum_lanes(half_check) + tail_check; }
+  float max_reach() const {
+    const float a = max_lanes<W>(reach), b = max_lanes<Half>(half_reach);
+    const float m = a > b ? a : b;
+    return tail_reach > m ? tail_reach : m;
+  }
 };
 
 // One substep for rows [row_begin, row_end), block by block. Returns the sum of the new velocity
 // components of those rows (non-finite iff some velocity is non-finite or astronomically large).
+// With Reach it also stores in *reach the largest |u'x|, |u'z| of those rows (shared/bodies.h).
 //
 // The springs run one row ahead of the integration, so the spring rows row i reads were stored a
 // whole row earlier (a load that straddles two stores still in flight, as the j-1 terms do, cannot
 // be forwarded from them and waits).
-template <class W, int Steps>
-float step_rows(const StepView& view, int row_begin, int row_end, float* scratch_base) {
-  RowIntegrate<W> integrate(view);
+template <class W, int Steps, bool Reach>
+float step_rows(const StepView& view, int row_begin, int row_end, float* scratch_base, float* reach) {
+  RowIntegrate<W, Reach> integrate(view);
   for (int block_begin = 0; block_begin < view.cols; block_begin += kBlockCols) {
     const int block_end =
         block_begin + kBlockCols < view.cols ? block_begin + kBlockCols : view.cols;
@@ -381,7 +406,16 @@ float step_rows(const StepView& view, int row_begin, int row_end, float* scratch
       h_index = 1 - h_index;
     }
   }
+  if constexpr (Reach) *reach = integrate.max_reach();
   return integrate.sum();
+}
+
+// The kernel of backend W for a number of Newton steps, tracking the reach or not.
+template <class W>
+StepRowsFn step_rows_of(int rsqrt_steps, bool reach) {
+  constexpr int kFast = shared::kRsqrtStepsFast, kExact = shared::kRsqrtStepsExact;
+  if (rsqrt_steps == kFast) return reach ? &step_rows<W, kFast, true> : &step_rows<W, kFast, false>;
+  return reach ? &step_rows<W, kExact, true> : &step_rows<W, kExact, false>;
 }
 
 }  // namespace POND_ISA

@@ -32,6 +32,7 @@ struct WideAvx2 {
     return _mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_set1_epi32(limit), k));
   }
   static F keep(M m, F v) { return _mm256_and_ps(m, v); }
+  static F max_abs(F acc, F v) { return _mm256_max_ps(_mm256_andnot_ps(_mm256_set1_ps(-0.0f), v), acc); }
   static float sum_lanes(F v) {
     alignas(32) float l[8];
     _mm256_store_ps(l, v);

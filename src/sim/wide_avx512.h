@@ -37,6 +37,10 @@ struct WideAvx512 {
     return _mm512_cmplt_epi32_mask(k, _mm512_set1_epi32(limit));
   }
   static F keep(M m, F v) { return _mm512_maskz_mov_ps(m, v); }  // +0 where not m
+  static F max_abs(F acc, F v) {
+    const __m512 a = _mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(v), _mm512_set1_epi32(INT32_MAX)));
+    return _mm512_maskz_max_ps(0xffff, a, acc);  // the masked form: see rsqrt_seed
+  }
   static float sum_lanes(F v) {
     alignas(64) float l[16];
     _mm512_store_ps(l, v);

@@ -34,6 +34,11 @@ struct WideScalar {
   }
   // v where m, else +0 (a bitwise and: exact, and a constrained component becomes +0).
   static F keep(M m, F v) { return std::bit_cast<float>(std::bit_cast<std::uint32_t>(v) & m); }
+  // max(acc, |v|): the running bound of the horizontal displacements (only an upper bound matters).
+  static F max_abs(F acc, F v) {
+    const F a = std::bit_cast<float>(std::bit_cast<std::uint32_t>(v) & 0x7fffffffu);
+    return a > acc ? a : acc;
+  }
   static float sum_lanes(F v) { return v; }
 };
 

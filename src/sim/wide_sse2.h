@@ -35,6 +35,7 @@ struct WideSse2 {
     return _mm_castsi128_ps(_mm_cmplt_epi32(k, _mm_set1_epi32(limit)));
   }
   static F keep(M m, F v) { return _mm_and_ps(m, v); }
+  static F max_abs(F acc, F v) { return _mm_max_ps(_mm_andnot_ps(_mm_set1_ps(-0.0f), v), acc); }
   static float sum_lanes(F v) {
     alignas(16) float l[4];
     _mm_store_ps(l, v);

@@ -17,6 +17,7 @@ struct CameraSpec {
 // The picture's optional effects (the scene's "view" keys of the same names; FrameView::effects).
 struct Effects {
   bool reflections = true;  // planar reflection of the land and the trees in the water
+  bool caustics = true;     // the sun's light focused by the waves on the pool floor
   bool shadows = true;      // the sun's shadows of the trees and the bodies on the land and the water
 };
 
@@ -26,7 +27,7 @@ struct ViewSpec {
   double lod_tolerance_px = 1.0;     // LOD screen-space error bound; 0 = the full mesh
   double floor_depth = 3.0;          // the pool floor lies this far below the rest surface
   double land_height = 1.0;          // shore, islands and pool rim rise this far above it
-  Effects effects;                   // "reflections", "shadows": true | false
+  Effects effects;                   // "reflections", "caustics", "shadows": true | false
 };
 
 // "lighting": the sun and the colours the water shader mixes (linear RGB in [0, 1]).

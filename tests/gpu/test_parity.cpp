@@ -25,6 +25,7 @@
 #include "sim/diagnostics.h"
 #include "sim/normals.h"
 #include "scene/scene.h"
+#include "sim/shifted_pool.h"
 
 namespace pond::test {
 namespace {
@@ -202,6 +203,25 @@ TEST_F(GpuTest, NoNodeIsInsideABodyOnTheGpu) {
     }
   }
   EXPECT_GT(touching, 100);
+}
+
+// A node pulled sideways far past radius + 1 spacing (tests/sim/shifted_pool.h) is found by its
+// actual position on the GPU too (the step shader's reach), with the CPU's bits.
+TEST_F(GpuTest, ANodePulledFarSidewaysIsStillPushedOutOnTheGpu) {
+  const ShiftedPool pool = shifted_pool();
+  sim::CpuSolver cpu(pool.model, sim::Backend::scalar, 1);
+  cpu.set_state(pool.state, 0);
+  cpu.advance(1);
+  gpu::GpuSolver gpu(ctx(), pool.model);
+  gpu.set_state(pool.state, 0);
+  gpu.advance(1);
+  const sim::WaterState s = gpu.read_state();
+  const std::size_t node = static_cast<std::size_t>(ShiftedPool::kRow) * pool.model.cols + ShiftedPool::kCol;
+  EXPECT_NEAR(s.uy[node], 0.5 - std::sqrt(9.0 - 0.25), 1e-5) << "pushed to the ball's lower cap";
+  EXPECT_EQ(sim::state_hash(s, pool.model), sim::state_hash(cpu.state(), pool.model));
+  ASSERT_EQ(s.bodies.size(), 1u);
+  EXPECT_EQ(std::memcmp(s.bodies.data(), cpu.state().bodies.data(), sizeof(sim::BodyState)), 0)
+      << "GPU body vy " << s.bodies[0].vy << ", CPU " << cpu.state().bodies[0].vy;
 }
 
 // The contact shader's workgroup follows the device's subgroup size (llvmpipe 8; the test layer

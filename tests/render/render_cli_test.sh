@@ -11,6 +11,7 @@ failures=0
 "$pond" render --steps 10 --frames 2 --size 96x64 --out "$work/ok.png" --validation > "$work/stdout" 2> "$work/stderr"
 code=$?
 if [ $code -ne 0 ] || ! grep -q "ms per frame (median of 2)" "$work/stdout" || ! grep -q "triangles: water" "$work/stdout" ||
+   ! grep -q "effect caustics: " "$work/stdout" ||
    [ "$(head -c 4 "$work/ok.png" | tail -c 3)" != PNG ]; then
   echo "FAIL (good run): exit $code, stdout: $(cat "$work/stdout"), stderr: $(cat "$work/stderr")"
   failures=$((failures + 1))
@@ -31,6 +32,7 @@ expect_code() {  # expect_code CODE WORD ARGS...: exit CODE, one stderr line con
 out="--out $work/out.png"
 printf '{"grid": {"rows": 1}}' > "$work/bad_scene.json"
 printf '{"camera": {"eye": [0, 1], "target": [0, 0, 0]}}' > "$work/bad_camera.json"
+printf '{"view": {"caustics": "yes"}}' > "$work/bad_caustics.json"
 expect_code 2 "beyond the device" --steps 1 --size 20000x64 $out
 expect_code 2 "WIDTHxHEIGHT" --steps 1 --size 64 $out
 expect_code 2 "--steps" --size 64x64 $out
@@ -41,6 +43,7 @@ expect_code 2 "--lod-tolerance" --steps 1 --size 64x64 --lod-tolerance -1 $out
 expect_code 2 "--solver" --steps 1 --size 64x64 --solver cuda $out
 expect_code 2 "grid.rows" --steps 1 --size 64x64 --scene "$work/bad_scene.json" $out
 expect_code 2 "camera.eye" --steps 1 --size 64x64 --scene "$work/bad_camera.json" $out
+expect_code 2 "view.caustics" --steps 1 --size 64x64 --scene "$work/bad_caustics.json" $out
 expect_code 2 "does not exist" --steps 1 --size 64x64 --out "$work/missing/dir/out.png"
 VK_ICD_FILENAMES=/nonexistent.json expect_code 1 "vulkan" --steps 1 --size 64x64 $out
 

@@ -76,6 +76,7 @@ class BodyRenderTest : public GpuTest {
     view.camera = d.loop.default_camera(kWidth, kHeight);
     view.lod_tolerance_px = tolerance;
     view.effects.reflections = reflections;
+    view.effects.caustics = false;  // the bodies and the LOD's dents, not the floor's light
     view.steps = 0;
     view.wait = true;
     d.loop.frame(target.frame_target(), view);

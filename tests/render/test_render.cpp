@@ -1,5 +1,6 @@
 // Golden images of the water renderer on lavapipe (labels image, gpu), validation on (any message
-// fails). Each case renders 256x160 through the same FrameLoop `pond render` and the demo use.
+// fails). Each case renders 256x160 through the same FrameLoop `pond render` and the demo use,
+// without caustics (test_caustics.cpp).
 //
 // Tolerance: an image matches its golden when at most kGoldenShare of its pixels differ by more than
 // kGoldenLevels (of 255) in some channel; a failure writes <name>.actual.png and <name>.diff.png (red =
@@ -36,6 +37,7 @@ struct RenderCase {
   sim::SolverChoice solver{};
   std::string json{};  // empty: the embedded default scene
   vk::Format format = render::RenderTarget::kFormat;
+  bool caustics = false;
 };
 
 // The scenes: the embedded default (island + splash), and small variations of it.
@@ -72,6 +74,9 @@ class RenderTest : public GpuTest {
     view.camera = loop.default_camera(kWidth, kHeight);
     view.lod_tolerance_px = c.tolerance;
     view.wireframe = c.wireframe;
+    // The goldens are the picture without caustics, as before they existed: `view.caustics`
+    // false gives the old picture (test_caustics.cpp has the pictures with them).
+    view.effects.caustics = c.caustics;
     view.steps = 0;
     view.wait = true;
     last_ = loop.frame(target.frame_target(), view);
@@ -132,8 +137,9 @@ TEST_F(RenderTest, LodWireframeOverlay) {
 // The CPU solver gives the GPU's bits (the parity suite), so the frame loop must draw the same
 // picture from either, and switching solvers mid-run carries the state over.
 TEST_F(RenderTest, CpuSolverDrawsTheSamePictureAndSwitchingCarriesTheState) {
-  const Rgba gpu_img = render({.steps = 24});
-  const Rgba cpu_img = render({.steps = 24, .solver = {.gpu = false}});
+  // With caustics: their pass reads the water's buffers too, which a switch replaces.
+  const Rgba gpu_img = render({.steps = 24, .caustics = true});
+  const Rgba cpu_img = render({.steps = 24, .solver = {.gpu = false}, .caustics = true});
   EXPECT_EQ(compare(gpu_img, cpu_img, 0).share, 0.0);
 
   const scene::Scene scene = scene::load_scene("");

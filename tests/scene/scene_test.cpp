@@ -157,7 +157,8 @@ TEST(Scene, UnstableTimeStepIsRefusedWithTheBound) {
 TEST(Scene, RenderKeysParse) {
   const Scene s = parse_scene(R"({"camera": {"eye": [1, 2, 3], "target": [4, 0, 5], "fovy": 50},
                                   "view": {"steps_per_frame": 3, "lod_tolerance": 0, "floor_depth": 2.5,
-                                           "land_height": 1, "reflections": false, "shadows": false},
+                                           "land_height": 1, "reflections": false, "caustics": false,
+                                           "shadows": false},
                                   "lighting": {"sun": [0, 1, 0], "water": [0, 0.1, 0.2], "sky": [1, 1, 1],
                                                "ground": [0.5, 0.5, 0.5]}})",
                               "x");
@@ -170,6 +171,7 @@ TEST(Scene, RenderKeysParse) {
   EXPECT_EQ(s.view.floor_depth, 2.5);
   EXPECT_EQ(s.view.land_height, 1);
   EXPECT_FALSE(s.view.effects.reflections);
+  EXPECT_FALSE(s.view.effects.caustics);
   EXPECT_FALSE(s.view.effects.shadows);
   EXPECT_EQ(s.lighting.sun, (std::array<double, 3>{0, 1, 0}));
   EXPECT_EQ(s.lighting.sky, (std::array<double, 3>{1, 1, 1}));
@@ -179,6 +181,7 @@ TEST(Scene, RenderKeysParse) {
   EXPECT_EQ(d.view.steps_per_frame, ViewSpec{}.steps_per_frame);
   EXPECT_EQ(d.view.lod_tolerance_px, ViewSpec{}.lod_tolerance_px);
   EXPECT_TRUE(d.view.effects.reflections);  // the effects default on
+  EXPECT_TRUE(d.view.effects.caustics);
   EXPECT_TRUE(d.view.effects.shadows);
 }
 
@@ -205,6 +208,8 @@ TEST(Scene, RenderKeyErrorsNameThePath) {
   EXPECT_TRUE(has(R"({"view": {"wireframe": true}})", "view.wireframe is not a known key"));
   EXPECT_TRUE(has(R"({"view": {"reflections": 1}})", "view.reflections must be true or false, not a number"));
   EXPECT_TRUE(has(R"({"view": {"reflections": "on"}})", "view.reflections must be true or false, not a string"));
+  EXPECT_TRUE(has(R"({"view": {"caustics": 0}})", "view.caustics must be true or false, not a number"));
+  EXPECT_TRUE(has(R"({"view": {"caustics": null}})", "view.caustics must be true or false"));
   EXPECT_TRUE(has(R"({"view": {"shadows": 0}})", "view.shadows must be true or false, not a number"));
   EXPECT_TRUE(has(R"({"view": {"shadows": null}})", "view.shadows must be true or false"));
   EXPECT_TRUE(has(R"({"lighting": {"sun": [0, 0, 0]}})", "lighting.sun must not be zero"));

@@ -12,6 +12,7 @@
 #include "sim/contact.h"
 #include "sim/cpu_solver.h"
 #include "sim/diagnostics.h"
+#include "shifted_pool.h"
 #include "test_util.h"
 
 namespace pond {
@@ -121,6 +122,36 @@ TEST(Bodies, EveryBackendAndThreadCountGivesTheSameBits) {
   }
 }
 
+// A node pulled sideways by more than a spacing past radius + 1 (tests/sim/shifted_pool.h) is
+// still found by its actual position and pushed out, on every backend, with the same bits.
+TEST(Bodies, ANodePulledFarSidewaysIsStillPushedOut) {
+  const test::ShiftedPool pool = test::shifted_pool();
+  const WaterModel& m = pool.model;
+  const std::size_t node = static_cast<std::size_t>(test::ShiftedPool::kRow) * m.cols + test::ShiftedPool::kCol;
+  // A footprint of radius + 1 around the ball ends at column ceil(20 + 3) + 1 = 24.
+  ASSERT_GT(test::ShiftedPool::kCol, 24 + 1);
+  ASSERT_LT(std::fabs(test::ShiftedPool::kCol + test::ShiftedPool::kShift - 20.0), 1.0) << "the node is under the ball";
+  WaterState narrow = pool.state;  // what a footprint of radius + 1 (a reach of 0) leaves
+  sim::resolve_contacts(narrow, m, 0, 0, 0.0f);
+  EXPECT_GT(penetration(narrow, m).deepest, 0.5) << "a footprint of radius + 1 must miss the node";
+  CpuSolver reference(m, Backend::scalar, 1);
+  reference.set_state(pool.state, 0);
+  reference.advance(1);
+  EXPECT_LT(penetration(reference.state(), m).deepest, 1e-5);
+  // Pushed to the lower cap: 0.5 - sqrt(9 - 0.5^2), not left at -0.2 inside the ball.
+  EXPECT_NEAR(reference.state().uy[node], 0.5 - std::sqrt(9.0 - 0.25), 1e-5);
+  EXPECT_NEAR(reference.state().vy[node], reference.state().bodies[0].vy + m.bodies[0].constants.gravity_dt, 1e-6);
+  for (Backend backend : test::available_backends())
+    for (int threads : {1, 2}) {
+      CpuSolver solver(m, backend, threads);
+      solver.set_state(pool.state, 0);
+      solver.advance(1);
+      EXPECT_EQ(sim::state_hash(solver.state(), m), sim::state_hash(reference.state(), m))
+          << sim::backend_name(backend) << " x " << threads;
+      EXPECT_TRUE(same_bits(solver.state(), reference.state())) << sim::backend_name(backend) << " x " << threads;
+    }
+}
+
 // Vertical momentum in node-mass units: sum(vy) + vy_body / (m / M).
 double momentum(const WaterState& s, const WaterModel& m) {
   double p = 0;
@@ -138,7 +169,7 @@ TEST(Bodies, TheContactTradesMomentumBetweenWaterAndBody) {
   WaterState state = sim::rest_state(m);
   for (std::size_t n = 0; n < state.nodes(); ++n) state.vy[n] = 0.01f * static_cast<float>(n % 7);
   const double before = momentum(state, m);
-  sim::resolve_contacts(state, m, 0, 0);
+  sim::resolve_contacts(state, m, 0, 0, sim::horizontal_reach(state));
   const double gravity = m.bodies[0].constants.gravity_dt / static_cast<double>(m.bodies[0].constants.node_over_body);
   const double moved = std::fabs(state.bodies[0].vy - (-0.8f - m.bodies[0].constants.gravity_dt));  // as if in air
   EXPECT_GT(moved, 0.1) << "the body must have hit the water";

@@ -186,6 +186,12 @@ TEST(Session, BodiesAreAddedDraggedReleasedAndRemoved) {
   BodySpec tiny = ball;
   tiny.radius = 0.5;
   EXPECT_THROW(session.add_body(tiny), InputError);
+  try {  // the scene file's check (scene::body_problem), naming the key the body would have
+    session.add_body(tiny);
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bodies[2].radius is 0.5, less than the grid spacing 1"), std::string::npos)
+        << e.what();
+  }
   EXPECT_EQ(session.bodies().size(), 2u);
 
   session.drag_body(1, {20.0, 1.0, 20.0}, 10);

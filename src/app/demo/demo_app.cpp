@@ -208,6 +208,7 @@ void DemoApp::on_action(Action action) {
       break;
     case Action::wireframe: settings_.wireframe = !settings_.wireframe; break;
     case Action::reflections: settings_.effects.reflections = !settings_.effects.reflections; break;
+    case Action::caustics: settings_.effects.caustics = !settings_.effects.caustics; break;
     case Action::shadows: settings_.effects.shadows = !settings_.effects.shadows; break;
     case Action::tau_up: settings_.lod_tolerance_px = next_tolerance(settings_.lod_tolerance_px, true); break;
     case Action::tau_down: settings_.lod_tolerance_px = next_tolerance(settings_.lod_tolerance_px, false); break;

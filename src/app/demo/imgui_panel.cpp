@@ -134,6 +134,8 @@ PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, render::TreeDr
     ImGui::Checkbox("wireframe (W)", &s.wireframe);
     ImGui::Checkbox("reflections (M)", &s.effects.reflections);
     ImGui::SameLine();
+    ImGui::Checkbox("caustics (K)", &s.effects.caustics);
+    ImGui::SameLine();
     ImGui::Checkbox("vsync (F3)", &s.vsync);
     ImGui::Checkbox("shadows (L)", &s.effects.shadows);
     if (ImGui::Button("reset camera (C)")) req.reset_camera = true;

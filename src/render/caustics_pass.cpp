@@ -1,0 +1,196 @@
+#include "render/caustics_pass.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "render/render_shaders.h"
+
+namespace pond::render {
+namespace {
+
+using S = vk::PipelineStageFlagBits2;
+using A = vk::AccessFlagBits2;
+using L = vk::ImageLayout;
+namespace cs = shared::caustics;
+
+constexpr vk::ImageSubresourceRange kColor{.aspectMask = vk::ImageAspectFlagBits::eColor, .baseMipLevel = 0,
+                                           .levelCount = 1, .baseArrayLayer = 0, .layerCount = 1};
+
+vk::ImageMemoryBarrier2 map_barrier(vk::Image image, L from, L to, vk::PipelineStageFlags2 src_stage,
+                                    vk::AccessFlags2 src_access, vk::PipelineStageFlags2 dst_stage,
+                                    vk::AccessFlags2 dst_access) {
+  return {.srcStageMask = src_stage, .srcAccessMask = src_access, .dstStageMask = dst_stage, .dstAccessMask = dst_access,
+          .oldLayout = from, .newLayout = to, .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+          .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .image = image, .subresourceRange = kColor};
+}
+
+// Where calm water's refracted sun ray lands, per unit of depth (grid units): refract(-sun, +y)
+// has xz = -sun.xz / ior and y = -sqrt(1 - (1 - sun.y^2) / ior^2).
+std::array<double, 2> calm_offset_per_depth(const std::array<double, 3>& sun) {
+  const double eta = 1.0 / cs::kWaterIor;
+  const double down = std::sqrt(std::max(1.0 - eta * eta * (1.0 - sun[1] * sun[1]), 1e-6));
+  return {-eta * sun[0] / down, -eta * sun[2] / down};
+}
+
+constexpr vk::DescriptorType kBindings[] = {vk::DescriptorType::eUniformTexelBuffer,
+                                            vk::DescriptorType::eUniformTexelBuffer, vk::DescriptorType::eStorageImage};
+static_assert(std::size(kBindings) == POND_CAUSTICS_BINDINGS && POND_CAUSTICS_BINDING_STATE == 0 &&
+              POND_CAUSTICS_BINDING_NORMALS == 1 && POND_CAUSTICS_BINDING_MAP == 2);
+
+}  // namespace
+
+vk::Extent2D caustics_rays(int rows, int cols) {
+  auto side = [](int nodes) {
+    const int cells = std::max(nodes - 1, 1);
+    const int every = (cells + cs::kCausticsRays - 1) / cs::kCausticsRays;  // nodes per ray
+    return static_cast<std::uint32_t>((cells + every - 1) / every + 1);
+  };
+  return {side(cols), side(rows)};
+}
+
+vk::Extent2D caustics_extent(int rows, int cols) {
+  const vk::Extent2D rays = caustics_rays(rows, cols);
+  const std::uint32_t cells = std::max(rays.width, rays.height) - 1;
+  const std::uint32_t per_cell = std::max<std::uint32_t>(1, cs::kCausticsTexels / cells);
+  return {(rays.width - 1) * per_cell, (rays.height - 1) * per_cell};
+}
+
+float caustics_direct_share(const std::array<double, 3>& sun) {
+  const double direct = (1.0 - cs::kFloorAmbient) * std::max(sun[1], 0.0);
+  return static_cast<float>(direct / (cs::kFloorAmbient + direct));
+}
+
+CausticsPush caustics_push(const sim::WaterModel& model, const std::array<double, 3>& sun, double floor_depth,
+                           std::uint32_t stride, std::uint32_t pitch) {
+  const double depth = floor_depth / model.spacing;  // grid units
+  const std::array<double, 2> c = calm_offset_per_depth(sun);
+  const vk::Extent2D e = caustics_extent(model.rows, model.cols), rays = caustics_rays(model.rows, model.cols);
+  CausticsPush p;
+  p.sun = {static_cast<float>(sun[0]), static_cast<float>(sun[1]), static_cast<float>(sun[2]), static_cast<float>(depth)};
+  p.light = {static_cast<float>(c[0] * depth), static_cast<float>(c[1] * depth), caustics_direct_share(sun), cs::kMaxFocus};
+  p.grid = {static_cast<std::uint32_t>(model.rows), static_cast<std::uint32_t>(model.cols), stride, pitch};
+  p.map = {e.width, e.height, rays.width, rays.height};
+  p.coarse = {static_cast<float>(model.cols - 1) / static_cast<float>(rays.width - 1),
+              static_cast<float>(model.rows - 1) / static_cast<float>(rays.height - 1), 0.0f, 0.0f};
+  return p;
+}
+
+std::array<float, 4> caustics_lookup(const sim::WaterModel& model, const std::array<double, 3>& sun) {
+  // uv = (p.xz / h - c * depth / h) / (cols - 1, rows - 1), depth = -p.y (world), c per unit depth.
+  const std::array<double, 2> c = calm_offset_per_depth(sun);
+  const double h = model.spacing;
+  const double sx = 1.0 / (h * (model.cols - 1)), sz = 1.0 / (h * (model.rows - 1));
+  return {static_cast<float>(sx), static_cast<float>(sz), static_cast<float>(c[0] * sx), static_cast<float>(c[1] * sz)};
+}
+
+CausticsPass::CausticsPass(const gpu::Context& ctx, const sim::WaterModel& model, std::uint32_t slots)
+    : ctx_(ctx), pipeline_(gpu::create_compute_pipeline(ctx, caustics_comp_spirv(), kBindings, sizeof(CausticsPush), {},
+                                                        "caustics")) {
+  const vk::DescriptorPoolSize sizes[] = {{.type = vk::DescriptorType::eUniformTexelBuffer, .descriptorCount = 2 * slots},
+                                          {.type = vk::DescriptorType::eStorageImage, .descriptorCount = slots}};
+  pool_ = vk::raii::DescriptorPool(ctx.device(), vk::DescriptorPoolCreateInfo{
+                                                     .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
+                                                     .maxSets = slots, .poolSizeCount = 2, .pPoolSizes = sizes});
+  const vk::Extent2D extent = caustics_extent(model.rows, model.cols);
+  using U = vk::ImageUsageFlagBits;
+  for (std::uint32_t k = 0; k < slots; ++k) {
+    Slot s;
+    const std::string n = ", slot " + std::to_string(k);
+    s.map = create_image(ctx, extent, kCausticsFormat, U::eStorage | U::eSampled | U::eTransferDst | U::eTransferSrc,
+                         vk::ImageAspectFlagBits::eColor, "caustics map" + n);
+    const vk::DescriptorSetLayout layout = *pipeline_.set_layout;
+    s.set = std::move(vk::raii::DescriptorSets(ctx.device(), vk::DescriptorSetAllocateInfo{
+                                                                 .descriptorPool = *pool_, .descriptorSetCount = 1,
+                                                                 .pSetLayouts = &layout})[0]);
+    slots_.push_back(std::move(s));
+  }
+  // Every map to its resting layout, holding calm water's 1.
+  ctx.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
+    for (const Slot& s : slots_) {
+      const auto to_clear = map_barrier(*s.map.image, L::eUndefined, L::eTransferDstOptimal, S::eNone, {}, S::eClear,
+                                        A::eTransferWrite);
+      cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &to_clear});
+      cmd.clearColorImage(*s.map.image, L::eTransferDstOptimal,
+                          vk::ClearColorValue{.float32 = std::array<float, 4>{cs::kCausticsUnit, cs::kCausticsUnit, cs::kCausticsUnit, cs::kCausticsUnit}}, kColor);
+      const auto to_read = map_barrier(*s.map.image, L::eTransferDstOptimal, L::eShaderReadOnlyOptimal, S::eClear,
+                                       A::eTransferWrite, S::eFragmentShader, A::eShaderSampledRead);
+      cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &to_read});
+    }
+  });
+}
+
+vk::BufferView CausticsPass::view_of(const gpu::Buffer& buffer, vk::Format format) {
+  for (const auto& [b, view] : views_)
+    if (b == *buffer.buffer) return *view;
+  views_.emplace_back(*buffer.buffer, vk::raii::BufferView(ctx_.device(), vk::BufferViewCreateInfo{
+                                                                              .buffer = *buffer.buffer, .format = format,
+                                                                              .offset = 0, .range = VK_WHOLE_SIZE}));
+  return *views_.back().second;
+}
+
+void CausticsPass::bind(std::uint32_t slot, const gpu::Buffer& state, const gpu::Buffer& normals) {
+  const Slot& s = slots_[slot];
+  const vk::BufferView views[] = {view_of(state, vk::Format::eR32Sfloat), view_of(normals, vk::Format::eR32G32B32A32Sfloat)};
+  const vk::DescriptorImageInfo map{.imageView = *s.map.view, .imageLayout = L::eGeneral};
+  using DT = vk::DescriptorType;
+  const vk::WriteDescriptorSet writes[] = {
+      {.dstSet = *s.set, .dstBinding = POND_CAUSTICS_BINDING_STATE, .descriptorCount = 1,
+       .descriptorType = DT::eUniformTexelBuffer, .pTexelBufferView = &views[0]},
+      {.dstSet = *s.set, .dstBinding = POND_CAUSTICS_BINDING_NORMALS, .descriptorCount = 1,
+       .descriptorType = DT::eUniformTexelBuffer, .pTexelBufferView = &views[1]},
+      {.dstSet = *s.set, .dstBinding = POND_CAUSTICS_BINDING_MAP, .descriptorCount = 1,
+       .descriptorType = DT::eStorageImage, .pImageInfo = &map}};
+  ctx_.device().updateDescriptorSets(writes, nullptr);
+}
+
+void CausticsPass::record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, const CausticsPush& push) const {
+  const Slot& s = slots_[slot];
+  // The map from the water's sampling (this slot's previous frame, or creation) to the compute write;
+  // its contents are all rewritten.
+  const auto to_write = map_barrier(*s.map.image, L::eUndefined, L::eGeneral, S::eFragmentShader, {},
+                                    S::eComputeShader, A::eShaderStorageWrite);
+  cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &to_write});
+  cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipeline_.layout, 0, *s.set, nullptr);
+  cmd.pushConstants<CausticsPush>(*pipeline_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+  cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline_.pipeline);
+  cmd.dispatch(gpu::group_count(push.map.x, POND_CAUSTICS_LOCAL), gpu::group_count(push.map.y, POND_CAUSTICS_LOCAL), 1);
+  const auto to_read = map_barrier(*s.map.image, L::eGeneral, L::eShaderReadOnlyOptimal, S::eComputeShader,
+                                   A::eShaderStorageWrite, S::eFragmentShader, A::eShaderSampledRead);
+  cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &to_read});
+}
+
+std::vector<float> CausticsPass::read_map(std::uint32_t slot) const {
+  const Slot& s = slots_[slot];
+  const vk::Extent2D e = s.map.extent;
+  const vk::DeviceSize bytes = vk::DeviceSize{e.width} * e.height * 4;
+  const gpu::Buffer readback = gpu::create_buffer(ctx_, bytes, vk::BufferUsageFlagBits::eTransferDst,
+                                                  gpu::MemoryUse::readback, "caustics map readback");
+  ctx_.device().waitIdle();
+  ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
+    const auto to_copy = map_barrier(*s.map.image, L::eShaderReadOnlyOptimal, L::eTransferSrcOptimal, S::eAllCommands,
+                                     A::eShaderStorageWrite, S::eCopy, A::eTransferRead);
+    cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &to_copy});
+    cmd.copyImageToBuffer(*s.map.image, L::eTransferSrcOptimal, *readback.buffer,
+                          vk::BufferImageCopy{.imageSubresource = {.aspectMask = vk::ImageAspectFlagBits::eColor,
+                                                                   .mipLevel = 0, .baseArrayLayer = 0, .layerCount = 1},
+                                              .imageExtent = {e.width, e.height, 1}});
+    const auto back = map_barrier(*s.map.image, L::eTransferSrcOptimal, L::eShaderReadOnlyOptimal, S::eCopy, {},
+                                  S::eFragmentShader, A::eShaderSampledRead);
+    const vk::BufferMemoryBarrier2 to_host{.srcStageMask = S::eCopy, .srcAccessMask = A::eTransferWrite,
+                                           .dstStageMask = S::eHost, .dstAccessMask = A::eHostRead,
+                                           .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                                           .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                                           .buffer = *readback.buffer, .offset = 0, .size = VK_WHOLE_SIZE};
+    cmd.pipelineBarrier2(vk::DependencyInfo{.bufferMemoryBarrierCount = 1, .pBufferMemoryBarriers = &to_host,
+                                            .imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &back});
+  });
+  readback.invalidate(ctx_);
+  std::vector<float> out(static_cast<std::size_t>(e.width) * e.height);
+  const auto* rgba = static_cast<const std::uint8_t*>(readback.mapped);
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] = static_cast<float>(rgba[4 * k]) / 255.0f * cs::kCausticsDecode;
+  return out;
+}
+
+}  // namespace pond::render

@@ -1,0 +1,88 @@
+#pragma once
+// Caustics on the pool floor (frame_loop.h records it before the draw when
+// FrameView::effects.caustics is on): one compute dispatch (shaders/shared/caustics.h) turns this
+// frame's water state and normals into a small floor-space map of the sun's light relative to calm
+// water, which water.frag multiplies the floor and the submerged walls it sees through the water by
+// (one nearest fetch a pixel). The map is per frame slot (a storage image written by the compute
+// pass, sampled by the water), written and read in the slot's own command buffer, so a frame in
+// flight keeps its own.
+//
+// Between frames the map rests in eShaderReadOnlyOptimal (it is made so, filled with 1 = calm
+// water, when created), so the water's descriptor is valid whether or not the pass ran.
+#include <array>
+#include <utility>
+#include <cstdint>
+#include <vector>
+
+#include "gpu/buffer.h"
+#include "gpu/compute_pipeline.h"
+#include "gpu/context.h"
+#include "render/render_target.h"
+#include "shared/caustics.h"
+#include "sim/model.h"
+
+namespace pond::render {
+
+using shared::caustics::CausticsPush;
+static_assert(sizeof(CausticsPush) == 80 && offsetof(CausticsPush, light) == 16 &&
+              offsetof(CausticsPush, grid) == 32 && offsetof(CausticsPush, map) == 48 &&
+              offsetof(CausticsPush, coarse) == 64);
+
+inline constexpr vk::Format kCausticsFormat = vk::Format::eR8G8B8A8Unorm;  // shared/caustics.h kCausticsUnit
+
+// The rays' grid for a rows x cols grid of nodes (columns, rows): every node up to
+// kCausticsRays + 1 nodes, else every k-th for the smallest k that keeps at most kCausticsRays cells.
+vk::Extent2D caustics_rays(int rows, int cols);
+// The map's size: whole texels per cell of the rays' grid, at most kCausticsTexels along the longer
+// side (or one a cell).
+vk::Extent2D caustics_extent(int rows, int cols);
+
+// The direct sun's share of the floor's light for a sun toward `sun` (unit vector):
+// shared/caustics.h's kFloorAmbient split.
+float caustics_direct_share(const std::array<double, 3>& sun);
+
+// The push constants for a frame: `sun` the unit direction toward the sun, `floor_depth` world
+// units below rest, the state's layout.
+CausticsPush caustics_push(const sim::WaterModel& model, const std::array<double, 3>& sun, double floor_depth,
+                           std::uint32_t stride, std::uint32_t pitch);
+
+// How water.frag finds a world point's texel: uv = p.xz * (x, y) + p.y * (z, w) (WaterFrame::caustics).
+std::array<float, 4> caustics_lookup(const sim::WaterModel& model, const std::array<double, 3>& sun);
+
+class CausticsPass {
+ public:
+  CausticsPass(const gpu::Context& ctx, const sim::WaterModel& model, std::uint32_t slots);
+
+  // Points slot `slot`'s descriptor set at this frame's water buffers (the slot must be idle).
+  void bind(std::uint32_t slot, const gpu::Buffer& state, const gpu::Buffer& normals);
+  // Drops the views of the water's buffers before they are destroyed (a new solver; the device must
+  // be idle): a later buffer may reuse a handle.
+  void forget_water_buffers() { views_.clear(); }
+  // Records the dispatch and the barriers around it: the map from fragment-shader reads to the
+  // compute write and back. The state and normals must be visible to compute shader reads (the
+  // caller's barrier).
+  void record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, const CausticsPush& push) const;
+
+  const Image& map(std::uint32_t slot) const { return slots_[slot].map; }
+  // Copies slot `slot`'s map back (waits for the device to be idle first) and decodes it: width x
+  // height floats, the light relative to calm water at each texel's first corner (x, y), row y =
+  // map row y (for tests and tools).
+  std::vector<float> read_map(std::uint32_t slot) const;
+
+ private:
+  struct Slot {
+    Image map;
+    vk::raii::DescriptorSet set = nullptr;
+  };
+  // Texel-buffer views of the water's buffers, made on first use of each (the GPU solver's two
+  // state buffers and its normals, or the CPU path's per-slot copies).
+  vk::BufferView view_of(const gpu::Buffer& buffer, vk::Format format);
+
+  const gpu::Context& ctx_;
+  std::vector<std::pair<vk::Buffer, vk::raii::BufferView>> views_;
+  gpu::ComputePipeline pipeline_;
+  vk::raii::DescriptorPool pool_ = nullptr;
+  std::vector<Slot> slots_;
+};
+
+}  // namespace pond::render
