@@ -59,7 +59,7 @@ TEST(SunShadow, DepthGrowsAlongTheSunlightAndTheFitIsTight) {
   EXPECT_NEAR(a[1], b[1], 1e-5);
   // The box's projection across the sunlight is at most its diagonal (14 sqrt 3) wide; the map is
   // at most 2^(1/8) (the rounding step) and a few texels wider than what it must hold.
-  const double side = v->size / v->texels_per_unit;
+  const double side = static_cast<double>(v->size) / v->texels_per_unit;
   EXPECT_LE(side, 14.0 * std::sqrt(3.0) * std::exp2(1.0 / 8.0) * (1.0 + 8.0 / 512));
   EXPECT_GE(side, 14.0);
 }
@@ -162,7 +162,9 @@ void expect_partition(const std::vector<PixelRect>& holes, int w, int h) {
   add(holes);
   add(rest);
   for (int c : count) ASSERT_EQ(c, 1);
-  if (holes.size() == 1) EXPECT_LE(rest.size(), 4u);
+  if (holes.size() == 1) {
+    EXPECT_LE(rest.size(), 4u);
+  }
 }
 
 TEST(SunShadow, ComplementCoversTheRestOnce) {
