@@ -32,6 +32,22 @@ bool denorm_preserve() {
   return true;
 }
 
+// POND_DISCRETE_GPU_MAX_TEXEL_BUFFER_ELEMENTS=N (optional): a lower maxTexelBufferElements, down to
+// the Vulkan minimum 65536, so a test can see pond refuse what such a device cannot view.
+std::uint32_t max_texel_buffer_elements(std::uint32_t lavapipe) {
+  const char* value = std::getenv("POND_DISCRETE_GPU_MAX_TEXEL_BUFFER_ELEMENTS");
+  if (!value || !*value) return lavapipe;
+  char* end = nullptr;
+  const unsigned long n = std::strtoul(value, &end, 10);
+  if (*end || n < 65536) {
+    static std::atomic<bool> warned{false};
+    if (!warned.exchange(true))
+      report("POND_DISCRETE_GPU_MAX_TEXEL_BUFFER_ELEMENTS=%s is not a number >= 65536; ignored", value);
+    return lavapipe;
+  }
+  return static_cast<std::uint32_t>(std::min<unsigned long>(n, lavapipe));
+}
+
 template <typename T>
 T* find_in_chain(void* chain, VkStructureType type) {
   for (auto* s = static_cast<VkBaseOutStructure*>(chain); s; s = s->pNext)
@@ -46,6 +62,7 @@ void present(VkPhysicalDeviceProperties& p) {
   l.maxComputeWorkGroupSize[2] = std::min(l.maxComputeWorkGroupSize[2], kMaxWorkGroupSizeZ);
   l.maxMemoryAllocationCount = std::min(l.maxMemoryAllocationCount, kMaxMemoryAllocationCount);
   l.maxSamplerAllocationCount = std::min(l.maxSamplerAllocationCount, kMaxSamplerAllocationCount);
+  l.maxTexelBufferElements = max_texel_buffer_elements(l.maxTexelBufferElements);
 }
 
 void present(VkPhysicalDeviceFeatures& f) { f.shaderInt64 = VK_FALSE; }

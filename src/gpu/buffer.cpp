@@ -85,4 +85,15 @@ void upload(const Context& ctx, const Buffer& dst, std::span<const std::byte> by
   });
 }
 
+vk::raii::BufferView create_texel_view(const Context& ctx, const Buffer& buffer, vk::Format format,
+                                       vk::DeviceSize texel_bytes, const char* what) {
+  const vk::DeviceSize texels = buffer.size / texel_bytes;
+  const std::uint32_t limit = ctx.physical().getProperties().limits.maxTexelBufferElements;
+  if (texels > limit)
+    throw RuntimeError(std::string(what) + " needs a texel buffer of " + std::to_string(texels) +
+                       " elements; this device's maxTexelBufferElements is " + std::to_string(limit));
+  return vk::raii::BufferView(ctx.device(), vk::BufferViewCreateInfo{.buffer = *buffer.buffer, .format = format,
+                                                                     .offset = 0, .range = VK_WHOLE_SIZE});
+}
+
 }  // namespace pond::gpu

@@ -182,15 +182,11 @@ void GpuSolver::upload_kinds_and_perturbations() {
 // Two sets of each pipeline's layout (one per ping-pong direction), the pool sized from the layouts.
 void GpuSolver::create_descriptor_sets() {
   using DT = vk::DescriptorType;
-  auto view = [&](const Buffer& b, vk::Format format) {
-    return vk::raii::BufferView(ctx_.device(), vk::BufferViewCreateInfo{.buffer = *b.buffer, .format = format,
-                                                                        .offset = 0, .range = VK_WHOLE_SIZE});
-  };
   for (int c = 0; c < 2; ++c) {
-    state_r32_[c] = view(state_[c], vk::Format::eR32Sfloat);
-    state_rgba32_[c] = view(state_[c], vk::Format::eR32G32B32A32Sfloat);
+    state_r32_[c] = create_texel_view(ctx_, state_[c], vk::Format::eR32Sfloat, 4, "the GPU solver's state");
+    state_rgba32_[c] = create_texel_view(ctx_, state_[c], vk::Format::eR32G32B32A32Sfloat, 16, "the GPU solver's state");
   }
-  kinds_rgba8_ = view(kinds_, vk::Format::eR8G8B8A8Uint);
+  kinds_rgba8_ = create_texel_view(ctx_, kinds_, vk::Format::eR8G8B8A8Uint, 4, "the GPU solver's node kinds");
 
   constexpr std::uint32_t kSetsPerPipeline = 2;
   const std::vector<DT> layouts[] = {step_bindings(), perturb_bindings(), normals_bindings()};
