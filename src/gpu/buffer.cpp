@@ -91,7 +91,8 @@ vk::raii::BufferView create_texel_view(const Context& ctx, const Buffer& buffer,
   const std::uint32_t limit = ctx.physical().getProperties().limits.maxTexelBufferElements;
   if (texels > limit)
     throw RuntimeError(std::string(what) + " needs a texel buffer of " + std::to_string(texels) +
-                       " elements; this device's maxTexelBufferElements is " + std::to_string(limit));
+                       " elements; this device's maxTexelBufferElements is " + std::to_string(limit) +
+                       " (a smaller grid or a CPU solver runs)");
   return vk::raii::BufferView(ctx.device(), vk::BufferViewCreateInfo{.buffer = *buffer.buffer, .format = format,
                                                                      .offset = 0, .range = VK_WHOLE_SIZE});
 }
