@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/demo_timing.sh
 demo_timing_init demo_bodies_fps.sh "${1:-5}"
-display=$(start_x "MALLOC_TOP_PAD_=67108864")
+start_x "MALLOC_TOP_PAD_=67108864"
 for ((r = 0; r < rounds; r++)); do
   for scene in demo_257 demo_257_bodies; do
     ms=$(demo_ms "$display" "scenes/$scene.json")

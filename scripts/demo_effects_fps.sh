@@ -22,7 +22,7 @@ scene.setdefault("view", {})[sys.argv[2]] = False
 json.dump(scene, open(sys.argv[3], "w"))
 PY
 done
-display=$(start_x "MALLOC_TOP_PAD_=67108864")
+start_x "MALLOC_TOP_PAD_=67108864"
 for ((r = 0; r < rounds; r++)); do
   all=$(demo_ms "$display" "$base")
   echo "$all" >> "$work/all"

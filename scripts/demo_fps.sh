@@ -9,8 +9,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/demo_timing.sh
 demo_timing_init demo_fps.sh "${1:-5}"
-plain=$(start_x "")
-tuned=$(start_x "MALLOC_TOP_PAD_=67108864")
+start_x ""
+plain=$display
+start_x "MALLOC_TOP_PAD_=67108864"
+tuned=$display
 
 configs=("129 $plain default" "129 $tuned tuned" "257 $plain default" "257 $tuned tuned")
 for ((r = 0; r < rounds; r++)); do

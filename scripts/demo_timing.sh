@@ -1,7 +1,9 @@
 # Sourced by the demo_*fps.sh scripts: their shared checks, runs and medians.
 #   demo_timing_init NAME ROUNDS   checks ROUNDS, the release build's pond and Xvfb; sets $pond,
 #                                  $rounds, $work (removed on exit) and stops the X servers started
-#   start_x ENV                    starts an Xvfb (extra environment ENV) and prints its display
+#   start_x ENV                    starts an Xvfb (extra environment ENV) and sets $display to its
+#                                  display (not printed: a $(...) subshell would lose its pid, and
+#                                  the exit trap would leave the server running)
 #   demo_ms DISPLAY SCENE          one 200-frame 1280x720 demo run: records its ms a frame in
 #                                  $work/SCENE-LABEL (see demo_record) and prints its summary line
 #   print_median LABEL FILE        the median, min and max of FILE's numbers, and FPS
@@ -30,7 +32,7 @@ start_x() {
   x_pids+=($!)
   for _ in $(seq 50); do [ -s "$fd" ] && break; sleep 0.1; done
   [ -s "$fd" ] || { echo "$script: Xvfb did not start" >&2; exit 1; }
-  cat "$fd"
+  display=$(cat "$fd")
 }
 
 # Prints the ms a frame of one demo run on display $1 with scene file $2.
