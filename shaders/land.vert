@@ -41,6 +41,8 @@ void main() {
 #ifdef POND_LAND_MIRROR
   gl_Position = f.view_proj * vec4(in_position.x, -in_position.y, in_position.z, 1.0);
 #else
-  gl_Position = f.view_proj * vec4(in_position.xyz, 1.0);
+  // `precise`: the same position with and without shadows, as water.vert's.
+  precise vec4 position = f.view_proj * vec4(in_position.xyz, 1.0);
+  gl_Position = position;
 #endif
 }

@@ -39,10 +39,14 @@ void main() {
   const vec3 rest = vec3(float(col), 0.0, float(row));
   const uint m = row * pitch + col;  // the state's rows are `pitch` nodes apart
   const vec3 u = vec3(state[m], state[stride + m], state[2u * stride + m]);
-  const vec3 world = (rest + u) * POND_FRAME_GRID_SPACING(f);  // grid units -> world
+  // `precise` (no contraction, no reordering): every water pipeline computes the very same position.
+  // Where shadows fall the water is drawn twice, and the second draw must fail the depth test
+  // exactly where the first one drew (render/frame_loop.cpp).
+  precise vec3 world = (rest + u) * POND_FRAME_GRID_SPACING(f);  // grid units -> world
+  precise vec4 position = f.view_proj * vec4(world, 1.0);
   out_world = world;
   out_normal = normals[n].xyz;
-  gl_Position = f.view_proj * vec4(world, 1.0);
+  gl_Position = position;
   // w: POND_FLAT_INV_SPACING, the reciprocal: water.frag multiplies by it.
   out_eye = vec4(f.eye.xyz, 1.0 / POND_FRAME_GRID_SPACING(f));
   out_sun = vec4(f.sun.xyz, POND_FRAME_FLOOR_DEPTH(f));  // w: POND_FLAT_FLOOR_DEPTH

@@ -66,11 +66,10 @@ constexpr double kShadowTexelsPerPixel = 1.5;
 constexpr std::uint32_t kMaxShadowMapSize = 1024;
 constexpr double kShadowWaveMargin = 1.0;
 
-// One frame's shadow map: its view, the target's rectangles where its shadows can show, and
-// disjoint ones covering the rest of the target.
+// One frame's shadow map: its view and the target's rectangles where its shadows can show.
 struct FrameShadow {
   view::SunShadowView view;
-  std::vector<vk::Rect2D> rects, rest;
+  std::vector<vk::Rect2D> rects;
 };
 
 double ms_since(std::chrono::steady_clock::time_point& t) {
@@ -299,7 +298,7 @@ struct FrameLoop::Impl {
     const std::optional<view::SunShadowView> fitted =
         view::fit_sun_shadow(lighting.sun, casters, pixels * kShadowTexelsPerPixel, kMaxShadowMapSize);
     if (!fitted) return std::nullopt;
-    FrameShadow shadow{*fitted, {}, {}};
+    FrameShadow shadow{*fitted, {}};
     const view::ViewSpec& v = session.scene().view;
     std::vector<view::PixelRect> rects;
     for (const view::ShadowCaster& c : casters)
@@ -313,8 +312,6 @@ struct FrameLoop::Impl {
     rects = view::merge_overlapping(rects);
     if (rects.empty()) return std::nullopt;
     for (const view::PixelRect& r : rects) shadow.rects.push_back(rect(r));
-    for (const view::PixelRect& r : view::complement(rects, static_cast<int>(extent.width), static_cast<int>(extent.height)))
-      shadow.rest.push_back(rect(r));
     return shadow;
   }
 
@@ -467,25 +464,24 @@ struct FrameLoop::Impl {
     cmd.setScissor(0, vk::Rect2D{{0, 0}, target.extent});
     for (PassDrawable* d : drawables) d->draw_occluding(info);
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *s.set, nullptr);
-    // The land and the water: where a shadow can fall (shadow->rects) with the pipelines that
-    // sample the map, elsewhere (shadow->rest) with those that do not, each pixel by one of them:
-    // llvmpipe runs both sides of a per-pixel branch, so only the scissor keeps the fetches off
-    // the pixels no shadow reaches.
+    // The land and the water: first where a shadow can fall (shadow->rects, scissored) with the
+    // pipelines that sample the map, then everywhere with those that do not. Both test depth with
+    // "less", and a pixel the first draw shaded holds the very depth the second computes (the
+    // same `precise` vertex code), so it fails there before it is shaded: each pixel is shaded
+    // once. llvmpipe runs both sides of a per-pixel branch, so only the scissor keeps the fetches
+    // off the pixels no shadow reaches; and one full draw, not the rectangles' complement, keeps
+    // the vertex work to two passes over the mesh.
     auto shaded = [&](const vk::raii::Pipeline& plain, const vk::raii::Pipeline& shadowed, const auto& draw_call) {
-      if (!shadow) {
-        cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *plain);
-        draw_call();
-        return;
-      }
-      for (const auto& [pipeline, rects] : {std::pair{&shadowed, &shadow->rects}, std::pair{&plain, &shadow->rest}}) {
-        if (rects->empty()) continue;
-        cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, **pipeline);
-        for (const vk::Rect2D& r : *rects) {
+      if (shadow) {
+        cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *shadowed);
+        for (const vk::Rect2D& r : shadow->rects) {
           cmd.setScissor(0, r);
           draw_call();
         }
+        cmd.setScissor(0, vk::Rect2D{{0, 0}, target.extent});
       }
-      cmd.setScissor(0, vk::Rect2D{{0, 0}, target.extent});
+      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *plain);
+      draw_call();
     };
     cmd.bindVertexBuffers(0, *land.buffer, vk::DeviceSize{0});
     shaded(pipes.land, pipes.land_shadowed, [&] { cmd.draw(land_vertices, 1, 0, 0); });

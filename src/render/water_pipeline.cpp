@@ -20,6 +20,9 @@ struct PipelineSpec {
   bool linear_output = false;  // GraphicsPipelineDesc::linear_output
   bool shadows = false;        // GraphicsPipelineDesc::shadows
   bool caustics = false;       // GraphicsPipelineDesc::caustics
+  // The land's and the water's: "less", so where shadows fall a pixel is shaded once although
+  // they are drawn twice there (render/frame_loop.cpp).
+  vk::CompareOp depth_compare = vk::CompareOp::eLessOrEqual;
   const char* name;
 };
 
@@ -49,7 +52,7 @@ vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayou
       .lineWidth = 1.0f};
   const vk::PipelineDepthStencilStateCreateInfo depth_state{
       .depthTestEnable = VK_TRUE, .depthWriteEnable = s.lines || !s.depth_write ? VK_FALSE : VK_TRUE,
-      .depthCompareOp = vk::CompareOp::eLessOrEqual};
+      .depthCompareOp = s.depth_compare};
   using CC = vk::ColorComponentFlagBits;
   const vk::PipelineColorBlendAttachmentState blend{
       .blendEnable = s.lines ? VK_TRUE : VK_FALSE,
@@ -87,10 +90,11 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
   p.layout = vk::raii::PipelineLayout(ctx.device(),
                                       vk::PipelineLayoutCreateInfo{.setLayoutCount = 1, .pSetLayouts = &set_layout});
   p.land = create(ctx, p.layout, color_format, depth_format,
-                  {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true, .name = "land"});
+                  {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true,
+                   .depth_compare = vk::CompareOp::eLess, .name = "land"});
   p.land_shadowed = create(ctx, p.layout, color_format, depth_format,
                            {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true,
-                            .shadows = true, .name = "land, shadowed"});
+                            .shadows = true, .depth_compare = vk::CompareOp::eLess, .name = "land, shadowed"});
   static const char* const kWaterNames[] = {
       "water", "water, reflecting", "water, caustics", "water, reflecting, caustics", "water, shadowed",
       "water, reflecting, shadowed", "water, caustics, shadowed", "water, reflecting, caustics, shadowed"};
@@ -101,7 +105,8 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
     p.waters.push_back(create(ctx, p.layout, color_format, depth_format,
                               {.vert = water_vert_spirv(),
                                .frag = reflections ? water_reflect_frag_spirv() : water_frag_spirv(),
-                               .shadows = shadows, .caustics = caustics, .name = kWaterNames[v]}));
+                               .shadows = shadows, .caustics = caustics, .depth_compare = vk::CompareOp::eLess,
+                               .name = kWaterNames[v]}));
   }
   p.land_mirror = create(ctx, p.layout, kReflectionFormat, depth_format,
                          {.vert = land_mirror_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true,

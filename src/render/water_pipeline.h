@@ -13,6 +13,8 @@
 //  - sky:   a box standing on the land's outer edge (view::sky_box), drawn last (depth test, no
 //           write), so it shades only what nothing else covered;
 //  - land_shadowed: the land sampling the sun's shadow map, used in frames that have one.
+// The land and the waters test depth with "less" (render/frame_loop.cpp draws them twice where
+// shadows fall); the rest with "less or equal".
 // No culling: large splashes may fold the surface over.
 #include <vector>
 

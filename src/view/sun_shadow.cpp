@@ -138,41 +138,6 @@ std::vector<PixelRect> merge_overlapping(std::vector<PixelRect> rects) {
   return rects;
 }
 
-std::vector<PixelRect> complement(const std::vector<PixelRect>& holes, int width, int height) {
-  std::vector<int> cuts{0, height};
-  for (const PixelRect& h : holes) cuts.insert(cuts.end(), {std::clamp(h.y0, 0, height), std::clamp(h.y1, 0, height)});
-  std::sort(cuts.begin(), cuts.end());
-  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-  std::vector<PixelRect> out;
-  std::vector<PixelRect> previous;  // the last band's gaps, to extend downward
-  for (std::size_t b = 0; b + 1 < cuts.size(); ++b) {
-    const int ya = cuts[b], yb = cuts[b + 1];
-    std::vector<std::pair<int, int>> spans;  // the holes' x-intervals crossing this band
-    for (const PixelRect& h : holes)
-      if (h.y0 <= ya && h.y1 >= yb) spans.push_back({h.x0, h.x1});
-    std::sort(spans.begin(), spans.end());
-    std::vector<PixelRect> gaps;
-    int x = 0;
-    for (const auto& [x0, x1] : spans) {
-      if (x0 > x) gaps.push_back({x, ya, std::min(x0, width), yb});
-      x = std::max(x, x1);
-    }
-    if (x < width) gaps.push_back({x, ya, width, yb});
-    // Bands with the very same gaps as the band above extend its rectangles.
-    const bool same = gaps.size() == previous.size() &&
-                      std::equal(gaps.begin(), gaps.end(), previous.begin(), [](const PixelRect& a, const PixelRect& p) {
-                        return a.x0 == p.x0 && a.x1 == p.x1;
-                      });
-    if (same) {
-      for (std::size_t k = 0; k < gaps.size(); ++k) out[out.size() - gaps.size() + k].y1 = yb;
-    } else {
-      out.insert(out.end(), gaps.begin(), gaps.end());
-    }
-    previous = gaps;
-  }
-  return out;
-}
-
 std::array<float, 3> sunlight_in_water(const std::array<double, 3>& toward_sun) {
   const V3 sun = unit(toward_sun);
   constexpr double eta = 1.0 / 1.33;

@@ -66,11 +66,6 @@ std::optional<PixelRect> shadow_pixels(const SunShadowView& view, const ShadowCa
 // (fewer draws, none shading a pixel twice).
 std::vector<PixelRect> merge_overlapping(std::vector<PixelRect> rects);
 
-// Disjoint rectangles covering the width x height view outside `holes` (which must not overlap):
-// horizontal bands cut at the holes' edges, each band's gaps between the holes crossing it, bands
-// with the same gaps joined. One hole leaves at most four.
-std::vector<PixelRect> complement(const std::vector<PixelRect>& holes, int width, int height);
-
 // The direction sunlight travels under the water (refracted at the flat rest surface, air to water,
 // 1 / 1.33): unit, pointing down.
 std::array<float, 3> sunlight_in_water(const std::array<double, 3>& toward_sun);

@@ -150,32 +150,6 @@ TEST(SunShadow, OverlappingRectanglesMerge) {
   EXPECT_TRUE(merge_overlapping({{0, 0, 10, 10}, {10, 0, 20, 10}}).size() == 2u);  // touching only
 }
 
-// Every pixel of the view is in exactly one of the holes and the complement's rectangles.
-void expect_partition(const std::vector<PixelRect>& holes, int w, int h) {
-  std::vector<int> count(static_cast<std::size_t>(w * h), 0);
-  auto add = [&](const std::vector<PixelRect>& rs) {
-    for (const PixelRect& r : rs)
-      for (int y = r.y0; y < r.y1; ++y)
-        for (int x = r.x0; x < r.x1; ++x) ++count[static_cast<std::size_t>(y * w + x)];
-  };
-  const std::vector<PixelRect> rest = complement(holes, w, h);
-  add(holes);
-  add(rest);
-  for (int c : count) ASSERT_EQ(c, 1);
-  if (holes.size() == 1) {
-    EXPECT_LE(rest.size(), 4u);
-  }
-}
-
-TEST(SunShadow, ComplementCoversTheRestOnce) {
-  expect_partition({}, 40, 30);
-  EXPECT_EQ(complement({}, 40, 30).size(), 1u);
-  expect_partition({{10, 5, 20, 12}}, 40, 30);
-  expect_partition({{0, 0, 40, 30}}, 40, 30);
-  expect_partition({{0, 0, 10, 30}}, 40, 30);
-  expect_partition({{2, 3, 9, 20}, {15, 10, 30, 25}, {31, 0, 40, 4}}, 40, 30);
-}
-
 TEST(SunShadow, SunlightUnderWaterBendsTowardTheVertical) {
   const std::array<float, 3> t = sunlight_in_water(kSun);
   const double l = std::sqrt(kSun[0] * kSun[0] + kSun[1] * kSun[1] + kSun[2] * kSun[2]);
