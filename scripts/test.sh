@@ -2,7 +2,7 @@
 # Sets up, builds and runs every test: the release build (CPU, GPU on lavapipe with the validation
 # layer, the IA-32 golden hash, CLI, faults); the sanitize build (clang: ASan + UBSan and libFuzzer
 # coverage) with the CPU tests and each libFuzzer target for a short time on its committed corpus
-# (FUZZ_SECONDS, default 20 here; scripts/fuzz.sh); the GPU solver's tests (context, float policy,
+# (FUZZ_SECONDS, default 10 here; scripts/fuzz.sh); the GPU solver's tests (context, float policy,
 # SPIR-V checks, a tenth of the parity suite's steps) under ASan + UBSan too; the GPU tests under
 # the discrete-GPU test layer (both denormal settings); then the release tests.
 # The soak (label soak, ~12 min) is left out: scripts/soak.sh runs it. Exits non-zero on the first
@@ -25,7 +25,7 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:ha
   ctest --preset sanitize -j "$jobs"
 
 stage "fuzzing"
-FUZZ_SECONDS=${FUZZ_SECONDS:-20} FUZZ_JOBS=$jobs scripts/fuzz.sh
+FUZZ_SECONDS=${FUZZ_SECONDS:-10} FUZZ_JOBS=$jobs scripts/fuzz.sh
 
 # The GPU solver's tests under ASan + UBSan too (lavapipe itself is not instrumented; leak checks
 # off, since the driver is unloaded before LeakSanitizer could name its allocations).
