@@ -18,6 +18,10 @@
 #include "shared/water_shading.h"
 #include "shared/shadow_sampling.h"
 
+// Depth tested before shading on every device (no discard, no depth write, no side effects): where
+// shadows fall this surface is drawn twice, and the second draw must not shade (frame_loop.cpp).
+layout(early_fragment_tests) in;
+
 layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;
 // The frame's constants (water.vert; not the uniform block, see shared/water_render.h).

@@ -466,20 +466,25 @@ struct FrameLoop::Impl {
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *s.set, nullptr);
     // The land and the water: first where a shadow can fall (shadow->rects, scissored) with the
     // pipelines that sample the map, then everywhere with those that do not. Both test depth with
-    // "less", and a pixel the first draw shaded holds the very depth the second computes (the
-    // same `precise` vertex code), so it fails there before it is shaded: each pixel is shaded
-    // once. llvmpipe runs both sides of a per-pixel branch, so only the scissor keeps the fetches
-    // off the pixels no shadow reaches; and one full draw, not the rectangles' complement, keeps
-    // the vertex work to two passes over the mesh.
+    // "less" before shading, and a pixel the first draw shaded holds a depth the second cannot beat
+    // (the same `precise` vertex code, and the first draw's small bias toward the camera:
+    // water_pipeline.cpp), so each pixel is shaded once. llvmpipe runs both sides of a per-pixel
+    // branch, so only the scissor keeps the fetches off the pixels no shadow reaches; and one full
+    // draw, not the rectangles' complement, keeps the vertex work to one pass over the mesh per
+    // rectangle plus one.
+    const vk::Rect2D whole{{0, 0}, target.extent};
     auto shaded = [&](const vk::raii::Pipeline& plain, const vk::raii::Pipeline& shadowed, const auto& draw_call) {
+      bool covered = false;  // a rectangle is the whole target (a low sun, a caster behind the eye)
       if (shadow) {
         cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *shadowed);
         for (const vk::Rect2D& r : shadow->rects) {
           cmd.setScissor(0, r);
           draw_call();
+          covered = covered || r == whole;
         }
-        cmd.setScissor(0, vk::Rect2D{{0, 0}, target.extent});
+        cmd.setScissor(0, whole);
       }
+      if (covered) return;
       cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *plain);
       draw_call();
     };

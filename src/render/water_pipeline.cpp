@@ -16,6 +16,7 @@ struct PipelineSpec {
   std::span<const std::uint32_t> vert, frag;
   bool land_vertices = false;  // LandVertex attributes (else vertex pulling, no attributes)
   bool lines = false;          // polygon mode line, depth bias towards the camera, alpha blending
+  float depth_bias = 0.0f;     // constant depth bias (not with lines)
   bool depth_write = true;
   bool linear_output = false;  // GraphicsPipelineDesc::linear_output
   bool shadows = false;        // GraphicsPipelineDesc::shadows
@@ -25,6 +26,12 @@ struct PipelineSpec {
   vk::CompareOp depth_compare = vk::CompareOp::eLessOrEqual;
   const char* name;
 };
+
+// The shadow-sampling land and water are pulled this many depth units (ULPs near the far plane)
+// toward the camera: the plain pipelines drawn after them over the same pixels then fail "less"
+// even if a device's two compiled vertex shaders round the position a few ULPs apart (`precise`
+// keeps the operations, not necessarily the pipelines' code, the same).
+constexpr float kShadowedDepthBias = -4.0f;
 
 vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayout& layout, vk::Format color,
                           vk::Format depth, const PipelineSpec& s) {
@@ -46,8 +53,8 @@ vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayou
       .polygonMode = s.lines ? vk::PolygonMode::eLine : vk::PolygonMode::eFill,
       .cullMode = vk::CullModeFlagBits::eNone,
       .frontFace = vk::FrontFace::eCounterClockwise,
-      .depthBiasEnable = s.lines ? VK_TRUE : VK_FALSE,
-      .depthBiasConstantFactor = s.lines ? -2.0f : 0.0f,
+      .depthBiasEnable = s.lines || s.depth_bias != 0.0f ? VK_TRUE : VK_FALSE,
+      .depthBiasConstantFactor = s.lines ? -2.0f : s.depth_bias,
       .depthBiasSlopeFactor = s.lines ? -1.5f : 0.0f,
       .lineWidth = 1.0f};
   const vk::PipelineDepthStencilStateCreateInfo depth_state{
@@ -94,7 +101,8 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
                    .depth_compare = vk::CompareOp::eLess, .name = "land"});
   p.land_shadowed = create(ctx, p.layout, color_format, depth_format,
                            {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true,
-                            .shadows = true, .depth_compare = vk::CompareOp::eLess, .name = "land, shadowed"});
+                            .depth_bias = kShadowedDepthBias, .shadows = true, .depth_compare = vk::CompareOp::eLess,
+                            .name = "land, shadowed"});
   static const char* const kWaterNames[] = {
       "water", "water, reflecting", "water, caustics", "water, reflecting, caustics", "water, shadowed",
       "water, reflecting, shadowed", "water, caustics, shadowed", "water, reflecting, caustics, shadowed"};
@@ -105,7 +113,8 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
     p.waters.push_back(create(ctx, p.layout, color_format, depth_format,
                               {.vert = water_vert_spirv(),
                                .frag = reflections ? water_reflect_frag_spirv() : water_frag_spirv(),
-                               .shadows = shadows, .caustics = caustics, .depth_compare = vk::CompareOp::eLess,
+                               .depth_bias = shadows ? kShadowedDepthBias : 0.0f, .shadows = shadows,
+                               .caustics = caustics, .depth_compare = vk::CompareOp::eLess,
                                .name = kWaterNames[v]}));
   }
   p.land_mirror = create(ctx, p.layout, kReflectionFormat, depth_format,

@@ -63,7 +63,7 @@ std::optional<PixelRect> shadow_pixels(const SunShadowView& view, const ShadowCa
                                        double y_high);
 
 // The rectangles, with every two that overlap replaced by their bounding box until none overlap
-// (fewer draws, none shading a pixel twice).
+// (fewer draws).
 std::vector<PixelRect> merge_overlapping(std::vector<PixelRect> rects);
 
 // The direction sunlight travels under the water (refracted at the flat rest surface, air to water,

@@ -139,6 +139,28 @@ TEST(SunShadow, ScreenRectangleHoldsTheShadowAndNotTheSunSide) {
   EXPECT_EQ(all->x1, 640);
 }
 
+// A caster just in front of the eye projects billions of pixels away: the rectangle is clamped
+// to the view before it becomes ints (UBSan's float-cast-overflow would stop the old cast).
+TEST(SunShadow, APointJustInFrontOfTheEyeStaysInTheView) {
+  const ShadowCaster box{{49.8f, 1.0f, 49.8f}, {50.2f, 9.0f, 50.2f}};
+  const auto v = fit_sun_shadow(kSun, std::vector<ShadowCaster>{box}, 4.0, 1024);
+  ASSERT_TRUE(v.has_value());
+  for (const float sx : {1e4f, -1e4f}) {
+    std::array<float, 16> vp{};  // clip x = sx * world x, clip y = world y, clip w = 2e-6
+    vp[0] = sx;
+    vp[5] = 1.0f;
+    vp[15] = 2e-6f;
+    const auto r = shadow_pixels(*v, box, vp, 640, 360, -3.0, 2.0);
+    if (r) {
+      EXPECT_GE(r->x0, 0);
+      EXPECT_LE(r->x1, 640);
+      EXPECT_GE(r->y0, 0);
+      EXPECT_LE(r->y1, 360);
+    }
+    EXPECT_FALSE(r.has_value()) << sx;  // wholly off one side of the view
+  }
+}
+
 TEST(SunShadow, OverlappingRectanglesMerge) {
   const auto m = merge_overlapping({{0, 0, 10, 10}, {5, 5, 20, 20}, {30, 30, 40, 40}, {19, 0, 31, 2}});
   // The first two overlap; their union then overlaps the fourth, which overlaps nothing else first.
