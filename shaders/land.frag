@@ -8,7 +8,11 @@
 
 #include "shared/water_render.h"
 #include "shared/water_shading.h"
+// The mirrored land (POND_LAND_MIRROR: land_mirror.frag, the planar reflection's) never reads the
+// shadow map: while the reflection is drawn the map may be in another pass's layout.
+#ifndef POND_LAND_MIRROR
 #include "shared/shadow_sampling.h"
+#endif
 
 // Depth tested before shading on every device (no discard, no depth write, no side effects): where
 // shadows fall this surface is drawn twice, and the second draw must not shade (frame_loop.cpp).
@@ -37,6 +41,8 @@ vec3 land_texture(vec3 p, float top) {
 
 void main() {
   vec3 light = in_color;
+#ifndef POND_LAND_MIRROR
   if (kShadows) light *= vec3(1.0) - in_sun_share * (1.0 - sun_light(in_shadow));
+#endif
   out_color = finish_color(light * land_texture(in_world, in_top));
 }

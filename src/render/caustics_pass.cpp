@@ -144,19 +144,29 @@ void CausticsPass::bind(std::uint32_t slot, const gpu::Buffer& state, const gpu:
   ctx_.device().updateDescriptorSets(writes, nullptr);
 }
 
-void CausticsPass::record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, const CausticsPush& push) const {
-  const Slot& s = slots_[slot];
+vk::ImageMemoryBarrier2 CausticsPass::begin_barrier(std::uint32_t slot) const {
   // The map from the water's sampling (this slot's previous frame, or creation) to the compute write;
   // its contents are all rewritten.
-  const auto to_write = map_barrier(*s.map.image, L::eUndefined, L::eGeneral, S::eFragmentShader, {},
-                                    S::eComputeShader, A::eShaderStorageWrite);
-  cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &to_write});
-  cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipeline_.layout, 0, *s.set, nullptr);
+  return map_barrier(*slots_[slot].map.image, L::eUndefined, L::eGeneral, S::eFragmentShader, {}, S::eComputeShader,
+                     A::eShaderStorageWrite);
+}
+
+void CausticsPass::record_dispatch(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, const CausticsPush& push) const {
+  cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipeline_.layout, 0, *slots_[slot].set, nullptr);
   cmd.pushConstants<CausticsPush>(*pipeline_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
   cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline_.pipeline);
   cmd.dispatch(gpu::group_count(push.map.x, POND_CAUSTICS_LOCAL), gpu::group_count(push.map.y, POND_CAUSTICS_LOCAL), 1);
-  const auto to_read = map_barrier(*s.map.image, L::eGeneral, L::eShaderReadOnlyOptimal, S::eComputeShader,
-                                   A::eShaderStorageWrite, S::eFragmentShader, A::eShaderSampledRead);
+}
+
+vk::ImageMemoryBarrier2 CausticsPass::end_barrier(std::uint32_t slot) const {
+  return map_barrier(*slots_[slot].map.image, L::eGeneral, L::eShaderReadOnlyOptimal, S::eComputeShader,
+                     A::eShaderStorageWrite, S::eFragmentShader, A::eShaderSampledRead);
+}
+
+void CausticsPass::record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, const CausticsPush& push) const {
+  const vk::ImageMemoryBarrier2 to_write = begin_barrier(slot), to_read = end_barrier(slot);
+  cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &to_write});
+  record_dispatch(cmd, slot, push);
   cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &to_read});
 }
 

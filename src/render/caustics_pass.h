@@ -62,6 +62,11 @@ class CausticsPass {
   // compute write and back. The state and normals must be visible to compute shader reads (the
   // caller's barrier).
   void record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, const CausticsPush& push) const;
+  // The same in parts, for a caller that batches the barriers with other passes'
+  // (render/barrier_batch.h): the map to the compute write, the dispatch, the map to shader-read.
+  vk::ImageMemoryBarrier2 begin_barrier(std::uint32_t slot) const;
+  void record_dispatch(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, const CausticsPush& push) const;
+  vk::ImageMemoryBarrier2 end_barrier(std::uint32_t slot) const;
 
   const Image& map(std::uint32_t slot) const { return slots_[slot].map; }
   // Copies slot `slot`'s map back (waits for the device to be idle first) and decodes it: width x

@@ -9,6 +9,7 @@
 
 #include "core/errors.h"
 #include "gpu/buffer.h"
+#include "render/barrier_batch.h"
 #include "render/caustics_pass.h"
 #include "render/color_format.h"
 #include "render/reflection_pass.h"
@@ -408,22 +409,29 @@ struct FrameLoop::Impl {
     const vk::raii::CommandBuffer& cmd = s.cmd;
     cmd.reset();
     cmd.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
-    // Compute (substeps, normals) -> vertex shader (and caustics) reads of state and normals. The
-    // color barrier waits at color output, where the swapchain's acquire semaphore is waited.
-    const vk::MemoryBarrier2 compute_to_vertex{.srcStageMask = S::eComputeShader, .srcAccessMask = A::eShaderWrite,
-                                               .dstStageMask = S::eVertexShader | S::eComputeShader,
-                                               .dstAccessMask = A::eShaderRead};
-    const vk::ImageMemoryBarrier2 begin_images[] = {
-        layout_barrier(target.image, vk::ImageAspectFlagBits::eColor, target.old_layout,
-                       vk::ImageLayout::eColorAttachmentOptimal, S::eColorAttachmentOutput, {},
-                       S::eColorAttachmentOutput, A::eColorAttachmentWrite | A::eColorAttachmentRead),
-        layout_barrier(*s.depth.image, vk::ImageAspectFlagBits::eDepth, vk::ImageLayout::eUndefined,
-                       vk::ImageLayout::eDepthAttachmentOptimal, S::eLateFragmentTests, A::eDepthStencilAttachmentWrite,
-                       S::eEarlyFragmentTests | S::eLateFragmentTests,
-                       A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite)};
-    cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &compute_to_vertex,
-                                            .imageMemoryBarrierCount = 2, .pImageMemoryBarriers = begin_images});
-    if (view.effects.caustics) caustics.record(cmd, info.slot, caustics_constants);
+    // The passes before the main one (caustics, shadow map, reflection) read nothing another writes,
+    // so their barriers go in two batches: one before them all, one after (render/barrier_batch.h).
+    // Before: compute (substeps, normals) -> vertex shader (and caustics) reads of state and normals;
+    // every image to the layout it is written in. The color barrier waits at color output, where
+    // the swapchain's acquire semaphore is waited.
+    const bool reflections = view.effects.reflections;
+    BarrierBatch batch;
+    batch.memory.push_back({.srcStageMask = S::eComputeShader, .srcAccessMask = A::eShaderWrite,
+                            .dstStageMask = S::eVertexShader | S::eComputeShader, .dstAccessMask = A::eShaderRead});
+    batch.images = {layout_barrier(target.image, vk::ImageAspectFlagBits::eColor, target.old_layout,
+                                   vk::ImageLayout::eColorAttachmentOptimal, S::eColorAttachmentOutput, {},
+                                   S::eColorAttachmentOutput, A::eColorAttachmentWrite | A::eColorAttachmentRead),
+                    layout_barrier(*s.depth.image, vk::ImageAspectFlagBits::eDepth, vk::ImageLayout::eUndefined,
+                                   vk::ImageLayout::eDepthAttachmentOptimal, S::eLateFragmentTests,
+                                   A::eDepthStencilAttachmentWrite, S::eEarlyFragmentTests | S::eLateFragmentTests,
+                                   A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite)};
+    if (view.effects.caustics) batch.images.push_back(caustics.begin_barrier(info.slot));
+    if (shadow) batch.images.push_back(shadow_pass_begin(s.shadow));
+    if (reflections)
+      for (const vk::ImageMemoryBarrier2& b : reflection_pass_begin(s.reflection)) batch.images.push_back(b);
+    batch.record(cmd);
+
+    if (view.effects.caustics) caustics.record_dispatch(cmd, info.slot, caustics_constants);
     if (shadow) {
       FrameInfo sun = info;
       sun.view_proj = shadow->view.clip.data();
@@ -431,10 +439,7 @@ struct FrameLoop::Impl {
       record_shadow_pass(cmd, s.shadow, [&] {
         for (PassDrawable* d : drawables) d->draw_shadow(sun);
       });
-    } else {
-      record_shadow_map_unused(cmd, s.shadow);
     }
-    const bool reflections = view.effects.reflections;
     if (reflections) {
       FrameInfo mirrored = info;
       mirrored.extent = s.reflection.color.extent;
@@ -447,6 +452,12 @@ struct FrameLoop::Impl {
         for (PassDrawable* d : drawables) d->draw_reflected(mirrored);
       });
     }
+    // After: what they wrote to shader-read for the main pass's fragment shaders (a frame without
+    // shadows still puts the map, which its set binds, in that layout).
+    if (view.effects.caustics) batch.images.push_back(caustics.end_barrier(info.slot));
+    batch.images.push_back(shadow ? shadow_pass_end(s.shadow) : shadow_map_unused(s.shadow));
+    if (reflections) batch.images.push_back(reflection_pass_end(s.reflection));
+    batch.record(cmd);
 
     const vk::RenderingAttachmentInfo color{
         .imageView = target.view, .imageLayout = vk::ImageLayout::eColorAttachmentOptimal,

@@ -35,11 +35,10 @@ bool ensure_reflection_target(const gpu::Context& ctx, ReflectionTarget& t, vk::
   return true;
 }
 
-void record_reflection_pass(const vk::raii::CommandBuffer& cmd, const ReflectionTarget& t,
-                            const std::function<void()>& draw) {
+std::array<vk::ImageMemoryBarrier2, 2> reflection_pass_begin(const ReflectionTarget& t) {
   // The previous frame's water read of this slot's image finished before the slot was reused (its
   // fence); the fragment-shader stage in the source scope orders the transition after it anyway.
-  const vk::ImageMemoryBarrier2 begin[] = {
+  return {
       barrier(*t.color.image, vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eUndefined,
               vk::ImageLayout::eColorAttachmentOptimal, S::eFragmentShader, {}, S::eColorAttachmentOutput,
               A::eColorAttachmentWrite | A::eColorAttachmentRead),
@@ -47,7 +46,10 @@ void record_reflection_pass(const vk::raii::CommandBuffer& cmd, const Reflection
               vk::ImageLayout::eDepthAttachmentOptimal, S::eLateFragmentTests, A::eDepthStencilAttachmentWrite,
               S::eEarlyFragmentTests | S::eLateFragmentTests,
               A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite)};
-  cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 2, .pImageMemoryBarriers = begin});
+}
+
+void record_reflection_pass(const vk::raii::CommandBuffer& cmd, const ReflectionTarget& t,
+                            const std::function<void()>& draw) {
   const vk::Extent2D extent = t.color.extent;
   const vk::RenderingAttachmentInfo color{
       .imageView = *t.color.view, .imageLayout = vk::ImageLayout::eColorAttachmentOptimal,
@@ -63,11 +65,12 @@ void record_reflection_pass(const vk::raii::CommandBuffer& cmd, const Reflection
   cmd.setScissor(0, vk::Rect2D{{0, 0}, extent});
   draw();
   cmd.endRendering();
-  const vk::ImageMemoryBarrier2 end = barrier(*t.color.image, vk::ImageAspectFlagBits::eColor,
-                                              vk::ImageLayout::eColorAttachmentOptimal, vk::ImageLayout::eShaderReadOnlyOptimal,
-                                              S::eColorAttachmentOutput, A::eColorAttachmentWrite, S::eFragmentShader,
-                                              A::eShaderSampledRead);
-  cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &end});
+}
+
+vk::ImageMemoryBarrier2 reflection_pass_end(const ReflectionTarget& t) {
+  return barrier(*t.color.image, vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eColorAttachmentOptimal,
+                 vk::ImageLayout::eShaderReadOnlyOptimal, S::eColorAttachmentOutput, A::eColorAttachmentWrite,
+                 S::eFragmentShader, A::eShaderSampledRead);
 }
 
 vk::raii::Sampler create_reflection_sampler(const gpu::Context& ctx) {

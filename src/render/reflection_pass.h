@@ -11,6 +11,7 @@
 // linear_output: no encoding), which the water mixes as it is: no sRGB encoding on store or
 // decoding on sampling, which llvmpipe pays per pixel (docs/perf.md). A sampled colour attachment
 // in that format is a feature every Vulkan device has.
+#include <array>
 #include <functional>
 
 #include "gpu/context.h"
@@ -34,11 +35,15 @@ struct ReflectionTarget {
 // descriptor pointing at the colour view must then be rewritten).
 bool ensure_reflection_target(const gpu::Context& ctx, ReflectionTarget& t, vk::Extent2D frame);
 
-// Records the pass: both images to attachment layouts (contents discarded), cleared, viewport and
-// scissor the target's, `draw()` inside, then the colour image to shader-read for the water's
-// fragment shader.
+// The barriers before the pass: both images to attachment layouts (contents discarded).
+std::array<vk::ImageMemoryBarrier2, 2> reflection_pass_begin(const ReflectionTarget& t);
+// Records the pass (between reflection_pass_begin() and reflection_pass_end(), which the caller
+// records, batched with other passes' barriers: render/barrier_batch.h): cleared, viewport and
+// scissor the target's, `draw()` inside.
 void record_reflection_pass(const vk::raii::CommandBuffer& cmd, const ReflectionTarget& t,
                             const std::function<void()>& draw);
+// The barrier after it: the colour image to shader-read for the water's fragment shader.
+vk::ImageMemoryBarrier2 reflection_pass_end(const ReflectionTarget& t);
 
 // The sampler the water reads the reflection with: bilinear, clamped to the edge (a ripple's shift
 // past the border repeats the border's texel).

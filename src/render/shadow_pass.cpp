@@ -27,13 +27,14 @@ void ensure_shadow_map(const gpu::Context& ctx, Image& map, std::uint32_t size) 
                      vk::ImageAspectFlagBits::eDepth, "sun shadow map");
 }
 
-void record_shadow_pass(const vk::raii::CommandBuffer& cmd, const Image& map, const std::function<void()>& draw) {
+vk::ImageMemoryBarrier2 shadow_pass_begin(const Image& map) {
   // The previous frame's reads of this slot's map finished before the slot was reused (its fence);
   // the fragment-shader stage in the source scope orders the transition after them anyway.
-  const vk::ImageMemoryBarrier2 begin =
-      barrier(*map.image, vk::ImageLayout::eUndefined, vk::ImageLayout::eDepthAttachmentOptimal, S::eFragmentShader, {},
-              S::eEarlyFragmentTests | S::eLateFragmentTests, A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite);
-  cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &begin});
+  return barrier(*map.image, vk::ImageLayout::eUndefined, vk::ImageLayout::eDepthAttachmentOptimal, S::eFragmentShader, {},
+                 S::eEarlyFragmentTests | S::eLateFragmentTests, A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite);
+}
+
+void record_shadow_pass(const vk::raii::CommandBuffer& cmd, const Image& map, const std::function<void()>& draw) {
   const vk::RenderingAttachmentInfo depth{
       .imageView = *map.view, .imageLayout = vk::ImageLayout::eDepthAttachmentOptimal,
       .loadOp = vk::AttachmentLoadOp::eClear, .storeOp = vk::AttachmentStoreOp::eStore,
@@ -44,16 +45,16 @@ void record_shadow_pass(const vk::raii::CommandBuffer& cmd, const Image& map, co
   cmd.setScissor(0, vk::Rect2D{{0, 0}, extent});
   draw();
   cmd.endRendering();
-  const vk::ImageMemoryBarrier2 end =
-      barrier(*map.image, vk::ImageLayout::eDepthAttachmentOptimal, vk::ImageLayout::eShaderReadOnlyOptimal,
-              S::eLateFragmentTests, A::eDepthStencilAttachmentWrite, S::eFragmentShader, A::eShaderSampledRead);
-  cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &end});
 }
 
-void record_shadow_map_unused(const vk::raii::CommandBuffer& cmd, const Image& map) {
-  const vk::ImageMemoryBarrier2 b = barrier(*map.image, vk::ImageLayout::eUndefined, vk::ImageLayout::eShaderReadOnlyOptimal,
-                                            S::eFragmentShader, {}, S::eFragmentShader, A::eShaderSampledRead);
-  cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &b});
+vk::ImageMemoryBarrier2 shadow_pass_end(const Image& map) {
+  return barrier(*map.image, vk::ImageLayout::eDepthAttachmentOptimal, vk::ImageLayout::eShaderReadOnlyOptimal,
+                 S::eLateFragmentTests, A::eDepthStencilAttachmentWrite, S::eFragmentShader, A::eShaderSampledRead);
+}
+
+vk::ImageMemoryBarrier2 shadow_map_unused(const Image& map) {
+  return barrier(*map.image, vk::ImageLayout::eUndefined, vk::ImageLayout::eShaderReadOnlyOptimal, S::eFragmentShader, {},
+                 S::eFragmentShader, A::eShaderSampledRead);
 }
 
 vk::raii::Sampler create_shadow_sampler(const gpu::Context& ctx) {

@@ -118,7 +118,7 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
                                .name = kWaterNames[v]}));
   }
   p.land_mirror = create(ctx, p.layout, kReflectionFormat, depth_format,
-                         {.vert = land_mirror_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true,
+                         {.vert = land_mirror_vert_spirv(), .frag = land_mirror_frag_spirv(), .land_vertices = true,
                           .linear_output = true, .name = "land, mirrored"});
   p.sky = create(ctx, p.layout, color_format, depth_format,
                  {.vert = sky_vert_spirv(), .frag = sky_frag_spirv(), .depth_write = false, .name = "sky"});
