@@ -3,6 +3,8 @@
 #include <bit>
 #include <cstring>
 
+#include <vulkan/vulkan_format_traits.hpp>
+
 #include "core/errors.h"
 
 namespace pond::gpu {
@@ -85,9 +87,8 @@ void upload(const Context& ctx, const Buffer& dst, std::span<const std::byte> by
   });
 }
 
-vk::raii::BufferView create_texel_view(const Context& ctx, const Buffer& buffer, vk::Format format,
-                                       vk::DeviceSize texel_bytes, const char* what) {
-  const vk::DeviceSize texels = buffer.size / texel_bytes;
+vk::raii::BufferView create_texel_view(const Context& ctx, const Buffer& buffer, vk::Format format, const char* what) {
+  const vk::DeviceSize texels = buffer.size / vk::blockSize(format);
   const std::uint32_t limit = ctx.physical().getProperties().limits.maxTexelBufferElements;
   if (texels > limit)
     throw RuntimeError(std::string(what) + " needs a texel buffer of " + std::to_string(texels) +

@@ -42,11 +42,10 @@ std::uint32_t choose_memory_type(const vk::PhysicalDeviceMemoryProperties& props
 Buffer create_buffer(const Context& ctx, vk::DeviceSize size, vk::BufferUsageFlags usage, MemoryUse use,
                      const std::string& name);
 
-// A texel-buffer view of the whole of `buffer` as texels of `format`, `texel_bytes` each. Throws
-// RuntimeError naming `what` when the view would hold more texels than the device's
-// maxTexelBufferElements (at least 65536 on every device; a 257^2 grid's state needs more).
-vk::raii::BufferView create_texel_view(const Context& ctx, const Buffer& buffer, vk::Format format,
-                                       vk::DeviceSize texel_bytes, const char* what);
+// A texel-buffer view of the whole of `buffer` as texels of `format`. Throws RuntimeError naming
+// `what` when the view would hold more texels than the device's maxTexelBufferElements (at least
+// 65536 on every device; a 257^2 grid's state needs more).
+vk::raii::BufferView create_texel_view(const Context& ctx, const Buffer& buffer, vk::Format format, const char* what);
 
 // Fills a device buffer from host bytes through a temporary upload buffer (waits for the copy).
 void upload(const Context& ctx, const Buffer& dst, std::span<const std::byte> bytes);

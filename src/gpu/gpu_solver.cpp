@@ -183,10 +183,10 @@ void GpuSolver::upload_kinds_and_perturbations() {
 void GpuSolver::create_descriptor_sets() {
   using DT = vk::DescriptorType;
   for (int c = 0; c < 2; ++c) {
-    state_r32_[c] = create_texel_view(ctx_, state_[c], vk::Format::eR32Sfloat, 4, "the GPU solver's state");
-    state_rgba32_[c] = create_texel_view(ctx_, state_[c], vk::Format::eR32G32B32A32Sfloat, 16, "the GPU solver's state");
+    state_r32_[c] = create_texel_view(ctx_, state_[c], vk::Format::eR32Sfloat, "the GPU solver's state");
+    state_rgba32_[c] = create_texel_view(ctx_, state_[c], vk::Format::eR32G32B32A32Sfloat, "the GPU solver's state");
   }
-  kinds_rgba8_ = create_texel_view(ctx_, kinds_, vk::Format::eR8G8B8A8Uint, 4, "the GPU solver's node kinds");
+  kinds_rgba8_ = create_texel_view(ctx_, kinds_, vk::Format::eR8G8B8A8Uint, "the GPU solver's node kinds");
 
   constexpr std::uint32_t kSetsPerPipeline = 2;
   const std::vector<DT> layouts[] = {step_bindings(), perturb_bindings(), normals_bindings()};

@@ -124,8 +124,7 @@ CausticsPass::CausticsPass(const gpu::Context& ctx, const sim::WaterModel& model
 vk::BufferView CausticsPass::view_of(const gpu::Buffer& buffer, vk::Format format) {
   for (const auto& [b, view] : views_)
     if (b == *buffer.buffer) return *view;
-  const vk::DeviceSize texel_bytes = format == vk::Format::eR32Sfloat ? 4 : 16;  // R32 or R32G32B32A32
-  views_.emplace_back(*buffer.buffer, gpu::create_texel_view(ctx_, buffer, format, texel_bytes, "the caustics pass"));
+  views_.emplace_back(*buffer.buffer, gpu::create_texel_view(ctx_, buffer, format, "the caustics pass"));
   return *views_.back().second;
 }
 
