@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "drawn_session.h"
 #include "golden.h"
 #include "gpu_fixture.h"
 #include "image_compare.h"
+#include "scene_frame.h"
 #include "core/png.h"
 #include "render/caustics_pass.h"
 #include "render/frame_loop.h"
@@ -92,17 +92,7 @@ class CausticsTest : public GpuTest {
   }
 
   Rgba render(const std::string& json, std::int64_t steps, bool caustics) {
-    const scene::Scene scene = scene::parse_scene(json, "test");
-    DrawnSession drawn(ctx(), scene, {}, render::RenderTarget::kFormat);
-    const render::RenderTarget target(ctx(), kWidth, kHeight);
-    drawn.session.advance(steps);
-    render::FrameView view;
-    view.camera = drawn.loop.default_camera(kWidth, kHeight);
-    view.steps = 0;
-    view.wait = true;
-    view.effects.caustics = caustics;
-    drawn.loop.frame(target.frame_target(), view);
-    return Rgba{kWidth, kHeight, target.read_rgba()};
+    return render_scene_frame(ctx(), json, view::Effects{.caustics = caustics}, kWidth, kHeight, steps);
   }
 };
 

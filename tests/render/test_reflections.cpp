@@ -9,15 +9,13 @@
 #include <string>
 #include <vector>
 
-#include "drawn_session.h"
 #include "golden.h"
 #include "gpu_fixture.h"
 #include "image_compare.h"
 #include "pixel_probe.h"
-#include "render/frame_loop.h"
-#include "render/render_target.h"
-#include "render/tree_drawable.h"
+#include "scene_frame.h"
 #include "scene/scene.h"
+#include "sim/model.h"
 #include "view/view_projection.h"
 
 namespace pond::test {
@@ -40,20 +38,7 @@ const char* kIsland = R"({"constraints": [{"kind": "fixed", "rows": [30, 35], "c
 class ReflectionTest : public GpuTest {
  protected:
   Rgba render(const std::string& json, bool reflections, std::int64_t steps = 0) {
-    const scene::Scene scene = scene::parse_scene(json, "test");
-    DrawnSession drawn(ctx(), scene, {}, render::RenderTarget::kFormat);
-    render::FrameLoop& loop = drawn.loop;
-    render::TreeDrawable tree(ctx(), loop, *scene.tree, scene.wind);
-    loop.add_drawable(tree);
-    const render::RenderTarget target(ctx(), kWidth, kHeight);
-    drawn.session.advance(steps);
-    render::FrameView view;
-    view.camera = loop.default_camera(kWidth, kHeight);
-    view.steps = 0;
-    view.wait = true;
-    view.effects.reflections = reflections;
-    loop.frame(target.frame_target(), view);
-    return Rgba{kWidth, kHeight, target.read_rgba()};
+    return render_scene_frame(ctx(), json, view::Effects{.reflections = reflections}, kWidth, kHeight, steps);
   }
 };
 

@@ -7,18 +7,14 @@
 // Regenerate the goldens after a deliberate change: POND_REGENERATE_GOLDENS=1 ctest -L image.
 #include <array>
 #include <cmath>
-#include <string>
 
-#include "drawn_session.h"
 #include "golden.h"
 #include "gpu_fixture.h"
 #include "image_compare.h"
 #include "pixel_probe.h"
-#include "render/body_drawable.h"
-#include "render/frame_loop.h"
-#include "render/render_target.h"
-#include "render/tree_drawable.h"
+#include "scene_frame.h"
 #include "scene/scene.h"
+#include "sim/model.h"
 #include "view/sun_shadow.h"
 #include "view/view_projection.h"
 
@@ -56,22 +52,7 @@ class ShadowTest : public GpuTest {
  protected:
   // One frame of `json` (after `steps` steps) with shadows on or off, its tree and bodies drawn.
   Rgba render(const char* json, bool shadows, std::int64_t steps = 0) {
-    const scene::Scene scene = scene::parse_scene(json, "test");
-    DrawnSession drawn(ctx(), scene, {}, render::RenderTarget::kFormat);
-    render::FrameLoop& loop = drawn.loop;
-    std::optional<render::TreeDrawable> tree;
-    if (scene.tree) loop.add_drawable(tree.emplace(ctx(), loop, *scene.tree, scene.wind));
-    render::BodyDrawable bodies(ctx(), loop);
-    loop.add_drawable(bodies);
-    const render::RenderTarget target(ctx(), kWidth, kHeight);
-    drawn.session.advance(steps);
-    render::FrameView view;
-    view.camera = loop.default_camera(kWidth, kHeight);
-    view.steps = 0;
-    view.wait = true;
-    view.effects.shadows = shadows;
-    loop.frame(target.frame_target(), view);
-    return Rgba{kWidth, kHeight, target.read_rgba()};
+    return render_scene_frame(ctx(), json, view::Effects{.shadows = shadows}, kWidth, kHeight, steps);
   }
 
   static std::array<float, 16> view_proj(const char* json) {
