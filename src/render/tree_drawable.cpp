@@ -77,6 +77,7 @@ struct TreeDrawable::Impl {
   tree::TreeMesh mesh;
   tree::TreeBounds bounds;
   float mesh_reach = 0.0f;  // the largest offset of a mesh vertex from its skeleton vertex (tree units)
+  mutable std::vector<tree::Vec3> bent;  // add_shadow_casters()'s skeleton, kept between frames
   gpu::Buffer vertices, indices, skeleton, parents;
   vk::raii::DescriptorPool pool = nullptr;
   std::vector<SlotResources> slots;
@@ -299,7 +300,8 @@ void TreeDrawable::draw_reflected(const FrameInfo& frame) {
 // wind, and what decides how much of the screen samples the shadow map.
 void TreeDrawable::add_shadow_casters(std::vector<view::ShadowCaster>& casters) const {
   const Impl& m = *impl_;
-  std::vector<tree::Vec3> bent(m.grown.size());
+  std::vector<tree::Vec3>& bent = m.bent;
+  bent.resize(m.grown.size());
   for (const Instance& inst : m.instances) {
     tree::bend_tree(m.grown, inst.frame, bent);
     view::ShadowCaster box{{inst.base.x, inst.base.y, inst.base.z}, {inst.base.x, inst.base.y, inst.base.z}};
