@@ -84,7 +84,9 @@ double ms_since(std::chrono::steady_clock::time_point& t) {
 
 // One frame slot: everything a frame in flight owns.
 struct Slot {
-  vk::raii::CommandBuffer cmd = nullptr;
+  vk::raii::CommandBuffer early = nullptr;  // the passes before the main one (simulate())
+  vk::raii::CommandBuffer cmd = nullptr;    // the main pass (draw())
+  vk::raii::Fence early_done = nullptr;     // signalled when the slot's last early passes finished
   vk::raii::Fence done = nullptr;  // signalled when the slot's last draw finished
   gpu::Buffer uniforms, indices;        // host-visible: WaterFrame, the LOD's indices
   vk::raii::DescriptorSet set = nullptr;
@@ -133,10 +135,12 @@ struct FrameLoop::Impl {
                                                    .maxSets = kFramesInFlight, .poolSizeCount = 3, .pPoolSizes = sizes});
     vk::raii::CommandBuffers cmds(ctx.device(), vk::CommandBufferAllocateInfo{.commandPool = *pool,
                                                                               .level = vk::CommandBufferLevel::ePrimary,
-                                                                              .commandBufferCount = kFramesInFlight});
+                                                                              .commandBufferCount = 2 * kFramesInFlight});
     for (std::uint32_t k = 0; k < kFramesInFlight; ++k) {
       Slot s;
-      s.cmd = std::move(cmds[k]);
+      s.early = std::move(cmds[2 * k]);
+      s.cmd = std::move(cmds[2 * k + 1]);
+      s.early_done = vk::raii::Fence(ctx.device(), vk::FenceCreateInfo{.flags = vk::FenceCreateFlagBits::eSignaled});
       s.done = vk::raii::Fence(ctx.device(), vk::FenceCreateInfo{.flags = vk::FenceCreateFlagBits::eSignaled});
       s.uniforms = gpu::create_buffer(ctx, sizeof(WaterFrame), BU::eUniformBuffer, gpu::MemoryUse::upload,
                                  "water frame uniforms, slot " + std::to_string(k));
@@ -183,7 +187,8 @@ struct FrameLoop::Impl {
   }
 
   void wait(const Slot& s) const {
-    if (ctx.device().waitForFences(*s.done, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
+    const vk::Fence fences[] = {*s.early_done, *s.done};
+    if (ctx.device().waitForFences(fences, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
       throw RuntimeError("waiting for a frame failed");
   }
   void wait_all() const {
@@ -195,7 +200,9 @@ struct FrameLoop::Impl {
   struct Simulated {
     std::uint32_t slot = 0;
     FrameView view;
-    lod::Camera camera;  // view.camera at the size the LOD was built for
+    lod::Camera camera;  // view.camera at the size the LOD and the early passes were made for
+    std::array<float, 16> view_proj{};  // the camera's
+    std::optional<FrameShadow> shadow;  // the sun's shadow map this frame, if any
     WaterSource::DrawBuffers bufs;
     std::size_t index_count = 0;
     FrameStats stats;
@@ -223,16 +230,44 @@ struct FrameLoop::Impl {
     f.bufs = water->prepare(slot);  // 2. normals, positions -> CPU
     f.state_revision = session.state_revision();
     f.stats.simulate_ms = ms_since(t);
-    build_lod(f, extent);  // 3. LOD into the slot's indices
+    // 3. The passes before the main one, submitted now: the device draws them while the CPU builds
+    // the LOD (they do not read it).
+    set_up_frame(f, extent);
+    record_early(s.early, s, f, true);
+    submit_early(s);
+    f.stats.draw_ms = ms_since(t);
+    build_lod(f);  // 4. LOD into the slot's indices
     f.stats.lod_ms = ms_since(t);
     simulated = f;
     return f.stats;
   }
 
-  void build_lod(Simulated& f, vk::Extent2D extent) {
+  // The frame's camera at `extent`, the drawables' and the water's per-frame state for it, and the
+  // shadow map's fit: what every pass of the frame reads. The slot must be idle.
+  void set_up_frame(Simulated& f, vk::Extent2D extent) {
+    Slot& s = slots[f.slot];
     f.camera = f.view.camera;
     f.camera.width = static_cast<int>(extent.width);
     f.camera.height = static_cast<int>(extent.height);
+    f.view_proj = view::view_projection(f.camera, model());
+    ensure_reflection_target(ctx, s.reflection, extent);  // made even when off: the set is whole
+    const FrameInfo info = frame_info(s.early, f);
+    for (PassDrawable* d : drawables) d->prepare(info);
+    f.shadow = f.view.effects.shadows ? fit_shadow(f.view_proj, extent) : std::nullopt;
+    ensure_shadow_map(ctx, s.shadow, f.shadow ? f.shadow->view.size : 0);  // made even when off: the set is whole
+    bind_buffers(f.slot, s, f.bufs);
+    write_frame_uniforms(s, f.camera, f.view_proj, f.bufs.stride, f.bufs.pitch, f.shadow);
+  }
+
+  FrameInfo frame_info(const vk::raii::CommandBuffer& cmd, const Simulated& f) const {
+    return {cmd, f.slot, f.view_proj.data(),
+            {static_cast<float>(f.camera.eye[0]), static_cast<float>(f.camera.eye[1]),
+             static_cast<float>(f.camera.eye[2])},
+            {static_cast<std::uint32_t>(f.camera.width), static_cast<std::uint32_t>(f.camera.height)},
+            static_cast<double>(session.steps_done()) * model().physics.dt, lighting};
+  }
+
+  void build_lod(Simulated& f) {
     Slot& s = slots[f.slot];
     f.index_count = f.view.lod_tolerance_px <= 0
                         ? full_index_count
@@ -249,33 +284,25 @@ struct FrameLoop::Impl {
     Slot& s = slots[f.slot];
     next = (f.slot + 1) % kFramesInFlight;
     auto t = std::chrono::steady_clock::now();
-    if (static_cast<std::uint32_t>(f.camera.width) != target.extent.width ||
-        static_cast<std::uint32_t>(f.camera.height) != target.extent.height) {
-      build_lod(f, target.extent);  // the window was resized between the halves
+    const bool resized = static_cast<std::uint32_t>(f.camera.width) != target.extent.width ||
+                         static_cast<std::uint32_t>(f.camera.height) != target.extent.height;
+    if (resized) {  // the window was resized between the halves: the early passes are drawn again
+      wait(s);      // (the submitted ones may still read the slot's uniforms)
+      set_up_frame(f, target.extent);
+      build_lod(f);
       f.stats.lod_ms += ms_since(t);
     }
     const bool full = f.view.lod_tolerance_px <= 0;
-    const std::array<float, 16> view_proj = view::view_projection(f.camera, model());  // 4. draw
-    const CausticsPush caustics_constants =
-        caustics_push(model(), unit_sun(), session.scene().view.floor_depth, f.bufs.stride, f.bufs.pitch);
-    ensure_depth(s, target.extent);
-    ensure_reflection_target(ctx, s.reflection, target.extent);  // made even when off: the set is whole
-    const FrameInfo info{s.cmd, f.slot, view_proj.data(),
-                         {static_cast<float>(f.camera.eye[0]), static_cast<float>(f.camera.eye[1]),
-                          static_cast<float>(f.camera.eye[2])},
-                         target.extent, static_cast<double>(session.steps_done()) * model().physics.dt,
-                         lighting};
-    for (PassDrawable* d : drawables) d->prepare(info);
-    const std::optional<FrameShadow> shadow =
-        f.view.effects.shadows ? fit_shadow(view_proj, target.extent) : std::nullopt;
-    ensure_shadow_map(ctx, s.shadow, shadow ? shadow->view.size : 0);  // made even when off: the set is whole
-    bind_buffers(f.slot, s, f.bufs);
-    write_frame_uniforms(s, f.camera, view_proj, f.bufs.stride, f.bufs.pitch, shadow);
-    record(s, target, info, full ? full_indices : s.indices, static_cast<std::uint32_t>(f.index_count), f.view, shadow,
-           caustics_constants);
+    ensure_depth(s, target.extent);  // 5. draw
+    s.cmd.reset();
+    s.cmd.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
+    if (resized) record_early(s.cmd, s, f, false);
+    record_main(s, target, frame_info(s.cmd, f), full ? full_indices : s.indices,
+                static_cast<std::uint32_t>(f.index_count), f.view, f.shadow);
+    s.cmd.end();
     submit(s, target);
     if (f.view.wait) wait(s);
-    f.stats.draw_ms = ms_since(t);
+    f.stats.draw_ms += ms_since(t);
     return f.stats;
   }
 
@@ -403,35 +430,32 @@ struct FrameLoop::Impl {
     return {c(0), c(1), c(2), 1.0f};
   }
 
-  void record(const Slot& s, const FrameTarget& target, const FrameInfo& info, const gpu::Buffer& indices,
-              std::uint32_t index_count, const FrameView& view, const std::optional<FrameShadow>& shadow,
-              const CausticsPush& caustics_constants) const {
-    const vk::raii::CommandBuffer& cmd = s.cmd;
-    cmd.reset();
-    cmd.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
-    // The passes before the main one (caustics, shadow map, reflection) read nothing another writes,
-    // so their barriers go in two batches: one before them all, one after (render/barrier_batch.h).
-    // Before: compute (substeps, normals) -> vertex shader (and caustics) reads of state and normals;
-    // every image to the layout it is written in. The color barrier waits at color output, where
-    // the swapchain's acquire semaphore is waited.
-    const bool reflections = view.effects.reflections;
+  // The passes before the main one (caustics, shadow map, reflection) into `cmd`: whole (begun,
+  // ended) when `own`, else inside draw()'s. They read nothing another writes, so their barriers go
+  // in two batches: one before them all, one after (render/barrier_batch.h).
+  void record_early(const vk::raii::CommandBuffer& cmd, const Slot& s, const Simulated& f, bool own) const {
+    if (own) {
+      cmd.reset();
+      cmd.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
+    }
+    const FrameInfo info = frame_info(cmd, f);
+    const std::optional<FrameShadow>& shadow = f.shadow;
+    const bool reflections = f.view.effects.reflections, caustics_on = f.view.effects.caustics;
+    // Before: compute (substeps, normals) -> vertex shader (this pass's and the main one's, later in
+    // submission order) and caustics reads of state and normals; each image to the layout it is
+    // written in.
     BarrierBatch batch;
     batch.memory.push_back({.srcStageMask = S::eComputeShader, .srcAccessMask = A::eShaderWrite,
                             .dstStageMask = S::eVertexShader | S::eComputeShader, .dstAccessMask = A::eShaderRead});
-    batch.images = {layout_barrier(target.image, vk::ImageAspectFlagBits::eColor, target.old_layout,
-                                   vk::ImageLayout::eColorAttachmentOptimal, S::eColorAttachmentOutput, {},
-                                   S::eColorAttachmentOutput, A::eColorAttachmentWrite | A::eColorAttachmentRead),
-                    layout_barrier(*s.depth.image, vk::ImageAspectFlagBits::eDepth, vk::ImageLayout::eUndefined,
-                                   vk::ImageLayout::eDepthAttachmentOptimal, S::eLateFragmentTests,
-                                   A::eDepthStencilAttachmentWrite, S::eEarlyFragmentTests | S::eLateFragmentTests,
-                                   A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite)};
-    if (view.effects.caustics) batch.images.push_back(caustics.begin_barrier(info.slot));
+    if (caustics_on) batch.images.push_back(caustics.begin_barrier(info.slot));
     if (shadow) batch.images.push_back(shadow_pass_begin(s.shadow));
     if (reflections)
       for (const vk::ImageMemoryBarrier2& b : reflection_pass_begin(s.reflection)) batch.images.push_back(b);
     batch.record(cmd);
 
-    if (view.effects.caustics) caustics.record_dispatch(cmd, info.slot, caustics_constants);
+    if (caustics_on)
+      caustics.record_dispatch(cmd, info.slot, caustics_push(model(), unit_sun(), session.scene().view.floor_depth,
+                                                             f.bufs.stride, f.bufs.pitch));
     if (shadow) {
       FrameInfo sun = info;
       sun.view_proj = shadow->view.clip.data();
@@ -454,10 +478,35 @@ struct FrameLoop::Impl {
     }
     // After: what they wrote to shader-read for the main pass's fragment shaders (a frame without
     // shadows still puts the map, which its set binds, in that layout).
-    if (view.effects.caustics) batch.images.push_back(caustics.end_barrier(info.slot));
+    if (caustics_on) batch.images.push_back(caustics.end_barrier(info.slot));
     batch.images.push_back(shadow ? shadow_pass_end(s.shadow) : shadow_map_unused(s.shadow));
     if (reflections) batch.images.push_back(reflection_pass_end(s.reflection));
     batch.record(cmd);
+    if (own) cmd.end();
+  }
+
+  void submit_early(const Slot& s) const {
+    ctx.device().resetFences(*s.early_done);
+    const vk::CommandBufferSubmitInfo cmd_info{.commandBuffer = *s.early};
+    ctx.queue().submit2(vk::SubmitInfo2{.commandBufferInfoCount = 1, .pCommandBufferInfos = &cmd_info}, *s.early_done);
+  }
+
+  // The main pass into the caller's image, after the early passes in submission order.
+  void record_main(const Slot& s, const FrameTarget& target, const FrameInfo& info, const gpu::Buffer& indices,
+                   std::uint32_t index_count, const FrameView& view, const std::optional<FrameShadow>& shadow) const {
+    const vk::raii::CommandBuffer& cmd = info.cmd;
+    const bool reflections = view.effects.reflections;
+    // The target and the depth buffer to their attachment layouts. The color barrier waits at color
+    // output, where the swapchain's acquire semaphore is waited.
+    const vk::ImageMemoryBarrier2 images[] = {
+        layout_barrier(target.image, vk::ImageAspectFlagBits::eColor, target.old_layout,
+                       vk::ImageLayout::eColorAttachmentOptimal, S::eColorAttachmentOutput, {},
+                       S::eColorAttachmentOutput, A::eColorAttachmentWrite | A::eColorAttachmentRead),
+        layout_barrier(*s.depth.image, vk::ImageAspectFlagBits::eDepth, vk::ImageLayout::eUndefined,
+                       vk::ImageLayout::eDepthAttachmentOptimal, S::eLateFragmentTests,
+                       A::eDepthStencilAttachmentWrite, S::eEarlyFragmentTests | S::eLateFragmentTests,
+                       A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite)};
+    cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 2, .pImageMemoryBarriers = images});
 
     const vk::RenderingAttachmentInfo color{
         .imageView = target.view, .imageLayout = vk::ImageLayout::eColorAttachmentOptimal,
@@ -528,7 +577,6 @@ struct FrameLoop::Impl {
                                                .dstStageMask = S::eComputeShader | S::eCopy};
     cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &vertex_to_compute,
                                             .imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &end_image});
-    cmd.end();
   }
 
   void submit(const Slot& s, const FrameTarget& target) const {

@@ -5,23 +5,26 @@
 // the loop advances it by the frame's steps. One frame is one pass down the pipeline of
 // ARCHITECTURE.md:
 //
-//   substeps (the session's solver: GPU compute or CPU) -> normals -> LOD (CPU, from the new
-//     positions) -> draw (the caustics' compute pass when on, render/caustics_pass.h; the sun's
-//     shadow map when on, render/shadow_pass.h; the planar reflection's pass when on,
-//     render/reflection_pass.h; then dynamic rendering into the caller's image: land, water, LOD
+//   substeps (the session's solver: GPU compute or CPU) -> normals -> the passes before the main
+//     one, submitted (the caustics' compute pass when on, render/caustics_pass.h; the sun's shadow
+//     map when on, render/shadow_pass.h; the planar reflection's pass when on,
+//     render/reflection_pass.h) -> LOD (CPU, from the new positions, while the device draws those
+//     passes) -> the main pass: dynamic rendering into the caller's image (land, water, LOD
 //     wireframe, extra drawables, sky)
 //
 // Synchronization: the compute work (substeps + normals) is submitted and waited for, because the
 // CPU LOD builder needs this frame's positions (read straight from the state memory when it is
-// host-visible, as on lavapipe, else copied back). The draw is recorded into the frame slot's own
-// command buffer; its vertex shader reads the state and normals buffers as storage buffers behind
-// a compute -> vertex-shader barrier, and its end carries a vertex-shader -> compute barrier so the
-// next frame's substeps cannot overwrite a buffer the draw still reads. Index buffers, uniforms and
-// CPU-solver vertex buffers are per frame slot (kFramesInFlight), each slot guarded by its fence:
-// writing frame N+1's indices never waits for frame N's draw.
+// host-visible, as on lavapipe, else copied back). The early passes are recorded into the frame
+// slot's first command buffer and the main pass into its second, submitted after them on the same
+// queue: the early one starts with a compute -> vertex-shader barrier (both read the state and
+// normals buffers as storage buffers; a barrier covers what is submitted after it), and the main
+// one ends with a vertex-shader -> compute barrier so the next frame's substeps cannot overwrite a
+// buffer the draw still reads. Index buffers, uniforms and CPU-solver vertex buffers are per frame
+// slot (kFramesInFlight), each slot guarded by its two fences: writing frame N+1's indices never
+// waits for frame N's draw.
 //
-// A frame is two calls, simulate() (substeps, normals, LOD: the part that needs no target) and
-// draw(target); frame() makes both. The demo drives it like this (per frame):
+// A frame is two calls, simulate() (substeps, normals, the early passes, LOD: the part that needs
+// no target) and draw(target); frame() makes both. The demo drives it like this (per frame):
 //     loop.simulate(view_params, swapchain extent)
 //     acquire swapchain image i (semaphore `acquired[slot]`)
 //     loop.draw(FrameTarget{image, view, format, extent, eUndefined, ePresentSrcKHR,
@@ -135,14 +138,15 @@ class FrameLoop {
   // One frame, see the top of this file: simulate(view, target.extent), then draw(target).
   FrameStats frame(const FrameTarget& target, const FrameView& view);
   // The first half of a frame: waits for its slot, advances the session view.steps, computes the
-  // normals and builds the LOD for `extent` (the size of the target draw() will get). Stats:
-  // simulate, LOD.
+  // normals, submits the passes before the main one and builds the LOD, all for `extent` (the
+  // size of the target draw() will get). Stats: simulate, LOD, and the early passes' recording in
+  // draw.
   FrameStats simulate(const FrameView& view, vk::Extent2D extent);
   // Whether simulate() ran and its frame is not drawn yet, with the session's water unchanged
   // since (a splash or an edit in between makes the next frame simulate again).
   bool simulated() const;
-  // The second half: draws the simulated frame into `target` (rebuilding the LOD first if the
-  // target's size differs from the one simulate() was given). Throws std::logic_error without a
+  // The second half: draws the simulated frame into `target` (rebuilding the LOD and the early
+  // passes first if the target's size differs from the one simulate() was given). Throws std::logic_error without a
   // simulated frame. Stats: the whole frame's.
   FrameStats draw(const FrameTarget& target);
   // Waits until every submitted frame is drawn (before reading back, resizing, tearing down).

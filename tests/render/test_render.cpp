@@ -188,5 +188,29 @@ TEST_F(RenderTest, RunTimeSplashEqualsTheScenePerturbation) {
   EXPECT_EQ(compare(render({.steps = 24}), draw(d, {.steps = 24}), 0).share, 0.0);
 }
 
+// The demo simulates a frame for the swapchain's size and may draw it into a recreated swapchain of
+// another size: the passes simulate() submitted for the old size (the reflection's target among
+// them) are made again for the new one, and the picture is the one drawn at that size directly.
+TEST_F(RenderTest, AFrameSimulatedForAnotherSizeIsDrawnAsAtItsOwn) {
+  const scene::Scene scene = scene::parse_scene(std::string(scene::default_scene_json()), "test");
+  auto frame = [&](bool resized) {
+    DrawnSession d(ctx(), scene, {}, render::RenderTarget::kFormat);
+    const render::RenderTarget target(ctx(), kWidth, kHeight);
+    d.session.advance(24);
+    render::FrameView view;  // every effect on
+    view.camera = d.loop.default_camera(kWidth, kHeight);
+    view.steps = 0;
+    view.wait = true;
+    if (resized) {
+      d.loop.simulate(view, {kWidth / 2, kHeight + 40});
+      d.loop.draw(target.frame_target());
+    } else {
+      d.loop.frame(target.frame_target(), view);
+    }
+    return Rgba{kWidth, kHeight, target.read_rgba()};
+  };
+  EXPECT_EQ(compare(frame(true), frame(false), 0).share, 0.0);
+}
+
 }  // namespace
 }  // namespace pond::test
