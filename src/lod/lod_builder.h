@@ -51,6 +51,10 @@ class LodBuilder {
                     std::span<std::uint32_t> out);
 
   const BuildStats& stats() const { return stats_; }
+  // The world positions the last build() read, by node index (row * cols + col).
+  std::span<const float> world_x() const { return x_; }
+  std::span<const float> world_y() const { return y_; }
+  std::span<const float> world_z() const { return z_; }
   const GridHierarchy& grid() const { return grid_; }
 
  private:

@@ -15,6 +15,7 @@
 #include "render/reflection_pass.h"
 #include "render/shadow_pass.h"
 #include "view/land_mesh.h"
+#include "view/triangle_cull.h"
 #include "render/render_layout.h"
 #include "render/render_target.h"
 #include "view/view_projection.h"
@@ -70,8 +71,20 @@ constexpr double kShadowWaveMargin = 1.0;
 // One frame's shadow map: its view and the target's rectangles where its shadows can show.
 struct FrameShadow {
   view::SunShadowView view;
-  std::vector<vk::Rect2D> rects;
+  std::vector<view::PixelRect> pixels;
+  std::vector<vk::Rect2D> rects;  // the same
 };
+
+// Writes `m`'s index lists into `b` (host-visible), made larger first if they do not fit; the
+// buffer must be idle.
+void write_indices(const gpu::Context& ctx, gpu::Buffer& b, const view::CulledMesh& m, const std::string& name) {
+  const vk::DeviceSize bytes = std::max<std::size_t>(1, m.indices.size()) * sizeof(std::uint32_t);
+  if (!*b.buffer || b.size < bytes)
+    b = gpu::create_buffer(ctx, std::max<vk::DeviceSize>(bytes, 2 * b.size), vk::BufferUsageFlagBits::eIndexBuffer,
+                           gpu::MemoryUse::upload, name);
+  std::memcpy(b.mapped, m.indices.data(), m.indices.size() * sizeof(std::uint32_t));
+  b.flush(ctx, bytes);
+}
 
 double ms_since(std::chrono::steady_clock::time_point& t) {
   const auto now = std::chrono::steady_clock::now();
@@ -88,7 +101,8 @@ struct Slot {
   vk::raii::CommandBuffer cmd = nullptr;    // the main pass (draw())
   vk::raii::Fence early_done = nullptr;     // signalled when the slot's last early passes finished
   vk::raii::Fence done = nullptr;  // signalled when the slot's last draw finished
-  gpu::Buffer uniforms, indices;        // host-visible: WaterFrame, the LOD's indices
+  gpu::Buffer uniforms;                 // host-visible: WaterFrame
+  gpu::Buffer indices, land_indices;    // host-visible: the water's and the land's culled lists
   vk::raii::DescriptorSet set = nullptr;
   Image depth;
   ReflectionTarget reflection;
@@ -109,6 +123,10 @@ struct FrameLoop::Impl {
   CausticsPass caustics;
   gpu::Buffer land, mirrored_land, full_indices;  // mirrored_land: the reflection's (view::mirrored_walls)
   std::uint32_t land_vertices = 0, mirrored_land_vertices = 0, full_index_count = 0;
+  std::vector<float> land_x, land_y, land_z;   // the land's vertices, for culling (view/triangle_cull.h)
+  std::vector<std::uint32_t> land_triangles;   // 0, 1, 2, ...: the land is a triangle list
+  std::vector<std::uint32_t> lod_indices;      // the LOD's triangles before culling
+  view::CulledMesh culled;                     // scratch
   vk::raii::CommandPool pool = nullptr;
   vk::raii::DescriptorPool descriptor_pool = nullptr;
   std::vector<Slot> slots;
@@ -144,8 +162,6 @@ struct FrameLoop::Impl {
       s.done = vk::raii::Fence(ctx.device(), vk::FenceCreateInfo{.flags = vk::FenceCreateFlagBits::eSignaled});
       s.uniforms = gpu::create_buffer(ctx, sizeof(WaterFrame), BU::eUniformBuffer, gpu::MemoryUse::upload,
                                  "water frame uniforms, slot " + std::to_string(k));
-      s.indices = gpu::create_buffer(ctx, std::max<std::size_t>(1, lod.max_indices()) * 4, BU::eIndexBuffer,
-                                gpu::MemoryUse::upload, "water LOD indices, slot " + std::to_string(k));
       const vk::DescriptorSetLayout layout = *pipes.set_layout;
       s.set = std::move(vk::raii::DescriptorSets(ctx.device(), vk::DescriptorSetAllocateInfo{
                                                                    .descriptorPool = *descriptor_pool,
@@ -171,6 +187,12 @@ struct FrameLoop::Impl {
     const view::ViewSpec& v = session.scene().view;
     const std::vector<LandVertex> mesh = view::build_land_mesh(model(), v.floor_depth, v.land_height);
     land_vertices = static_cast<std::uint32_t>(mesh.size());
+    for (const LandVertex& p : mesh) {
+      land_x.push_back(p.position.x);
+      land_y.push_back(p.position.y);
+      land_z.push_back(p.position.z);
+      land_triangles.push_back(static_cast<std::uint32_t>(land_triangles.size()));
+    }
     land = gpu::create_buffer(ctx, mesh.size() * sizeof(LandVertex), BU::eVertexBuffer | BU::eTransferDst, gpu::MemoryUse::device,
                          "land vertices");
     gpu::upload(ctx, land, std::as_bytes(std::span(mesh)));
@@ -204,7 +226,11 @@ struct FrameLoop::Impl {
     std::array<float, 16> view_proj{};  // the camera's
     std::optional<FrameShadow> shadow;  // the sun's shadow map this frame, if any
     WaterSource::DrawBuffers bufs;
-    std::size_t index_count = 0;
+    std::size_t index_count = 0;  // the LOD's (or the full mesh's)
+    // What the land's and the water's draws take of their index buffers: the whole view's and each
+    // shadow rectangle's lists (view/triangle_cull.h).
+    view::IndexRange land_whole, water_whole;
+    std::vector<view::IndexRange> land_rects, water_rects;
     FrameStats stats;
     std::uint64_t state_revision = 0;  // the session's when simulated
   };
@@ -255,6 +281,11 @@ struct FrameLoop::Impl {
     for (PassDrawable* d : drawables) d->prepare(info);
     f.shadow = f.view.effects.shadows ? fit_shadow(f.view_proj, extent) : std::nullopt;
     ensure_shadow_map(ctx, s.shadow, f.shadow ? f.shadow->view.size : 0);  // made even when off: the set is whole
+    view::cull_triangles(land_triangles, {land_x, land_y, land_z}, f.view_proj, f.camera.width, f.camera.height,
+                         shadow_pixels(f), culled);
+    write_indices(ctx, s.land_indices, culled, "land indices, slot " + std::to_string(f.slot));
+    f.land_whole = culled.whole;
+    f.land_rects = culled.rects;
     bind_buffers(f.slot, s, f.bufs);
     write_frame_uniforms(s, f.camera, f.view_proj, f.bufs.stride, f.bufs.pitch, f.shadow);
   }
@@ -267,13 +298,29 @@ struct FrameLoop::Impl {
             static_cast<double>(session.steps_done()) * model().physics.dt, lighting};
   }
 
+  static std::span<const view::PixelRect> shadow_pixels(const Simulated& f) {
+    return f.shadow ? std::span<const view::PixelRect>(f.shadow->pixels) : std::span<const view::PixelRect>();
+  }
+
+  // The LOD's triangles, culled into the slot's index buffer; without the LOD, the full mesh
+  // (draw() draws full_indices whole).
   void build_lod(Simulated& f) {
     Slot& s = slots[f.slot];
-    f.index_count = f.view.lod_tolerance_px <= 0
-                        ? full_index_count
-                        : lod.build(water->positions(), f.camera, f.view.lod_tolerance_px,
-                                    std::span(static_cast<std::uint32_t*>(s.indices.mapped), lod.max_indices()));
-    if (f.view.lod_tolerance_px > 0) s.indices.flush(ctx, f.index_count * sizeof(std::uint32_t));
+    f.water_rects.clear();
+    if (f.view.lod_tolerance_px <= 0) {
+      f.index_count = full_index_count;
+      f.water_whole = {0, full_index_count, 0};
+      if (f.shadow) f.water_rects.assign(f.shadow->pixels.size(), f.water_whole);
+    } else {
+      lod_indices.resize(lod.max_indices());
+      f.index_count = lod.build(water->positions(), f.camera, f.view.lod_tolerance_px, lod_indices);
+      view::cull_triangles(std::span(lod_indices).first(f.index_count),
+                           {lod.world_x(), lod.world_y(), lod.world_z()}, f.view_proj, f.camera.width, f.camera.height,
+                           shadow_pixels(f), culled);
+      write_indices(ctx, s.indices, culled, "water LOD indices, slot " + std::to_string(f.slot));
+      f.water_whole = culled.whole;
+      f.water_rects = culled.rects;
+    }
     f.stats.triangles = f.index_count / 3;
   }
 
@@ -297,8 +344,7 @@ struct FrameLoop::Impl {
     s.cmd.reset();
     s.cmd.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
     if (resized) record_early(s.cmd, s, f, false);
-    record_main(s, target, frame_info(s.cmd, f), full ? full_indices : s.indices,
-                static_cast<std::uint32_t>(f.index_count), f.view, f.shadow);
+    record_main(s, target, frame_info(s.cmd, f), full ? full_indices : s.indices, f);
     s.cmd.end();
     submit(s, target);
     if (f.view.wait) wait(s);
@@ -326,7 +372,7 @@ struct FrameLoop::Impl {
     const std::optional<view::SunShadowView> fitted =
         view::fit_sun_shadow(lighting.sun, casters, pixels * kShadowTexelsPerPixel, kMaxShadowMapSize);
     if (!fitted) return std::nullopt;
-    FrameShadow shadow{*fitted, {}};
+    FrameShadow shadow{*fitted, {}, {}};
     const view::ViewSpec& v = session.scene().view;
     std::vector<view::PixelRect> rects;
     for (const view::ShadowCaster& c : casters)
@@ -339,6 +385,7 @@ struct FrameLoop::Impl {
     };
     rects = view::merge_overlapping(rects);
     if (rects.empty()) return std::nullopt;
+    shadow.pixels = rects;
     for (const view::PixelRect& r : rects) shadow.rects.push_back(rect(r));
     return shadow;
   }
@@ -492,9 +539,11 @@ struct FrameLoop::Impl {
   }
 
   // The main pass into the caller's image, after the early passes in submission order.
-  void record_main(const Slot& s, const FrameTarget& target, const FrameInfo& info, const gpu::Buffer& indices,
-                   std::uint32_t index_count, const FrameView& view, const std::optional<FrameShadow>& shadow) const {
+  void record_main(const Slot& s, const FrameTarget& target, const FrameInfo& info, const gpu::Buffer& water_indices,
+                   const Simulated& f) const {
     const vk::raii::CommandBuffer& cmd = info.cmd;
+    const FrameView& view = f.view;
+    const std::optional<FrameShadow>& shadow = f.shadow;
     const bool reflections = view.effects.reflections;
     // The target and the depth buffer to their attachment layouts. The color barrier waits at color
     // output, where the swapchain's acquire semaphore is waited.
@@ -530,33 +579,40 @@ struct FrameLoop::Impl {
     // (the same `precise` vertex code, and the first draw's small bias toward the camera:
     // water_pipeline.cpp), so each pixel is shaded once. llvmpipe runs both sides of a per-pixel
     // branch, so only the scissor keeps the fetches off the pixels no shadow reaches; and one full
-    // draw, not the rectangles' complement, keeps the vertex work to one pass over the mesh per
-    // rectangle plus one.
+    // draw, not the rectangles' complement, keeps the vertex work to one pass over the mesh plus,
+    // per rectangle, the triangles that can reach it (view/triangle_cull.h: each list in two draws,
+    // the triangles inside the view volume, then those across its boundary).
     const vk::Rect2D whole{{0, 0}, target.extent};
-    auto shaded = [&](const vk::raii::Pipeline& plain, const vk::raii::Pipeline& shadowed, const auto& draw_call) {
+    auto draw_range = [&](const view::IndexRange& r) {
+      if (r.inside > 0) cmd.drawIndexed(r.inside, 1, r.first, 0, 0);
+      if (r.across > 0) cmd.drawIndexed(r.across, 1, r.first + r.inside, 0, 0);
+    };
+    auto shaded = [&](const vk::raii::Pipeline& plain, const vk::raii::Pipeline& shadowed, const view::IndexRange& all,
+                      const std::vector<view::IndexRange>& in_rects) {
       bool covered = false;  // a rectangle is the whole target (a low sun, a caster behind the eye)
       if (shadow) {
         cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *shadowed);
-        for (const vk::Rect2D& r : shadow->rects) {
-          cmd.setScissor(0, r);
-          draw_call();
-          covered = covered || r == whole;
+        for (std::size_t k = 0; k < shadow->rects.size(); ++k) {
+          cmd.setScissor(0, shadow->rects[k]);
+          draw_range(in_rects[k]);
+          covered = covered || shadow->rects[k] == whole;
         }
         cmd.setScissor(0, whole);
       }
       if (covered) return;
       cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *plain);
-      draw_call();
+      draw_range(all);
     };
     cmd.bindVertexBuffers(0, *land.buffer, vk::DeviceSize{0});
-    shaded(pipes.land, pipes.land_shadowed, [&] { cmd.draw(land_vertices, 1, 0, 0); });
-    cmd.bindIndexBuffer(*indices.buffer, 0, vk::IndexType::eUint32);
+    cmd.bindIndexBuffer(*s.land_indices.buffer, 0, vk::IndexType::eUint32);
+    shaded(pipes.land, pipes.land_shadowed, f.land_whole, f.land_rects);
+    cmd.bindIndexBuffer(*water_indices.buffer, 0, vk::IndexType::eUint32);
     const bool caustics_on = view.effects.caustics;
     shaded(pipes.water_for(reflections, caustics_on, false), pipes.water_for(reflections, caustics_on, true),
-           [&] { cmd.drawIndexed(index_count, 1, 0, 0, 0); });
+           f.water_whole, f.water_rects);
     if (view.wireframe && *pipes.wire) {
       cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.wire);
-      cmd.drawIndexed(index_count, 1, 0, 0, 0);
+      draw_range(f.water_whole);
     }
     for (PassDrawable* d : drawables) d->draw(info);
     // Last, so only where nothing is; the drawables bound sets of their own.

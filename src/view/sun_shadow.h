@@ -18,6 +18,8 @@
 #include <span>
 #include <vector>
 
+#include "view/pixel_rect.h"
+
 namespace pond::view {
 
 // A caster's bounding box (world units, lo <= hi).
@@ -46,11 +48,6 @@ inline constexpr std::uint32_t kMinShadowMapSize = 64;
 std::optional<SunShadowView> fit_sun_shadow(const std::array<double, 3>& toward_sun,
                                             std::span<const ShadowCaster> casters, double texels_per_unit,
                                             std::uint32_t max_size);
-
-// A rectangle of pixels (x0, y0 inclusive; x1, y1 exclusive).
-struct PixelRect {
-  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-};
 
 // The pixels of a width x height view (`view_proj`: column-major, Vulkan clip space) where
 // `caster`'s shadow can show on receivers between heights y_low and y_high: the bounding box of

@@ -1,0 +1,12 @@
+#pragma once
+// A rectangle of a view's pixels: where the sun's shadows can show (view/sun_shadow.h), what a
+// scissored draw needs of a mesh (view/triangle_cull.h).
+
+namespace pond::view {
+
+// A rectangle of pixels (x0, y0 inclusive; x1, y1 exclusive).
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+}  // namespace pond::view
