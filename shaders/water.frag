@@ -63,15 +63,18 @@ vec3 wall_color(vec3 p) {
 }
 
 // The sun's light at a point of the floor or a submerged wall relative to calm water's, from this
-// frame's caustics map (render/caustics_pass.h; shared/caustics.h): one nearest fetch of the texel's
-// four corners, interpolated. A wall point reads the texel its depth's calm ray offset gives,
-// clamped to the floor's edge (approximate: the map is the floor's).
+// frame's caustics map (render/caustics_pass.h; shared/caustics.h): one fetch of the texel's four
+// corners, interpolated. (texelFetch rather than a nearest textureLod: the same texel, without the
+// sampler's coordinate work, which a software rasterizer runs per pixel; the reflection's too.)
+// A wall point reads the texel its depth's calm ray offset gives, clamped to the floor's edge
+// (approximate: the map is the floor's).
 float caustic_light(vec3 p) {
   if (!kCaustics) return 1.0;
   const vec4 place = POND_FLAT_CAUSTICS(in_sky, in_water, in_ground, in_horizon);  // WaterFrame::caustics
   const vec2 uv = p.xz * place.xy + p.y * place.zw;
-  const vec4 c = textureLod(caustics, uv, 0.0);
-  const vec2 f = fract(uv * POND_FLAT_CAUSTICS_SIZE(in_pool));
+  const vec2 t = uv * POND_FLAT_CAUSTICS_SIZE(in_pool);
+  const vec4 c = texelFetch(caustics, clamp(ivec2(floor(t)), ivec2(0), ivec2(POND_FLAT_CAUSTICS_SIZE(in_pool)) - 1), 0);
+  const vec2 f = fract(t);
   return mix(mix(c.r, c.g, f.x), mix(c.b, c.a, f.x), f.y) * kCausticsDecode;
 }
 
@@ -134,7 +137,8 @@ void main() {
   // The mirror image at this pixel, shifted by the surface's tilt (a flat surface: no shift); its
   // alpha is 0 where nothing above the water is mirrored there, and the sky shows instead.
   const vec2 uv = gl_FragCoord.xy * in_screen.xy + n.xz * in_screen.z;
-  const vec4 mirrored = textureLod(reflection, uv, 0.0);
+  const ivec2 size = textureSize(reflection, 0);
+  const vec4 mirrored = texelFetch(reflection, clamp(ivec2(floor(uv * vec2(size))), ivec2(0), size - 1), 0);
   reflected = mix(reflected, mirrored.rgb, mirrored.a);
 #endif
   // The sun's glint, (r.l)^2048 by squaring: a narrow lobe without pow's exp/log.
