@@ -75,6 +75,13 @@ struct FrameShadow {
   std::vector<vk::Rect2D> rects;  // the same
 };
 
+// One draw list of a culled mesh (view/triangle_cull.h): the triangles inside the view volume, then
+// those across its boundary, from the bound index buffer.
+void draw_range(const vk::raii::CommandBuffer& cmd, const view::IndexRange& r) {
+  if (r.inside > 0) cmd.drawIndexed(r.inside, 1, r.first, 0, 0);
+  if (r.across > 0) cmd.drawIndexed(r.across, 1, r.first + r.inside, 0, 0);
+}
+
 // Writes `m`'s index lists into `b` (host-visible), made larger first if they do not fit; the
 // buffer must be idle.
 void write_indices(const gpu::Context& ctx, gpu::Buffer& b, const view::CulledMesh& m, const std::string& name) {
@@ -103,6 +110,7 @@ struct Slot {
   vk::raii::Fence done = nullptr;  // signalled when the slot's last draw finished
   gpu::Buffer uniforms;                 // host-visible: WaterFrame
   gpu::Buffer indices, land_indices;    // host-visible: the water's and the land's culled lists
+  gpu::Buffer mirrored_land_indices;    // host-visible: the mirrored walls' (the reflection's)
   vk::raii::DescriptorSet set = nullptr;
   Image depth;
   ReflectionTarget reflection;
@@ -122,9 +130,11 @@ struct FrameLoop::Impl {
   vk::raii::Sampler shadow_sampler = nullptr;
   CausticsPass caustics;
   gpu::Buffer land, mirrored_land, full_indices;  // mirrored_land: the reflection's (view::mirrored_walls)
-  std::uint32_t land_vertices = 0, mirrored_land_vertices = 0, full_index_count = 0;
-  std::vector<float> land_x, land_y, land_z;   // the land's vertices, for culling (view/triangle_cull.h)
-  std::vector<std::uint32_t> land_triangles;   // 0, 1, 2, ...: the land is a triangle list
+  std::uint32_t land_vertices = 0, full_index_count = 0;
+  // The land's vertices, for culling (view/triangle_cull.h), and the mirrored walls' as the
+  // reflection draws them (y negated); both meshes are triangle lists (0, 1, 2, ...).
+  std::vector<float> land_x, land_y, land_z, mirrored_x, mirrored_y, mirrored_z;
+  std::vector<std::uint32_t> land_triangles, mirrored_triangles;
   std::vector<std::uint32_t> lod_indices;      // the LOD's triangles before culling
   view::CulledMesh culled;                     // scratch
   vk::raii::CommandPool pool = nullptr;
@@ -197,7 +207,12 @@ struct FrameLoop::Impl {
                          "land vertices");
     gpu::upload(ctx, land, std::as_bytes(std::span(mesh)));
     const std::vector<LandVertex> above = view::mirrored_walls(mesh);
-    mirrored_land_vertices = static_cast<std::uint32_t>(above.size());
+    for (const LandVertex& p : above) {
+      mirrored_x.push_back(p.position.x);
+      mirrored_y.push_back(-p.position.y);
+      mirrored_z.push_back(p.position.z);
+      mirrored_triangles.push_back(static_cast<std::uint32_t>(mirrored_triangles.size()));
+    }
     mirrored_land = gpu::create_buffer(ctx, std::max<std::size_t>(1, above.size()) * sizeof(LandVertex),
                                           BU::eVertexBuffer | BU::eTransferDst, gpu::MemoryUse::device, "land walls above the water");
     if (!above.empty()) gpu::upload(ctx, mirrored_land, std::as_bytes(std::span(above)));
@@ -229,7 +244,7 @@ struct FrameLoop::Impl {
     std::size_t index_count = 0;  // the LOD's (or the full mesh's)
     // What the land's and the water's draws take of their index buffers: the whole view's and each
     // shadow rectangle's lists (view/triangle_cull.h).
-    view::IndexRange land_whole, water_whole;
+    view::IndexRange land_whole, water_whole, mirrored_land;
     std::vector<view::IndexRange> land_rects, water_rects;
     FrameStats stats;
     std::uint64_t state_revision = 0;  // the session's when simulated
@@ -286,6 +301,13 @@ struct FrameLoop::Impl {
     write_indices(ctx, s.land_indices, culled, "land indices, slot " + std::to_string(f.slot));
     f.land_whole = culled.whole;
     f.land_rects = culled.rects;
+    if (f.view.effects.reflections) {
+      const vk::Extent2D mirror = s.reflection.color.extent;
+      view::cull_triangles(mirrored_triangles, {mirrored_x, mirrored_y, mirrored_z}, f.view_proj,
+                           static_cast<int>(mirror.width), static_cast<int>(mirror.height), {}, culled);
+      write_indices(ctx, s.mirrored_land_indices, culled, "mirrored walls' indices, slot " + std::to_string(f.slot));
+      f.mirrored_land = culled.whole;
+    }
     bind_buffers(f.slot, s, f.bufs);
     write_frame_uniforms(s, f.camera, f.view_proj, f.bufs.stride, f.bufs.pitch, f.shadow);
   }
@@ -519,7 +541,8 @@ struct FrameLoop::Impl {
         cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *pipes.layout, 0, *s.set, nullptr);
         cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.land_mirror);
         cmd.bindVertexBuffers(0, *mirrored_land.buffer, vk::DeviceSize{0});
-        cmd.draw(mirrored_land_vertices, 1, 0, 0);
+        cmd.bindIndexBuffer(*s.mirrored_land_indices.buffer, 0, vk::IndexType::eUint32);
+        draw_range(cmd, f.mirrored_land);
         for (PassDrawable* d : drawables) d->draw_reflected(mirrored);
       });
     }
@@ -583,10 +606,7 @@ struct FrameLoop::Impl {
     // per rectangle, the triangles that can reach it (view/triangle_cull.h: each list in two draws,
     // the triangles inside the view volume, then those across its boundary).
     const vk::Rect2D whole{{0, 0}, target.extent};
-    auto draw_range = [&](const view::IndexRange& r) {
-      if (r.inside > 0) cmd.drawIndexed(r.inside, 1, r.first, 0, 0);
-      if (r.across > 0) cmd.drawIndexed(r.across, 1, r.first + r.inside, 0, 0);
-    };
+    auto draw_range = [&](const view::IndexRange& r) { render::draw_range(cmd, r); };
     auto shaded = [&](const vk::raii::Pipeline& plain, const vk::raii::Pipeline& shadowed, const view::IndexRange& all,
                       const std::vector<view::IndexRange>& in_rects) {
       bool covered = false;  // a rectangle is the whole target (a low sun, a caster behind the eye)
