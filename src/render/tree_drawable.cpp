@@ -34,6 +34,9 @@ constexpr sh::vec4 kLine{0.05f, 0.04f, 0.03f, 1.0f};
 // coarser (fewer tube levels, more of the far leaves pruned, the rest grown to cover the same
 // area), since the tree's vertex work, not the map's few texels, is what its pass costs.
 constexpr float kShadowLodScale = 0.5f;
+// The planar reflection's, relative to its own pixels: the ripples shift and the Fresnel term
+// dims its image, so its tree is pruned as one twice as far away.
+constexpr float kMirroredLodScale = 0.5f;
 
 sh::vec4 v4(const std::array<double, 3>& a) {
   return {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2]), 0.0f};
@@ -53,7 +56,7 @@ struct Instance {
   tree::WindState wind;
   // This frame's (prepare()): the wind pushed to the shader, and the level of detail for the frame
   // and for the planar reflection, whose pixels are kReflectionDivisor times larger: its image is
-  // pruned as a tree that far away would be.
+  // pruned as a tree that far away would be, and kMirroredLodScale more.
   tree::TreeWindFrame frame{};
   InstanceLod lod, mirrored_lod;
   InstanceLod shadow_lod;  // the sun's shadow map's level of detail (draw_shadow())
@@ -192,7 +195,7 @@ struct TreeDrawable::Impl {
       const float pixels = level_of_detail ? tree::nearest_pixels_per_unit(lod_camera, world, inst.base.w)
                                            : std::numeric_limits<float>::infinity();
       inst.lod = lod_at(pixels);
-      inst.mirrored_lod = lod_at(pixels / static_cast<float>(kReflectionDivisor));
+      inst.mirrored_lod = lod_at(pixels / static_cast<float>(kReflectionDivisor) * kMirroredLodScale);
     }
 
     const auto& sun = info.lighting.sun;
