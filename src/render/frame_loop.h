@@ -101,7 +101,9 @@ struct FrameInfo {
 class PassDrawable {
  public:
   virtual ~PassDrawable() = default;
-  // Before the pass, with the slot's previous use finished: write per-slot uniforms, etc.
+  // Before the frame's passes (in simulate(), before the early ones), with the slot's previous use
+  // finished: write per-slot uniforms, etc. What the front end may change between simulate() and
+  // draw() (the demo's panel) is read in the draw calls instead.
   virtual void prepare(const FrameInfo& /*frame*/) {}
   // Inside the pass (viewport, scissor set; depth test on): bind and draw.
   virtual void draw(const FrameInfo& frame) = 0;

@@ -156,13 +156,13 @@ void ImGuiRenderer::grow(gpu::Buffer& buffer, vk::DeviceSize bytes, vk::BufferUs
   buffer = gpu::create_buffer(ctx_, size, usage, gpu::MemoryUse::upload, name);
 }
 
-void ImGuiRenderer::prepare(const render::FrameInfo& frame) {
+void ImGuiRenderer::upload(const render::FrameInfo& frame) {
   SlotBuffers& slot = slots_[frame.slot];
   slot.ready = false;
   const ImDrawData* data = ImGui::GetDrawData();
   if (!data || !data->Valid || data->TotalVtxCount == 0) return;
-  // The slot's previous draw has finished (PassDrawable::prepare's promise): its buffers may be
-  // rewritten or replaced.
+  // The slot's previous draw has finished (the loop waited for it before this frame's passes, and
+  // they do not read these buffers): they may be rewritten or replaced.
   grow(slot.vertices, vk::DeviceSize(data->TotalVtxCount) * sizeof(ImDrawVert), vk::BufferUsageFlagBits::eVertexBuffer,
        "imgui vertices");
   grow(slot.indices, vk::DeviceSize(data->TotalIdxCount) * sizeof(ImDrawIdx), vk::BufferUsageFlagBits::eIndexBuffer,
@@ -182,6 +182,7 @@ void ImGuiRenderer::prepare(const render::FrameInfo& frame) {
 }
 
 void ImGuiRenderer::draw_occluding(const render::FrameInfo& frame) {
+  upload(frame);
   const SlotBuffers& slot = slots_[frame.slot];
   const ImDrawData* data = ImGui::GetDrawData();
   if (!slot.ready || !data) return;

@@ -22,8 +22,10 @@ class ImGuiRenderer final : public render::PassDrawable {
   // Needs a current ImGui context (it uploads the context's font atlas).
   ImGuiRenderer(const gpu::Context& ctx, vk::Format color_format);
 
-  void prepare(const render::FrameInfo& frame) override;  // copies ImGui::GetDrawData() into the slot
   void draw(const render::FrameInfo&) override {}
+  // Copies ImGui::GetDrawData() into the slot's buffers and draws it. Not in prepare(): the loop
+  // prepares a frame in simulate(), and the demo may build its panel again before the frame is
+  // drawn (after a failed acquire).
   void draw_occluding(const render::FrameInfo& frame) override;
 
  private:
@@ -32,6 +34,7 @@ class ImGuiRenderer final : public render::PassDrawable {
     bool ready = false;  // this slot holds this frame's data
   };
   void grow(gpu::Buffer& buffer, vk::DeviceSize bytes, vk::BufferUsageFlags usage, const char* name);
+  void upload(const render::FrameInfo& frame);  // ImGui::GetDrawData() into the slot's buffers
 
   const gpu::Context& ctx_;
   bool srgb_target_ = false;
