@@ -6,6 +6,8 @@
 #include <cstring>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "core/errors.h"
 #include "gpu/buffer.h"
@@ -71,9 +73,12 @@ constexpr double kShadowWaveMargin = 1.0;
 // One frame's shadow map: its view and the target's rectangles where its shadows can show.
 struct FrameShadow {
   view::SunShadowView view;
-  std::vector<view::PixelRect> pixels;
-  std::vector<vk::Rect2D> rects;  // the same
+  std::vector<view::PixelRect> rects;
 };
+
+vk::Rect2D scissor(const view::PixelRect& r) {
+  return {{r.x0, r.y0}, {static_cast<std::uint32_t>(r.x1 - r.x0), static_cast<std::uint32_t>(r.y1 - r.y0)}};
+}
 
 // One draw list of a culled mesh (view/triangle_cull.h): the triangles inside the view volume, then
 // those across its boundary, from the bound index buffer.
@@ -82,13 +87,32 @@ void draw_range(const vk::raii::CommandBuffer& cmd, const view::IndexRange& r) {
   if (r.across > 0) cmd.drawIndexed(r.across, 1, r.first + r.inside, 0, 0);
 }
 
+// A non-indexed triangle list's vertices, structure of arrays, and its triangles (0, 1, 2, ...):
+// what view::cull_triangles reads. `y_sign`: -1 for the mirrored walls, as land.vert mirrors them.
+struct CullSource {
+  std::vector<float> x, y, z;
+  std::vector<std::uint32_t> triangles;
+  view::MeshPositions positions() const { return {x, y, z}; }
+};
+CullSource cull_source(const std::vector<LandVertex>& mesh, float y_sign) {
+  CullSource c;
+  for (const LandVertex& p : mesh) {
+    c.x.push_back(p.position.x);
+    c.y.push_back(y_sign * p.position.y);
+    c.z.push_back(p.position.z);
+    c.triangles.push_back(static_cast<std::uint32_t>(c.triangles.size()));
+  }
+  return c;
+}
+
 // Writes `m`'s index lists into `b` (host-visible), made larger first if they do not fit; the
 // buffer must be idle.
-void write_indices(const gpu::Context& ctx, gpu::Buffer& b, const view::CulledMesh& m, const std::string& name) {
+void write_indices(const gpu::Context& ctx, gpu::Buffer& b, const view::CulledMesh& m, const char* what,
+                   std::uint32_t slot) {
   const vk::DeviceSize bytes = std::max<std::size_t>(1, m.indices.size()) * sizeof(std::uint32_t);
   if (!*b.buffer || b.size < bytes)
     b = gpu::create_buffer(ctx, std::max<vk::DeviceSize>(bytes, 2 * b.size), vk::BufferUsageFlagBits::eIndexBuffer,
-                           gpu::MemoryUse::upload, name);
+                           gpu::MemoryUse::upload, std::string(what) + ", slot " + std::to_string(slot));
   std::memcpy(b.mapped, m.indices.data(), m.indices.size() * sizeof(std::uint32_t));
   b.flush(ctx, bytes);
 }
@@ -131,10 +155,7 @@ struct FrameLoop::Impl {
   CausticsPass caustics;
   gpu::Buffer land, mirrored_land, full_indices;  // mirrored_land: the reflection's (view::mirrored_walls)
   std::uint32_t land_vertices = 0, full_index_count = 0;
-  // The land's vertices, for culling (view/triangle_cull.h), and the mirrored walls' as the
-  // reflection draws them (y negated); both meshes are triangle lists (0, 1, 2, ...).
-  std::vector<float> land_x, land_y, land_z, mirrored_x, mirrored_y, mirrored_z;
-  std::vector<std::uint32_t> land_triangles, mirrored_triangles;
+  CullSource land_source, mirrored_source;  // for culling: the land's, the mirrored walls' (y negated)
   std::vector<std::uint32_t> lod_indices;      // the LOD's triangles before culling
   view::CulledMesh culled;                     // scratch
   vk::raii::CommandPool pool = nullptr;
@@ -197,22 +218,12 @@ struct FrameLoop::Impl {
     const view::ViewSpec& v = session.scene().view;
     const std::vector<LandVertex> mesh = view::build_land_mesh(model(), v.floor_depth, v.land_height);
     land_vertices = static_cast<std::uint32_t>(mesh.size());
-    for (const LandVertex& p : mesh) {
-      land_x.push_back(p.position.x);
-      land_y.push_back(p.position.y);
-      land_z.push_back(p.position.z);
-      land_triangles.push_back(static_cast<std::uint32_t>(land_triangles.size()));
-    }
+    land_source = cull_source(mesh, 1.0f);
     land = gpu::create_buffer(ctx, mesh.size() * sizeof(LandVertex), BU::eVertexBuffer | BU::eTransferDst, gpu::MemoryUse::device,
                          "land vertices");
     gpu::upload(ctx, land, std::as_bytes(std::span(mesh)));
     const std::vector<LandVertex> above = view::mirrored_walls(mesh);
-    for (const LandVertex& p : above) {
-      mirrored_x.push_back(p.position.x);
-      mirrored_y.push_back(-p.position.y);
-      mirrored_z.push_back(p.position.z);
-      mirrored_triangles.push_back(static_cast<std::uint32_t>(mirrored_triangles.size()));
-    }
+    mirrored_source = cull_source(above, -1.0f);
     mirrored_land = gpu::create_buffer(ctx, std::max<std::size_t>(1, above.size()) * sizeof(LandVertex),
                                           BU::eVertexBuffer | BU::eTransferDst, gpu::MemoryUse::device, "land walls above the water");
     if (!above.empty()) gpu::upload(ctx, mirrored_land, std::as_bytes(std::span(above)));
@@ -279,8 +290,8 @@ struct FrameLoop::Impl {
     f.stats.draw_ms = ms_since(t);
     build_lod(f);  // 4. LOD into the slot's indices
     f.stats.lod_ms = ms_since(t);
-    simulated = f;
-    return f.stats;
+    simulated = std::move(f);
+    return simulated->stats;
   }
 
   // The frame's camera at `extent`, the drawables' and the water's per-frame state for it, and the
@@ -296,16 +307,16 @@ struct FrameLoop::Impl {
     for (PassDrawable* d : drawables) d->prepare(info);
     f.shadow = f.view.effects.shadows ? fit_shadow(f.view_proj, extent) : std::nullopt;
     ensure_shadow_map(ctx, s.shadow, f.shadow ? f.shadow->view.size : 0);  // made even when off: the set is whole
-    view::cull_triangles(land_triangles, {land_x, land_y, land_z}, f.view_proj, f.camera.width, f.camera.height,
+    view::cull_triangles(land_source.triangles, land_source.positions(), f.view_proj, f.camera.width, f.camera.height,
                          shadow_pixels(f), culled);
-    write_indices(ctx, s.land_indices, culled, "land indices, slot " + std::to_string(f.slot));
+    write_indices(ctx, s.land_indices, culled, "land indices", f.slot);
     f.land_whole = culled.whole;
     f.land_rects = culled.rects;
     if (f.view.effects.reflections) {
       const vk::Extent2D mirror = s.reflection.color.extent;
-      view::cull_triangles(mirrored_triangles, {mirrored_x, mirrored_y, mirrored_z}, f.view_proj,
+      view::cull_triangles(mirrored_source.triangles, mirrored_source.positions(), f.view_proj,
                            static_cast<int>(mirror.width), static_cast<int>(mirror.height), {}, culled);
-      write_indices(ctx, s.mirrored_land_indices, culled, "mirrored walls' indices, slot " + std::to_string(f.slot));
+      write_indices(ctx, s.mirrored_land_indices, culled, "mirrored walls' indices", f.slot);
       f.mirrored_land = culled.whole;
     }
     bind_buffers(f.slot, s, f.bufs);
@@ -321,7 +332,7 @@ struct FrameLoop::Impl {
   }
 
   static std::span<const view::PixelRect> shadow_pixels(const Simulated& f) {
-    return f.shadow ? std::span<const view::PixelRect>(f.shadow->pixels) : std::span<const view::PixelRect>();
+    return f.shadow ? std::span<const view::PixelRect>(f.shadow->rects) : std::span<const view::PixelRect>();
   }
 
   // The LOD's triangles, culled into the slot's index buffer; without the LOD, the full mesh
@@ -332,14 +343,14 @@ struct FrameLoop::Impl {
     if (f.view.lod_tolerance_px <= 0) {
       f.index_count = full_index_count;
       f.water_whole = {0, full_index_count, 0};
-      if (f.shadow) f.water_rects.assign(f.shadow->pixels.size(), f.water_whole);
+      if (f.shadow) f.water_rects.assign(f.shadow->rects.size(), f.water_whole);
     } else {
       lod_indices.resize(lod.max_indices());
       f.index_count = lod.build(water->positions(), f.camera, f.view.lod_tolerance_px, lod_indices);
       view::cull_triangles(std::span(lod_indices).first(f.index_count),
                            {lod.world_x(), lod.world_y(), lod.world_z()}, f.view_proj, f.camera.width, f.camera.height,
                            shadow_pixels(f), culled);
-      write_indices(ctx, s.indices, culled, "water LOD indices, slot " + std::to_string(f.slot));
+      write_indices(ctx, s.indices, culled, "water LOD indices", f.slot);
       f.water_whole = culled.whole;
       f.water_rects = culled.rects;
     }
@@ -348,7 +359,7 @@ struct FrameLoop::Impl {
 
   FrameStats draw(const FrameTarget& target) {
     if (!has_simulated()) throw std::logic_error("FrameLoop::draw without a simulated frame");
-    Simulated f = *simulated;
+    Simulated f = std::move(*simulated);
     simulated.reset();
     Slot& s = slots[f.slot];
     next = (f.slot + 1) % kFramesInFlight;
@@ -394,7 +405,6 @@ struct FrameLoop::Impl {
     const std::optional<view::SunShadowView> fitted =
         view::fit_sun_shadow(lighting.sun, casters, pixels * kShadowTexelsPerPixel, kMaxShadowMapSize);
     if (!fitted) return std::nullopt;
-    FrameShadow shadow{*fitted, {}, {}};
     const view::ViewSpec& v = session.scene().view;
     std::vector<view::PixelRect> rects;
     for (const view::ShadowCaster& c : casters)
@@ -402,14 +412,9 @@ struct FrameLoop::Impl {
                                              static_cast<int>(extent.height), -v.floor_depth,
                                              v.land_height + kShadowWaveMargin))
         rects.push_back(*r);
-    auto rect = [](const view::PixelRect& r) {
-      return vk::Rect2D{{r.x0, r.y0}, {static_cast<std::uint32_t>(r.x1 - r.x0), static_cast<std::uint32_t>(r.y1 - r.y0)}};
-    };
     rects = view::merge_overlapping(rects);
     if (rects.empty()) return std::nullopt;
-    shadow.pixels = rects;
-    for (const view::PixelRect& r : rects) shadow.rects.push_back(rect(r));
-    return shadow;
+    return FrameShadow{*fitted, std::move(rects)};
   }
 
   std::array<double, 3> unit_sun() const {
@@ -613,9 +618,10 @@ struct FrameLoop::Impl {
       if (shadow) {
         cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *shadowed);
         for (std::size_t k = 0; k < shadow->rects.size(); ++k) {
-          cmd.setScissor(0, shadow->rects[k]);
+          const vk::Rect2D r = scissor(shadow->rects[k]);
+          cmd.setScissor(0, r);
           draw_range(in_rects[k]);
-          covered = covered || shadow->rects[k] == whole;
+          covered = covered || r == whole;
         }
         cmd.setScissor(0, whole);
       }
