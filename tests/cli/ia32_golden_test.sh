@@ -7,7 +7,11 @@ pond=$1
 want=$2
 work=$3
 rm -rf "$work" && mkdir -p "$work" || exit 1
-file "$pond" 2>/dev/null | grep -q "32-bit" || { echo "FAIL: $pond is not a 32-bit executable"; exit 1; }
+# The ELF header's fifth byte (EI_CLASS) is 1 for a 32-bit program: read with od (coreutils), since
+# `file` is not on a minimal Debian.
+magic=$(od -An -c -j1 -N3 "$pond" 2>/dev/null | tr -d ' ')
+class=$(od -An -tu1 -j4 -N1 "$pond" 2>/dev/null | tr -d ' ')
+[ "$magic" = "ELF" ] && [ "$class" = "1" ] || { echo "FAIL: $pond is not a 32-bit ELF executable (EI_CLASS ${class:-?})"; exit 1; }
 # Some x86-64 kernels are built without IA-32 emulation ("Exec format error" for every 32-bit
 # program). There the same 32-bit machine code runs under qemu-i386 (user-mode emulation; its SSE
 # is IEEE softfloat, denormals and signed zeros included), which scripts/setup.sh installs.
