@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The demo's frame rate as the README reports it: `pond demo --frames 200 --size 1280x720
+# The demo's frame rate as docs/demo.md reports it: `pond demo --frames 200 --size 1280x720
 # --no-vsync` on scenes/demo_129.json and scenes/demo_257.json, under two virtual X servers at
 # once (stock, and "tuned" with MALLOC_TOP_PAD_: scripts/demo_timing.sh says why), each scene and
 # server in turn for ROUNDS rounds (so a busy machine slows them alike), and the median ms per

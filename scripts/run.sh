@@ -15,4 +15,4 @@ build/src/app/pond render --steps 60 --frames 5 --size 1280x720 --out build/fram
 build/src/app/pond simulate --steps 400 --out build/state.npy
 echo "run.sh: wrote build/frame.png and build/state.npy; for the window, run under a display" \
      "(e.g. MALLOC_TOP_PAD_=67108864 xvfb-run -a scripts/run.sh; the variable keeps Xvfb from" \
-     "halving the frame rate, see the README's demo section)." >&2
+     "halving the frame rate, see docs/demo.md)." >&2

@@ -36,7 +36,7 @@ ctest --preset sanitize-gpu -j "$jobs"
 
 # The GPU suite again under the discrete-GPU test layer (layers/, built by the release preset):
 # staging, flush/invalidate of non-coherent memory, no shaderInt64, with and without
-# shaderDenormPreserveFloat32, the validation layer above it (README: the test layer). The whole
+# shaderDenormPreserveFloat32, the validation layer above it (docs/layer.md). The whole
 # GPU label with the feature, then without it only the solver's tests and `pond check` (denormals
 # reach only the solver).
 # The parity runs at 0.3 of their length here; the plain run below keeps the full length.

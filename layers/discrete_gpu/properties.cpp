@@ -10,8 +10,8 @@
 namespace pond::layer {
 namespace {
 
-// Limits of the presented device where a common desktop GPU is stricter than lavapipe (README,
-// "The discrete-GPU test layer", gives the sources). Each only ever tightens lavapipe's value.
+// Limits of the presented device where a common desktop GPU is stricter than lavapipe (docs/layer.md
+// gives the sources). Each only ever tightens lavapipe's value.
 constexpr std::uint32_t kMaxWorkGroupSizeZ = 64;            // NVIDIA and Intel Arc (AMD: 1024)
 constexpr std::uint32_t kMaxMemoryAllocationCount = 4096;   // the Vulkan minimum
 constexpr std::uint32_t kMaxSamplerAllocationCount = 4000;  // the Vulkan minimum, NVIDIA's value

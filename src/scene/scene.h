@@ -1,5 +1,5 @@
 #pragma once
-// A scene file (JSON, the contract in README.md): parsed and validated here, and nowhere else.
+// A scene file (JSON, the contract in docs/scenes.md): parsed and validated here, and nowhere else.
 // Parsing checks types, unknown keys and ranges and names the key's path in its InputError; the
 // checks that edits made at run time must pass too (the demo's physics and sun) are the same
 // functions the parser calls.

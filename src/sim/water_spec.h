@@ -1,6 +1,6 @@
 #pragma once
 // The water as a scene file describes it (world units): the grid, the physics, the constraints and
-// the perturbations of the contract in README.md. Validated by src/scene; WaterModel is built from it.
+// the perturbations of the contract in docs/scenes.md. Validated by src/scene; WaterModel is built from it.
 #include <array>
 #include <cstdint>
 #include <vector>

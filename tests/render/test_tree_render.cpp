@@ -267,7 +267,7 @@ TEST_F(TreeRenderTest, ControlsAndRegrow) {
 }
 
 // The cost of the two bends on this device: depth 8 tubes and leaves, the median of 5 frames of the
-// whole frame (water included). Printed for the README; the keep-length walk must stay within a
+// whole frame (water included). Printed for docs/tree.md; the keep-length walk must stay within a
 // generous factor of the article's.
 TEST_F(TreeRenderTest, KeepLengthCostIsPrinted) {
   auto median_draw = [&](const char* bend) {
