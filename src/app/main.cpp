@@ -1,6 +1,6 @@
 // pond: parses the command line and dispatches to one subcommand. Errors are exceptions caught here
-// once: bad input (InputError, CLI11 parse errors) exits 2, run-time failures exit 1, each with one
-// line on stderr; a command stopped by SIGINT or SIGTERM exits 128 + the signal (app/interrupt.h).
+// once: bad input (InputError, CLI11 parse errors) exits 2, run-time failures and internal errors
+// (core/errors.h) exit 1, each with one line on stderr; a command stopped by SIGINT or SIGTERM exits 128 + the signal (app/interrupt.h).
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -22,6 +22,9 @@ int main(int argc, char** argv) {
   } catch (const pond::InputError& e) {
     std::fprintf(stderr, "pond: %s\n", e.what());
     return 2;
+  } catch (const pond::InternalError& e) {  // a broken invariant: pond's fault, not the user's
+    std::fprintf(stderr, "pond: internal error: %s\n", e.what());
+    return 1;
   } catch (const pond::RuntimeError& e) {
     std::fprintf(stderr, "pond: %s\n", e.what());
     return 1;

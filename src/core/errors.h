@@ -1,19 +1,29 @@
 #pragma once
-// The two kinds of failure pond reports, and so its exit codes: bad input from the user (a file, a
-// flag, a parameter) is an InputError and exits 2; a failure while running (no Vulkan device, a disk
-// that fills up) is a RuntimeError and exits 1. Both carry a one-line message that names what is
-// wrong; `main` prints it and nothing else.
+// The one family of failures pond reports, and so its exit codes (`main` catches them once and
+// prints the one-line message):
+//  - InputError (exit 2): what the user gave is wrong (a file, a flag, a parameter, a scene value);
+//  - RuntimeError (exit 1): the machine failed while running (no Vulkan device, a full disk);
+//  - InternalError (exit 1, "internal error: ..."): pond broke one of its own invariants (a caller
+//    passed what its callee's contract rules out). Never the user's fault.
 #include <stdexcept>
 #include <string>
 
 namespace pond {
 
-struct InputError : std::runtime_error {
+struct Error : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-struct RuntimeError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct InputError : Error {
+  using Error::Error;
+};
+
+struct RuntimeError : Error {
+  using Error::Error;
+};
+
+struct InternalError : Error {
+  using Error::Error;
 };
 
 }  // namespace pond

@@ -97,7 +97,7 @@ void BodyContact::upload_constants() {
 
 void BodyContact::set_bodies(const std::vector<sim::BodyState>& bodies) {
   if (bodies.size() != model_.bodies.size())
-    throw InputError("GpuSolver::set_state: " + std::to_string(bodies.size()) + " bodies for a model of " +
+    throw InternalError("GpuSolver::set_state: " + std::to_string(bodies.size()) + " bodies for a model of " +
                      std::to_string(model_.bodies.size()));
   upload(ctx_, bodies_, std::as_bytes(std::span(bodies)));
 }

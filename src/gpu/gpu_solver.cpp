@@ -244,14 +244,14 @@ void GpuSolver::create_descriptor_sets() {
 }
 
 void GpuSolver::set_state(const sim::WaterState& state, std::int64_t steps_done) {
-  if (state.nodes() != model_.nodes()) throw InputError("GpuSolver::set_state: the state has the wrong node count");
+  if (state.nodes() != model_.nodes()) throw InternalError("GpuSolver::set_state: the state has the wrong node count");
   const std::vector<float> words = to_soa_words(state, static_cast<std::size_t>(model_.rows),
                                                 static_cast<std::size_t>(model_.cols), pitch_, stride_);
   cur_ = 0;
   // Into both buffers: the padding of either is then +0 (the step shader keeps it so).
   for (const Buffer& b : state_) upload(ctx_, b, std::as_bytes(std::span(words)));
   if (contact_) contact_->set_bodies(state.bodies);
-  else if (!state.bodies.empty()) throw InputError("GpuSolver::set_state: bodies for a model without bodies");
+  else if (!state.bodies.empty()) throw InternalError("GpuSolver::set_state: bodies for a model without bodies");
   step_ = steps_done;
   next_perturbation_ = 0;
   while (next_perturbation_ < model_.perturbations.size() && model_.perturbations[next_perturbation_].step < step_)
@@ -442,7 +442,7 @@ sim::Normals GpuSolver::normals() const {
 }
 
 void GpuSolver::set_body_models(std::vector<sim::BodyModel> bodies) {
-  if (bodies.size() != model_.bodies.size()) throw InputError("set_body_models: another number of bodies");
+  if (bodies.size() != model_.bodies.size()) throw InternalError("set_body_models: another number of bodies");
   model_.bodies = std::move(bodies);
   if (contact_) contact_->upload_constants();
 }

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <bit>
-#include <stdexcept>
 #include <string>
+
+#include "core/errors.h"
 
 namespace pond::lod {
 namespace {
@@ -39,7 +40,7 @@ Diamond GridHierarchy::diamond(Point v) {
 
 GridHierarchy::GridHierarchy(int rows, int cols) : rows_(rows), cols_(cols) {
   if (rows < 2 || cols < 2 || rows > (1 << 16) || cols > (1 << 16))
-    throw std::invalid_argument("LOD grid must be between 2 x 2 and 65536 x 65536 nodes, got " +
+    throw InternalError("LOD grid must be between 2 x 2 and 65536 x 65536 nodes, got " +
                                 std::to_string(rows) + " x " + std::to_string(cols));
   const int wide = std::bit_ceil(static_cast<unsigned>(cols - 1));
   const int high = std::bit_ceil(static_cast<unsigned>(rows - 1));

@@ -141,11 +141,11 @@ std::size_t LodBuilder::build(const NodePositions& p, const Camera& camera, doub
                               std::span<std::uint32_t> out) {
   validate(camera, tolerance_px);
   if (p.rows != rows() || p.cols != cols())
-    throw InputError("positions are " + std::to_string(p.rows) + " x " + std::to_string(p.cols) +
+    throw InternalError("positions are " + std::to_string(p.rows) + " x " + std::to_string(p.cols) +
                      " but the LOD builder was made for " + std::to_string(rows()) + " x " +
                      std::to_string(cols()));
   if (out.size() < max_indices())
-    throw std::length_error("LOD index array holds " + std::to_string(out.size()) +
+    throw InternalError("LOD index array holds " + std::to_string(out.size()) +
                             " indices, needs " + std::to_string(max_indices()));
   stats_ = {};
   const std::size_t n = p.nodes();

@@ -45,8 +45,8 @@ class LodBuilder {
   std::size_t full_triangles() const { return max_indices() / 3; }
 
   // Writes the triangles (3 indices each, node index = row * cols + col) to `out` and returns the
-  // number of indices written. Throws InputError on a bad camera, tolerance or grid size mismatch
-  // and std::length_error when `out` is shorter than max_indices().
+  // number of indices written. Throws InputError on a bad camera or tolerance or a non-finite position, and
+  // InternalError for positions of another grid or an `out` shorter than max_indices().
   std::size_t build(const NodePositions& positions, const Camera& camera, double tolerance_px,
                     std::span<std::uint32_t> out);
 

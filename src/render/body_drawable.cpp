@@ -13,6 +13,7 @@
 #include "render/reflection_pass.h"
 #include "render/shadow_pass.h"
 #include "render/sphere_mesh.h"
+#include "scene/body_fields.h"
 #include "shared/body_render.h"
 
 namespace pond::render {
@@ -75,7 +76,7 @@ struct BodyDrawable::Impl {
                                  gpu::MemoryUse::device, "body sphere indices");
     gpu::upload(ctx, indices, std::as_bytes(std::span(all.indices)));
     for (std::uint32_t k = 0; k < FrameLoop::kFramesInFlight; ++k)
-      instances.push_back(gpu::create_buffer(ctx, kMaxBodies * sizeof(sh::BodyInstance), BU::eVertexBuffer,
+      instances.push_back(gpu::create_buffer(ctx, scene::kMaxBodies * sizeof(sh::BodyInstance), BU::eVertexBuffer,
                                              gpu::MemoryUse::upload, "body instances, slot " + std::to_string(k)));
   }
 
@@ -96,7 +97,7 @@ struct BodyDrawable::Impl {
     const std::vector<sim::BodyState> states = session.bodies();
     const auto& specs = session.scene().bodies;
     const double h = session.model().spacing;
-    count = static_cast<std::uint32_t>(std::min({states.size(), specs.size(), kMaxBodies}));
+    count = static_cast<std::uint32_t>(std::min({states.size(), specs.size(), scene::kMaxBodies}));
     floating.resize(count);
     level_of.assign(count, 0);
     std::vector<sh::BodyInstance> drawn(count);

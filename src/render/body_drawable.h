@@ -19,8 +19,6 @@ namespace pond::render {
 
 class BodyDrawable final : public PassDrawable {
  public:
-  static constexpr std::size_t kMaxBodies = 64;  // the session's limit (sim::Session::add_body)
-
   // Uses the loop's colour format and session (which must outlive the drawable).
   BodyDrawable(const gpu::Context& ctx, const FrameLoop& loop);
   ~BodyDrawable() override;

@@ -358,7 +358,7 @@ struct FrameLoop::Impl {
   }
 
   FrameStats draw(const FrameTarget& target) {
-    if (!has_simulated()) throw std::logic_error("FrameLoop::draw without a simulated frame");
+    if (!has_simulated()) throw InternalError("FrameLoop::draw without a simulated frame");
     Simulated f = std::move(*simulated);
     simulated.reset();
     Slot& s = slots[f.slot];

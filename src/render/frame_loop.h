@@ -148,7 +148,7 @@ class FrameLoop {
   // since (a splash or an edit in between makes the next frame simulate again).
   bool simulated() const;
   // The second half: draws the simulated frame into `target` (rebuilding the LOD and the early
-  // passes first if the target's size differs from the one simulate() was given). Throws std::logic_error without a
+  // passes first if the target's size differs from the one simulate() was given). Throws InternalError without a
   // simulated frame. Stats: the whole frame's.
   FrameStats draw(const FrameTarget& target);
   // Waits until every submitted frame is drawn (before reading back, resizing, tearing down).

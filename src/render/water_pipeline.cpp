@@ -4,6 +4,7 @@
 #include <span>
 #include <stdexcept>
 
+#include "core/errors.h"
 #include "render/graphics_pipeline.h"
 #include "render/reflection_pass.h"
 #include "render/render_layout.h"
@@ -109,7 +110,7 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
   for (std::size_t v = 0; v < std::size(kWaterNames); ++v) {
     const bool reflections = v & 1u, caustics = v & 2u, shadows = v & 4u;
     if (WaterPipelines::water_variant(reflections, caustics, shadows) != p.waters.size())
-      throw std::logic_error("water pipeline variants out of order");
+      throw InternalError("water pipeline variants out of order");
     p.waters.push_back(create(ctx, p.layout, color_format, depth_format,
                               {.vert = water_vert_spirv(),
                                .frag = reflections ? water_reflect_frag_spirv() : water_frag_spirv(),

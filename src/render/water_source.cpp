@@ -3,6 +3,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "core/errors.h"
 #include "gpu/water_layout.h"
 #include "sim/normals.h"
 
@@ -13,7 +14,7 @@ using BU = vk::BufferUsageFlagBits;
 WaterSource::WaterSource(const gpu::Context& ctx, sim::Solver& solver, std::uint32_t slots)
     : ctx_(ctx), model_(solver.model()), gpu_(dynamic_cast<gpu::GpuSolver*>(&solver)),
       cpu_(dynamic_cast<const sim::CpuSolver*>(&solver)) {
-  if (!gpu_ && !cpu_) throw std::logic_error("WaterSource: an unknown kind of solver");
+  if (!gpu_ && !cpu_) throw InternalError("WaterSource: an unknown kind of solver");
   const sim::WaterModel& model = model_;
   if (gpu_) {
     if (!gpu_->host_state())  // else read in place (lavapipe)

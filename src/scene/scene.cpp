@@ -34,6 +34,7 @@ namespace {
 constexpr double kBytesPerNode = 2 * 6 * 4 + 3 * 4 + 1;
 constexpr int kMaxGridSide = 1 << 16;
 constexpr int kMaxSubsteps = 10000;
+constexpr std::size_t kMaxTrees = 64;  // instances of the scene's tree
 
 NodeKind parse_kind(JsonFields& f, const char* key, bool allow_free) {
   const std::string s = allow_free ? f.text(key, "fixed", {"fixed", "vertical", "free"})
@@ -155,7 +156,7 @@ TreeSpec parse_tree(JsonFields f, const Scene& scene) {
   t.height = f.number("height", t.height);
   if (!(t.height > 0.0)) f.fail("height", "must be positive");
   const auto& ps = f.array("positions");
-  if (ps.size() > 64) f.fail("positions", "holds more than 64 trees");
+  if (ps.size() > kMaxTrees) f.fail("positions", "holds more than " + std::to_string(kMaxTrees) + " trees");
   const GridSpec& g = scene.grid;
   for (std::size_t k = 0; k < ps.size(); ++k) {
     const std::string key = "positions[" + std::to_string(k) + "]";

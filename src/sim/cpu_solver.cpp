@@ -33,7 +33,7 @@ CpuSolver::CpuSolver(WaterModel model, Backend backend, int threads)
 
 void CpuSolver::set_state(const WaterState& state, std::int64_t steps_done) {
   if (state.bodies.size() != model_.bodies.size())
-    throw InputError("set_state: " + std::to_string(state.bodies.size()) + " bodies for a model of " +
+    throw InternalError("set_state: " + std::to_string(state.bodies.size()) + " bodies for a model of " +
                      std::to_string(model_.bodies.size()));
   cur_ = state;
   step_ = steps_done;
@@ -66,7 +66,7 @@ void CpuSolver::substep(int substep_index) {
 }
 
 void CpuSolver::set_body_models(std::vector<BodyModel> bodies) {
-  if (bodies.size() != model_.bodies.size()) throw InputError("set_body_models: another number of bodies");
+  if (bodies.size() != model_.bodies.size()) throw InternalError("set_body_models: another number of bodies");
   model_.bodies = std::move(bodies);
 }
 

@@ -48,12 +48,12 @@ WaterModel Session::build() const {
 
 void Session::replace_solver(WaterModel model, const WaterState& state, std::int64_t steps) {
   if (state.nodes() != model.nodes())
-    throw InputError("the state has " + std::to_string(state.nodes()) + " nodes, the grid " +
+    throw InternalError("the state has " + std::to_string(state.nodes()) + " nodes, the grid " +
                      std::to_string(model.nodes()));
   notify_change();
   std::unique_ptr<Solver> next;
   if (choice_.gpu) {
-    if (!gpu_) throw InputError("the GPU solver is not available here");
+    if (!gpu_) throw InternalError("a GPU solver was chosen without a factory for it");
     solver_.reset();  // one solver's buffers at a time
     next = gpu_(model);
   } else {
@@ -95,7 +95,7 @@ void Session::set_physics(const Physics& physics) {
 void Session::set_water(const WaterSpec& water) {
   if (water.grid.rows != scene_.grid.rows || water.grid.cols != scene_.grid.cols ||
       water.grid.spacing != scene_.grid.spacing)
-    throw InputError("new constraints must keep the grid");
+    throw InternalError("new constraints must keep the grid");
   WaterState state = solver_->read_state();
   const std::int64_t steps = solver_->steps_done();
   const Physics physics = scene_.physics;
@@ -135,7 +135,7 @@ void Session::add_body(const BodySpec& body) {
 }
 
 void Session::remove_body(std::size_t index) {
-  if (index >= scene_.bodies.size()) throw InputError("no body " + std::to_string(index));
+  if (index >= scene_.bodies.size()) throw InternalError("no body " + std::to_string(index));
   WaterState state = solver_->read_state();
   const std::int64_t steps = solver_->steps_done();
   scene_.bodies.erase(scene_.bodies.begin() + static_cast<std::ptrdiff_t>(index));
@@ -146,7 +146,7 @@ void Session::remove_body(std::size_t index) {
 }
 
 void Session::drag_body(std::size_t index, const std::array<double, 3>& target, std::int64_t steps) {
-  if (index >= scene_.bodies.size()) throw InputError("no body " + std::to_string(index));
+  if (index >= scene_.bodies.size()) throw InternalError("no body " + std::to_string(index));
   held_.resize(scene_.bodies.size());
   const double h = scene_.grid.spacing;
   const BodyState now = solver_->read_bodies()[index];
@@ -194,7 +194,7 @@ void Session::reset() {
 
 void Session::set_state(const WaterState& state, std::int64_t steps) {
   if (state.nodes() != model().nodes())
-    throw InputError("set_state: " + std::to_string(state.nodes()) + " nodes for a grid of " +
+    throw InternalError("set_state: " + std::to_string(state.nodes()) + " nodes for a grid of " +
                      std::to_string(model().nodes()));
   notify_change();
   solver_->set_state(state, steps);

@@ -1,7 +1,8 @@
 #include "tree/bend.h"
 
 #include <cmath>
-#include <stdexcept>
+
+#include "core/errors.h"
 
 namespace pond::tree {
 namespace sh = shared::tree_wind;
@@ -23,7 +24,7 @@ float rest_length(const Tree& tree, std::size_t i) {
 }
 
 void bend_tree(const Tree& tree, const TreeWindFrame& frame, std::span<Vec3> out) {
-  if (out.size() != tree.size()) throw std::invalid_argument("bend_tree: output size mismatch");
+  if (out.size() != tree.size()) throw InternalError("bend_tree: output size mismatch");
   bend_article(tree, frame, out);
   if (frame.bend_mode != sh::kTreeBendKeepLength) return;
   // Walk from the root outward (parents precede children). out[p] is overwritten with p's kept

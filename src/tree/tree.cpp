@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/errors.h"
 #include "tree/jitter_coefficients.h"
 #include "tree/skeleton.h"
 #include "tree/wind_vectors.h"
@@ -18,10 +19,10 @@ std::size_t tree_vertex_count(int depth) {
 
 Tree grow_tree(const TreeParams& params) {
   if (params.depth < kMinTreeDepth || params.depth > kMaxTreeDepth)
-    throw std::invalid_argument("tree depth " + std::to_string(params.depth) + " is outside " +
+    throw InternalError("tree depth " + std::to_string(params.depth) + " is outside " +
                                 std::to_string(kMinTreeDepth) + ".." + std::to_string(kMaxTreeDepth));
   if (!(params.trunk_length > 0.0f) || !std::isfinite(params.trunk_length))
-    throw std::invalid_argument("tree trunk length must be positive and finite");
+    throw InternalError("tree trunk length must be positive and finite");
   Tree tree;
   build_skeleton(params, tree);
   compute_wind_vectors(tree);

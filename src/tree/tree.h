@@ -38,8 +38,8 @@ struct Tree {
 // (3^depth - 1) / 2 sticks plus the root: 1094 at depth 7, 3281 at depth 8.
 std::size_t tree_vertex_count(int depth);
 
-// Builds the skeleton, then the wind vectors and the jitter coefficients. Throws std::invalid_argument
-// for a depth outside [kMinTreeDepth, kMaxTreeDepth] or a trunk length that is not positive.
+// Builds the skeleton, then the wind vectors and the jitter coefficients. Throws InternalError
+// (core/errors.h; callers check them first) for a depth outside [kMinTreeDepth, kMaxTreeDepth] or a trunk length that is not positive.
 Tree grow_tree(const TreeParams& params);
 
 }  // namespace pond::tree

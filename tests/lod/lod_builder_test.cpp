@@ -287,13 +287,13 @@ TEST(LodBuilder, RejectsBadInput) {
   c = good, c.width = 0;
   EXPECT_THROW(builder.build(view, c, 1.0, out), InputError);
   EXPECT_THROW(builder.build(view, good, 0.0, out), InputError);
-  EXPECT_THROW(builder.build(lod::interleaved_positions(s.data(), 3, 27), good, 1.0, out), InputError);
+  EXPECT_THROW(builder.build(lod::interleaved_positions(s.data(), 3, 27), good, 1.0, out), InternalError);
   std::vector<std::uint32_t> small(out.size() - 1);
-  EXPECT_THROW(builder.build(view, good, 1.0, small), std::length_error);
+  EXPECT_THROW(builder.build(view, good, 1.0, small), InternalError);
   std::vector<float> bad = s;
   bad[40 * 6 + 1] = std::numeric_limits<float>::quiet_NaN();
   EXPECT_THROW(builder.build(lod::interleaved_positions(bad.data(), 9, 9), good, 1.0, out), InputError);
-  EXPECT_THROW(lod::LodBuilder(1, 5), std::invalid_argument);
+  EXPECT_THROW(lod::LodBuilder(1, 5), InternalError);
 }
 
 // The paper's figure 8: its 50 x 50 pond (the default scene: a splash beside an island) rippling,

@@ -125,7 +125,7 @@ TEST(Session, NewConstraintsHoldTheCarriedWaterAtOnce) {
   EXPECT_EQ(w.vy[n], 0.0f);
   WaterSpec other_grid = walled;
   other_grid.grid.rows += 1;
-  EXPECT_THROW(s.set_water(other_grid), InputError);
+  EXPECT_THROW(s.set_water(other_grid), InternalError);
 }
 
 TEST(Session, WindRipplesLandPastTheirHorizon) {
@@ -214,7 +214,7 @@ TEST(Session, BodiesAreAddedDraggedReleasedAndRemoved) {
 }
 
 TEST(Session, GpuWithoutAFactoryIsRefused) {
-  EXPECT_THROW(Session(scene::load_scene(""), SolverChoice{.gpu = true}), InputError);
+  EXPECT_THROW(Session(scene::load_scene(""), SolverChoice{.gpu = true}), InternalError);
 }
 
 }  // namespace

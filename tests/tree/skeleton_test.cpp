@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/errors.h"
 #include "tree/tree.h"
 
 namespace pond::tree {
@@ -30,9 +31,9 @@ TEST(tree_skeleton, VertexCountsForDepths1To8) {
 }
 
 TEST(tree_skeleton, RejectsDepthOutside1To10) {
-  EXPECT_THROW(grow_tree({0, 1, 1.0f}), std::invalid_argument);
-  EXPECT_THROW(grow_tree({11, 1, 1.0f}), std::invalid_argument);
-  EXPECT_THROW(grow_tree({3, 1, 0.0f}), std::invalid_argument);
+  EXPECT_THROW(grow_tree({0, 1, 1.0f}), InternalError);
+  EXPECT_THROW(grow_tree({11, 1, 1.0f}), InternalError);
+  EXPECT_THROW(grow_tree({3, 1, 0.0f}), InternalError);
 }
 
 TEST(tree_skeleton, ParentsPrecedeChildrenAndEveryChainReachesTheRoot) {

@@ -31,7 +31,7 @@ struct DemoSettings {
   bool paused = false;
   bool step_once = false;
   std::int64_t steps_per_frame = 1;
-  sim::Physics physics;        // edited in the panel, applied with FrameLoop::set_physics
+  sim::Physics physics;        // edited in the panel, applied with sim::Session::set_physics
   SceneModes modes;
   bool gpu_solver = true;
   // View
