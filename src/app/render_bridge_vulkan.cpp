@@ -32,7 +32,8 @@ double median(std::vector<double> v) {
 
 // Each effect the scene has on, timed against the same frame without it: frozen frames (no steps)
 // alternating off and on, so both halves see the same state and the same load; whole frames with
-// the GPU's work (FrameView::wait). After the picture is written: these frames overwrite it.
+// the GPU's work (FrameView::wait). Only with --profile, after the picture is written: these
+// frames overwrite it, and are not among the --frames N the picture and the medians count.
 void print_effect_costs(render::FrameLoop& loop, const render::RenderTarget& target, render::FrameView view,
                         int frames) {
   if (frames < 2) return;
@@ -122,7 +123,7 @@ int run_render(const RenderOptions& o) {
   }
   if (bodies.drawn() > 0)
     std::printf("bodies: %zu drawn, %zu triangles\n", bodies.drawn(), bodies.triangles());
-  print_effect_costs(loop, target, view, o.frames);
+  if (o.profile) print_effect_costs(loop, target, view, o.frames);
   std::printf("steps done %" PRId64 "\nwrote %s\n", session.steps_done(), o.out.c_str());
   return 0;
 }
