@@ -144,7 +144,13 @@ VKAPI_ATTR VkResult VKAPI_CALL create_device(VkPhysicalDevice physical, const Vk
       .device_buffer_requirements = load<PFN_vkGetDeviceBufferMemoryRequirements>(
           gdpa, dev, "vkGetDeviceBufferMemoryRequirements", "vkGetDeviceBufferMemoryRequirementsKHR"),
       .device_image_requirements = load<PFN_vkGetDeviceImageMemoryRequirements>(
-          gdpa, dev, "vkGetDeviceImageMemoryRequirements", "vkGetDeviceImageMemoryRequirementsKHR")};
+          gdpa, dev, "vkGetDeviceImageMemoryRequirements", "vkGetDeviceImageMemoryRequirementsKHR"),
+      .queue_submit = load<PFN_vkQueueSubmit>(gdpa, dev, "vkQueueSubmit"),
+      .queue_submit2 = load<PFN_vkQueueSubmit2>(gdpa, dev, "vkQueueSubmit2", "vkQueueSubmit2KHR"),
+      .wait_for_fences = load<PFN_vkWaitForFences>(gdpa, dev, "vkWaitForFences"),
+      .queue_wait_idle = load<PFN_vkQueueWaitIdle>(gdpa, dev, "vkQueueWaitIdle"),
+      .device_wait_idle = load<PFN_vkDeviceWaitIdle>(gdpa, dev, "vkDeviceWaitIdle"),
+      .wait_semaphores = load<PFN_vkWaitSemaphores>(gdpa, dev, "vkWaitSemaphores", "vkWaitSemaphoresKHR")};
   VkPhysicalDeviceMemoryProperties real{};
   inst.get_memory_properties(physical, &real);
   state->memory = make_memory_model(real);
@@ -164,6 +170,7 @@ VKAPI_ATTR void VKAPI_CALL destroy_device(VkDevice device, const VkAllocationCal
     registry().devices.erase(it);
   }
   state->next.destroy_device(device, allocator);  // shadows of still-mapped memory go with `state`
+  write_counters(state->counters);
 }
 
 VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL get_device_proc_addr(VkDevice device, const char* name);
@@ -209,6 +216,14 @@ const Entry kDeviceCommands[] = {
     {"vkGetDeviceBufferMemoryRequirementsKHR", as_void(get_device_buffer_memory_requirements)},
     {"vkGetDeviceImageMemoryRequirements", as_void(get_device_image_memory_requirements)},
     {"vkGetDeviceImageMemoryRequirementsKHR", as_void(get_device_image_memory_requirements)},
+    {"vkQueueSubmit", as_void(queue_submit)},
+    {"vkQueueSubmit2", as_void(queue_submit2)},
+    {"vkQueueSubmit2KHR", as_void(queue_submit2)},
+    {"vkWaitForFences", as_void(wait_for_fences)},
+    {"vkQueueWaitIdle", as_void(queue_wait_idle)},
+    {"vkDeviceWaitIdle", as_void(device_wait_idle)},
+    {"vkWaitSemaphores", as_void(wait_semaphores)},
+    {"vkWaitSemaphoresKHR", as_void(wait_semaphores)},
 };
 
 template <std::size_t N>

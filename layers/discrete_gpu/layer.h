@@ -6,6 +6,7 @@
 //   layer.cpp       loader interface, dispatch, instance and device creation
 //   properties.cpp  device type, limits, features, the denormal setting
 //   memory.cpp      the presented memory types and the non-coherent memory model
+//   counters.cpp    per device: submissions, host waits, bytes flushed and invalidated
 //
 // Only what is needed is kept: the loader's dispatch tables (immutable after creation) and, per
 // device, its memory-type map and the allocations (size, type, the current mapping). Properties
@@ -14,9 +15,11 @@
 #include <vulkan/vk_layer.h>
 #include <vulkan/vulkan.h>
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <unordered_map>
 
 namespace pond::layer {
@@ -67,7 +70,26 @@ struct DeviceDispatch {
   PFN_vkGetImageMemoryRequirements2 image_requirements2 = nullptr;
   PFN_vkGetDeviceBufferMemoryRequirements device_buffer_requirements = nullptr;
   PFN_vkGetDeviceImageMemoryRequirements device_image_requirements = nullptr;
+  PFN_vkQueueSubmit queue_submit = nullptr;
+  PFN_vkQueueSubmit2 queue_submit2 = nullptr;
+  PFN_vkWaitForFences wait_for_fences = nullptr;
+  PFN_vkQueueWaitIdle queue_wait_idle = nullptr;
+  PFN_vkDeviceWaitIdle device_wait_idle = nullptr;
+  PFN_vkWaitSemaphores wait_semaphores = nullptr;
 };
+
+// What an application did with the device, counted for tests of how it drives a GPU: every
+// vkQueueSubmit / vkQueueSubmit2 call; every host wait (vkWaitForFences, vkQueueWaitIdle,
+// vkDeviceWaitIdle, vkWaitSemaphores; polling a fence, acquiring and presenting are not waits);
+// the bytes of every flushed and invalidated range (VK_WHOLE_SIZE: to the end of the mapping).
+// Written as one JSON object to $POND_DISCRETE_GPU_STATS when the device is destroyed.
+struct Counters {
+  std::atomic<std::uint64_t> submits{0}, host_waits{0}, bytes_flushed{0}, bytes_invalidated{0};
+};
+// The counters as one JSON object: {"submits": S, "host_waits": W, "bytes_flushed": F, "bytes_invalidated": I}.
+std::string counters_json(const Counters& counters);
+// Writes counters_json to the file $POND_DISCRETE_GPU_STATS names (nothing when it is unset).
+void write_counters(const Counters& counters);
 
 // The memory types and heaps the application sees, each type backed by one real type.
 struct MemoryModel {
@@ -98,6 +120,7 @@ struct Allocation {
 struct DeviceState {
   DeviceDispatch next;
   MemoryModel memory;
+  Counters counters;
   std::unordered_map<VkDeviceMemory, Allocation> allocations;
 };
 
@@ -113,6 +136,10 @@ Registry& registry();
 InstanceDispatch instance_dispatch(void* key);
 // The device's state; the caller holds registry().mutex.
 DeviceState& device_state(VkDevice device);
+
+// The device's state for a device-level handle (a device, queue or command buffer share the key);
+// null when the layer did not create it. Takes the lock; the state lives until vkDestroyDevice.
+DeviceState* find_device_state(void* key);
 
 // Intercepted commands (the loader reaches them through vkGet*ProcAddr in layer.cpp).
 VKAPI_ATTR void VKAPI_CALL get_physical_device_properties(VkPhysicalDevice, VkPhysicalDeviceProperties*);
@@ -146,4 +173,11 @@ VKAPI_ATTR void VKAPI_CALL get_device_buffer_memory_requirements(VkDevice, const
                                                                  VkMemoryRequirements2*);
 VKAPI_ATTR void VKAPI_CALL get_device_image_memory_requirements(VkDevice, const VkDeviceImageMemoryRequirements*,
                                                                 VkMemoryRequirements2*);
+VKAPI_ATTR VkResult VKAPI_CALL queue_submit(VkQueue, std::uint32_t count, const VkSubmitInfo*, VkFence);
+VKAPI_ATTR VkResult VKAPI_CALL queue_submit2(VkQueue, std::uint32_t count, const VkSubmitInfo2*, VkFence);
+VKAPI_ATTR VkResult VKAPI_CALL wait_for_fences(VkDevice, std::uint32_t count, const VkFence*, VkBool32 wait_all,
+                                               std::uint64_t timeout);
+VKAPI_ATTR VkResult VKAPI_CALL queue_wait_idle(VkQueue);
+VKAPI_ATTR VkResult VKAPI_CALL device_wait_idle(VkDevice);
+VKAPI_ATTR VkResult VKAPI_CALL wait_semaphores(VkDevice, const VkSemaphoreWaitInfo*, std::uint64_t timeout);
 }  // namespace pond::layer

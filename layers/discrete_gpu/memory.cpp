@@ -298,6 +298,7 @@ VKAPI_ATTR VkResult VKAPI_CALL flush_mapped_memory_ranges(VkDevice device, std::
   for (const Span& s : spans) {
     const VkDeviceSize at = s.begin - s.allocation->map_offset;
     std::memcpy(s.allocation->real + at, s.allocation->shadow + at, s.end - s.begin);
+    d.counters.bytes_flushed += s.end - s.begin;
   }
   return any_real_non_coherent(spans) ? d.next.flush_ranges(device, count, ranges) : VK_SUCCESS;
 }
@@ -313,6 +314,7 @@ VKAPI_ATTR VkResult VKAPI_CALL invalidate_mapped_memory_ranges(VkDevice device, 
   for (const Span& s : spans) {
     const VkDeviceSize at = s.begin - s.allocation->map_offset;
     std::memcpy(s.allocation->shadow + at, s.allocation->real + at, s.end - s.begin);
+    d.counters.bytes_invalidated += s.end - s.begin;
   }
   return VK_SUCCESS;
 }

@@ -70,7 +70,9 @@ LayerDevice::LayerDevice(const std::vector<const char*>& app_layers) {
   const float priority = 1.0f;
   const vk::DeviceQueueCreateInfo queue_info{.queueFamilyIndex = family_, .queueCount = 1,
                                              .pQueuePriorities = &priority};
-  device_ = vk::raii::Device(physical_, vk::DeviceCreateInfo{.queueCreateInfoCount = 1, .pQueueCreateInfos = &queue_info});
+  const vk::PhysicalDeviceVulkan12Features timeline{.timelineSemaphore = VK_TRUE};  // for vkWaitSemaphores
+  device_ = vk::raii::Device(physical_, vk::DeviceCreateInfo{.pNext = &timeline, .queueCreateInfoCount = 1,
+                                                             .pQueueCreateInfos = &queue_info});
   queue_ = vk::raii::Queue(device_, family_, 0);
   pool_ = vk::raii::CommandPool(device_, vk::CommandPoolCreateInfo{.queueFamilyIndex = family_});
 }
@@ -97,6 +99,7 @@ HostBuffer LayerDevice::host_buffer(vk::DeviceSize size) const {
   const vk::MemoryRequirements req = b.buffer.getMemoryRequirements();
   const std::uint32_t type = memory_type(req.memoryTypeBits, vk::MemoryPropertyFlagBits::eHostVisible);
   b.memory = vk::raii::DeviceMemory(device_, vk::MemoryAllocateInfo{.allocationSize = req.size, .memoryTypeIndex = type});
+  b.allocation_size = req.size;
   b.buffer.bindMemory(*b.memory, 0);
   b.mapped = static_cast<std::byte*>(b.memory.mapMemory(0, VK_WHOLE_SIZE));
   return b;

@@ -1,6 +1,7 @@
 #pragma once
 // A Vulkan instance and device made through the loader with VK_LAYER_POND_discrete_gpu switched on
-// by the environment, as any program would get them: the base of the layer's tests.
+// by the environment, as any program would get them: the base of the layer's tests. The device
+// has timeline semaphores (Vulkan 1.2) and nothing else optional.
 //
 // CTest sets VK_LAYER_PATH (the validation layer's directory, then build/layers) and
 // VK_INSTANCE_LAYERS (validation first), so that validation sits above the layer and checks the
@@ -21,6 +22,7 @@ struct HostBuffer {
   vk::raii::Buffer buffer = nullptr;
   vk::raii::DeviceMemory memory = nullptr;
   vk::DeviceSize size = 0;
+  vk::DeviceSize allocation_size = 0;  // its memory's, mapped whole
   std::byte* mapped = nullptr;
 };
 
@@ -34,6 +36,7 @@ class LayerDevice {
 
   const vk::raii::PhysicalDevice& physical() const { return physical_; }
   const vk::raii::Device& device() const { return device_; }
+  const vk::raii::Queue& queue() const { return queue_; }
 
   // The first memory type in `type_bits` with all of `required` and none of `forbidden`; throws
   // when there is none.
@@ -41,7 +44,7 @@ class LayerDevice {
                             vk::MemoryPropertyFlags forbidden = {}) const;
   // A transfer source and destination buffer in host-visible memory, mapped.
   HostBuffer host_buffer(vk::DeviceSize size) const;
-  // Records with `record`, submits, waits.
+  // Records with `record`, submits, waits (vkQueueWaitIdle).
   void submit(const std::function<void(const vk::raii::CommandBuffer&)>& record) const;
   // vkFlushMappedMemoryRanges / vkInvalidateMappedMemoryRanges of one range, the raw result.
   VkResult flush(const vk::raii::DeviceMemory& memory, vk::DeviceSize offset, vk::DeviceSize size) const;

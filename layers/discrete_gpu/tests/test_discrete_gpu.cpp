@@ -3,9 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <optional>
+#include <string>
 
 #include "layer_device.h"
 
@@ -14,6 +18,7 @@ namespace {
 
 using MP = vk::MemoryPropertyFlagBits;
 constexpr vk::DeviceSize kSize = 4096;
+constexpr vk::DeviceSize kAtom = 256;  // the presented nonCoherentAtomSize
 constexpr std::uint32_t kPoisonWord = 0xFFFFFFFFu;  // what a mapping reads before an invalidate
 
 // Sets (or, with nullptr, unsets) an environment variable for one scope.
@@ -259,6 +264,63 @@ TEST(DiscreteGpuLayer, MisalignedRangesAreRefused) {
   EXPECT_EQ(gpu.invalidate(memory, 0, VK_WHOLE_SIZE), VK_SUCCESS);
   const auto messages = gpu.take_messages();
   EXPECT_TRUE(messages.empty()) << joined(messages);
+}
+
+}  // namespace
+}  // namespace pond::layer_test
+
+namespace pond::layer_test {
+namespace {
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// Known calls give known counts, written when the device is destroyed: each submission call; each
+// host wait of the four kinds, and nothing for polling a fence or signalling from the host; the
+// bytes of each flushed or invalidated range, VK_WHOLE_SIZE up to the end of the mapping.
+TEST(DiscreteGpuLayer, CountsSubmissionsHostWaitsAndBytes) {
+  const std::string path = std::string(POND_TEST_XDG_RUNTIME_DIR) + "/counters.json";
+  std::remove(path.c_str());
+  const ScopedEnv stats("POND_DISCRETE_GPU_STATS", path.c_str());
+  vk::DeviceSize whole = 0;
+  {
+    std::optional<LayerDevice> gpu(std::in_place);
+    {
+      HostBuffer b = gpu->host_buffer(kSize);
+      whole = b.allocation_size;
+      ASSERT_GE(whole, 2 * kAtom);
+      gpu->submit([&](const vk::raii::CommandBuffer& cmd) { cmd.fillBuffer(*b.buffer, 0, VK_WHOLE_SIZE, 1u); });  // 1 submit, 1 wait
+      gpu->submit([&](const vk::raii::CommandBuffer& cmd) { cmd.fillBuffer(*b.buffer, 0, VK_WHOLE_SIZE, 2u); });  // 1 submit, 1 wait
+      EXPECT_EQ(gpu->flush(b.memory, 0, kAtom), VK_SUCCESS);                  // kAtom bytes flushed
+      EXPECT_EQ(gpu->flush(b.memory, kAtom, VK_WHOLE_SIZE), VK_SUCCESS);      // whole - kAtom
+      EXPECT_EQ(gpu->invalidate(b.memory, 0, VK_WHOLE_SIZE), VK_SUCCESS);     // whole invalidated
+      EXPECT_EQ(gpu->invalidate(b.memory, kAtom, 2 * kAtom), VK_SUCCESS);     // 2 kAtom more
+    }
+    const vk::raii::Device& device = gpu->device();
+    const vk::raii::Fence fence(device, vk::FenceCreateInfo{});
+    gpu->queue().submit(nullptr, *fence);  // 1 submit (no batches)
+    while (fence.getStatus() == vk::Result::eNotReady) {  // polling: no wait
+    }
+    EXPECT_EQ(device.waitForFences(*fence, VK_TRUE, UINT64_MAX), vk::Result::eSuccess);  // 1 wait
+    const vk::SemaphoreTypeCreateInfo timeline{.semaphoreType = vk::SemaphoreType::eTimeline, .initialValue = 0};
+    const vk::raii::Semaphore semaphore(device, vk::SemaphoreCreateInfo{.pNext = &timeline});
+    device.signalSemaphore(vk::SemaphoreSignalInfo{.semaphore = *semaphore, .value = 1});  // not a wait
+    const std::uint64_t value = 1;
+    EXPECT_EQ(device.waitSemaphores(vk::SemaphoreWaitInfo{.semaphoreCount = 1, .pSemaphores = &*semaphore,
+                                                          .pValues = &value},
+                                    UINT64_MAX),
+              vk::Result::eSuccess);  // 1 wait
+    device.waitIdle();                // 1 wait
+    const auto messages = gpu->take_messages();
+    EXPECT_TRUE(messages.empty()) << joined(messages);
+  }  // ~LayerDevice: vkDeviceWaitIdle (1 wait), then vkDestroyDevice writes the file
+  char expected[256];
+  std::snprintf(expected, sizeof expected,
+                "{\"submits\": 3, \"host_waits\": 6, \"bytes_flushed\": %llu, \"bytes_invalidated\": %llu}\n",
+                static_cast<unsigned long long>(whole), static_cast<unsigned long long>(whole + 2 * kAtom));
+  EXPECT_EQ(read_file(path), expected);
 }
 
 }  // namespace
