@@ -34,7 +34,7 @@ std::uint32_t contact_invocations(std::uint32_t subgroup_size) {
 BodyContact::BodyContact(const Context& ctx, const sim::WaterModel& model, std::size_t pitch, std::size_t stride,
                          const Buffer (&state)[2], const vk::raii::BufferView (&state_r32)[2],
                          const vk::raii::BufferView& kinds_rgba8, const Buffer& reach, std::int64_t max_substeps,
-                         bool denorm_preserve)
+                         std::uint32_t regions, bool denorm_preserve)
     : ctx_(ctx), model_(model), pitch_(pitch), stride_(stride), max_substeps_(max_substeps) {
   std::vector<vk::DescriptorType> bindings(POND_CONTACT_BINDINGS, vk::DescriptorType::eStorageBuffer);
   bindings[POND_CONTACT_BINDING_STATE1] = bindings[POND_CONTACT_BINDING_KINDS4] = vk::DescriptorType::eUniformTexelBuffer;
@@ -42,13 +42,14 @@ BodyContact::BodyContact(const Context& ctx, const sim::WaterModel& model, std::
   pipe_ = create_compute_pipeline(ctx_, water_contact_spirv(denorm_preserve), bindings, sizeof(ContactPush), local_x,
                                   "water_contact (" + std::to_string(local_x[0].value) + " invocations)");
   const std::size_t count = model_.bodies.size();
-  bodies_ = create_buffer(ctx_, count * sizeof(BodyState), BU::eStorageBuffer | BU::eTransferSrc | BU::eTransferDst,
+  bodies_ = create_buffer(ctx_, count * sizeof(BodyState),
+                          BU::eStorageBuffer | BU::eTransferSrc | BU::eTransferDst | BU::eVertexBuffer,
                           MemoryUse::device, "bodies");
   constants_ = create_buffer(ctx_, count * sizeof(BodyConstants), BU::eStorageBuffer | BU::eTransferDst,
                              MemoryUse::device, "body constants");
   upload_constants();
   readback_ = create_buffer(ctx_, count * sizeof(BodyState), BU::eTransferDst, MemoryUse::readback, "bodies readback");
-  schedule_ = create_buffer(ctx_, static_cast<vk::DeviceSize>(max_substeps_) * count * sizeof(BodyState),
+  schedule_ = create_buffer(ctx_, static_cast<vk::DeviceSize>(max_substeps_) * regions * count * sizeof(BodyState),
                             BU::eStorageBuffer, MemoryUse::upload, "kinematic body schedule");
 
   const vk::DescriptorPoolSize sizes[] = {
@@ -121,28 +122,30 @@ std::vector<sim::BodyState> BodyContact::read() const {
   return out;
 }
 
-void BodyContact::write_schedule(std::int64_t first_step, std::int64_t steps) {
+void BodyContact::write_schedule(std::int64_t first_step, std::int64_t steps, std::uint32_t region) {
   const int substeps = model_.substeps;
-  if (steps * substeps > max_substeps_) throw RuntimeError("BodyContact::write_schedule: too many substeps");
-  auto* entries = static_cast<BodyState*>(schedule_.mapped);
+  if (steps * substeps > max_substeps_) throw InternalError("BodyContact::write_schedule: too many substeps");
   const std::size_t count = model_.bodies.size();
+  const std::size_t first = static_cast<std::size_t>(max_substeps_) * region * count;
+  auto* entries = static_cast<BodyState*>(schedule_.mapped) + first;
   for (std::int64_t s = 0; s < steps; ++s)
     for (int k = 0; k < substeps; ++k)
       for (std::size_t b = 0; b < count; ++b)
         if (!model_.bodies[b].floating())
           entries[static_cast<std::size_t>(s * substeps + k) * count + b] =
               sim::kinematic_state(model_.bodies[b], first_step + s, k, substeps, model_.physics.dt);
-  schedule_.flush(ctx_);
+  schedule_.flush_range(ctx_, first * sizeof(BodyState), static_cast<vk::DeviceSize>(steps * substeps) * count * sizeof(BodyState));
 }
 
-void BodyContact::record(const vk::raii::CommandBuffer& cmd, int cur, std::int64_t substep_in_batch) const {
+void BodyContact::record(const vk::raii::CommandBuffer& cmd, int cur, std::uint32_t region,
+                         std::int64_t substep_in_batch) const {
   const auto count = static_cast<std::uint32_t>(model_.bodies.size());
   const ContactPush push{.count = count,
                          .rows = static_cast<std::uint32_t>(model_.rows),
                          .cols = static_cast<std::uint32_t>(model_.cols),
                          .pitch = static_cast<std::uint32_t>(pitch_),
                          .stride = static_cast<std::uint32_t>(stride_),
-                         .schedule_first = static_cast<std::uint32_t>(substep_in_batch) * count,
+                         .schedule_first = static_cast<std::uint32_t>(max_substeps_ * region + substep_in_batch) * count,
                          .dt = model_.constants.dt,
                          .rim_x = static_cast<float>(model_.cols - 1),
                          .rim_z = static_cast<float>(model_.rows - 1)};

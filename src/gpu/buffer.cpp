@@ -66,14 +66,14 @@ void Buffer::invalidate(const Context& ctx) const {
       vk::MappedMemoryRange{.memory = *memory, .offset = 0, .size = VK_WHOLE_SIZE});
 }
 
-void Buffer::flush(const Context& ctx, vk::DeviceSize bytes) const {
+void Buffer::flush_range(const Context& ctx, vk::DeviceSize offset, vk::DeviceSize bytes) const {
   if (coherent || !mapped || bytes == 0) return;
-  // Whole atoms, or the whole mapping where the rounded range would pass its end.
+  // Whole atoms, or up to the end of the mapping where the rounded range would pass it.
   const vk::DeviceSize atom = ctx.non_coherent_atom();
-  const vk::DeviceSize rounded = bytes == VK_WHOLE_SIZE ? VK_WHOLE_SIZE : (bytes + atom - 1) / atom * atom;
-  const vk::DeviceSize allocated = memory_size;
+  const vk::DeviceSize begin = offset / atom * atom;
+  const vk::DeviceSize end = bytes == VK_WHOLE_SIZE ? VK_WHOLE_SIZE : (offset + bytes + atom - 1) / atom * atom;
   ctx.device().flushMappedMemoryRanges(vk::MappedMemoryRange{
-      .memory = *memory, .offset = 0, .size = rounded >= allocated ? VK_WHOLE_SIZE : rounded});
+      .memory = *memory, .offset = begin, .size = end >= memory_size ? VK_WHOLE_SIZE : end - begin});
 }
 
 void upload(const Context& ctx, const Buffer& dst, std::span<const std::byte> bytes) {

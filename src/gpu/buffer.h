@@ -31,7 +31,9 @@ struct Buffer {
   void invalidate(const Context& ctx) const;
   // Makes the host's writes to the first `bytes` (whole atoms; default: all) visible to the GPU
   // (no-op for coherent memory); call before the submission that reads them.
-  void flush(const Context& ctx, vk::DeviceSize bytes = VK_WHOLE_SIZE) const;
+  void flush(const Context& ctx, vk::DeviceSize bytes = VK_WHOLE_SIZE) const { flush_range(ctx, 0, bytes); }
+  // The same for `bytes` from `offset` (rounded out to whole atoms).
+  void flush_range(const Context& ctx, vk::DeviceSize offset, vk::DeviceSize bytes) const;
 };
 
 // The index of the memory type for `type_bits` with all `required` flags and as many `preferred`

@@ -85,7 +85,7 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model)
   create_descriptor_sets();
   if (!model_.bodies.empty())
     contact_ = std::make_unique<BodyContact>(ctx_, model_, pitch_, stride_, state_, state_r32_, kinds_rgba8_, reach_,
-                                             steps_per_submit() * model_.substeps,
+                                             steps_per_submit() * model_.substeps, 1,
                                              model_.math == sim::MathMode::exact && ctx_.denorm_preserve());
   set_state(sim::rest_state(model_), 0);
 }
@@ -305,7 +305,7 @@ void GpuSolver::record_step(const vk::raii::CommandBuffer& cmd) {
     record_barrier(cmd);
     cur_ = 1 - cur_;
     if (contact_) {
-      contact_->record(cmd, cur_, (step_ - batch_first_step_) * model_.substeps + s);
+      contact_->record(cmd, cur_, 0, (step_ - batch_first_step_) * model_.substeps + s);
       record_barrier(cmd);
     }
   }
@@ -319,7 +319,7 @@ std::int64_t GpuSolver::steps_per_submit() const {
 
 void GpuSolver::begin_batch(std::int64_t steps) {
   batch_first_step_ = step_;
-  if (contact_) contact_->write_schedule(step_, steps);
+  if (contact_) contact_->write_schedule(step_, steps, 0);
 }
 
 void GpuSolver::advance(std::int64_t steps) {
