@@ -1,6 +1,6 @@
 #version 460
-// The bodies (render/body_drawable.h): the unit sphere placed at each instance's centre and scaled
-// by its radius. The frame's constants go on to body.frag as flat varyings.
+// The bodies (render/body_drawable.h): the unit sphere placed at each body's centre (its state,
+// grid units, times the spacing) and scaled by its radius. The frame's constants go on to body.frag as flat varyings.
 // POND_BODY_MIRROR (body_mirror.vert): mirrored about the water's rest plane y = 0 for the planar
 // reflection (render/reflection_pass.h), lit as seen from the mirrored eye.
 #extension GL_GOOGLE_include_directive : require
@@ -10,8 +10,9 @@
 layout(push_constant) uniform Frame { BodyFrame f; };
 
 layout(location = kBodyAttribPoint) in vec4 in_point;
-layout(location = kBodyAttribSphere) in vec4 in_sphere;
+layout(location = kBodyAttribSize) in vec4 in_size;
 layout(location = kBodyAttribAlbedo) in vec4 in_albedo;
+layout(location = kBodyAttribCentre) in vec3 in_centre;
 
 layout(location = 0) out vec3 out_world;
 layout(location = 1) out vec3 out_normal;
@@ -21,7 +22,7 @@ layout(location = kBodyFlatSky) flat out vec3 out_sky;
 layout(location = kBodyFlatAlbedo) flat out vec4 out_albedo;
 
 void main() {
-  out_world = in_sphere.xyz + in_point.xyz * in_sphere.w;
+  out_world = in_centre * in_size.y + in_point.xyz * in_size.x;
   out_normal = in_point.xyz;
 #ifdef POND_BODY_MIRROR
   out_eye = vec3(f.eye.x, -f.eye.y, f.eye.z);

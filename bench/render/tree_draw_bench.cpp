@@ -11,11 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "gpu/gpu_solver.h"
+#include "gpu/gpu_solvers.h"
 #include "render/frame_loop.h"
 #include "render/render_target.h"
 #include "render/tree_drawable.h"
 #include "scene/scene.h"
+#include "scene/session_spec.h"
 
 namespace {
 
@@ -42,21 +43,22 @@ int main(int argc, char** argv) {
                             {"LOD, no leaves", true, true, false}};
   gpu::Context ctx{gpu::ContextOptions{}};
   const render::RenderTarget target(ctx, 1280, 720);
+  gpu::GpuSolvers solvers(ctx);
   std::vector<std::unique_ptr<sim::Session>> sessions;  // before the loops that draw them
   std::vector<std::unique_ptr<render::FrameLoop>> loops;
   std::vector<std::unique_ptr<render::TreeDrawable>> trees;
   for (const Config& c : configs) {
-    sessions.push_back(std::make_unique<sim::Session>(scene, sim::SolverChoice{}, gpu::gpu_solver_factory(ctx)));
+    sessions.push_back(std::make_unique<sim::Session>(scene::session_spec(scene), sim::SolverChoice{}, solvers.factory()));
     sessions.back()->advance(200);
-    loops.push_back(std::make_unique<render::FrameLoop>(ctx, *sessions.back(), render::RenderTarget::kFormat));
-    trees.push_back(std::make_unique<render::TreeDrawable>(ctx, *loops.back(), *scene.tree, scene.wind));
+    sessions.back()->catch_up_wind();
+    loops.push_back(std::make_unique<render::FrameLoop>(ctx, scene, *sessions.back(), &solvers, render::RenderTarget::kFormat));
+    trees.push_back(std::make_unique<render::TreeDrawable>(ctx, *loops.back(), *scene.tree));
     trees.back()->set_level_of_detail(c.level_of_detail);
     trees.back()->set_leaves(c.leaves);
     if (c.tree) loops.back()->add_drawable(*trees.back());
   }
   render::FrameView view;
   view.camera = loops.front()->default_camera(1280, 720);
-  view.steps = 0;
   view.wait = true;
   std::vector<std::vector<double>> ms(loops.size());
   for (int f = 0; f < frames + 5; ++f)

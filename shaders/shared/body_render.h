@@ -4,8 +4,10 @@
 //
 // No descriptor set: the frame's camera and light are push constants (BodyFrame), the sphere mesh
 // is a vertex buffer of unit-sphere points (vec4: xyz, w = 1; the point is its own normal), and
-// every body is one instance of it (BodyInstance, an instance-rate vertex buffer written per frame
-// slot from the session's body states).
+// every body is one instance of it: its size and colour (BodyInstance, an instance-rate vertex
+// buffer written per frame slot from the bodies' specs) and its centre, read straight from the
+// bodies' states where the solver keeps them (shared/bodies.h BodyState, grid units: the GPU
+// solver's own buffer, as another instance-rate vertex buffer).
 #ifndef POND_BODY_RENDER_H
 #define POND_BODY_RENDER_H
 
@@ -21,10 +23,12 @@ using water_render::vec4;
 #define POND_BODY_RENDER_CONST const
 #endif
 
-// Vertex attribute locations: the mesh (binding 0, per vertex) and the instance (binding 1).
+// Vertex attribute locations: the mesh (binding 0, per vertex), the instance (binding 1) and the
+// body's state (binding 2, per instance).
 POND_BODY_RENDER_CONST int kBodyAttribPoint = 0;   // vec4: a unit-sphere point (= its normal)
-POND_BODY_RENDER_CONST int kBodyAttribSphere = 1;  // vec4: the body's centre (world) and radius
+POND_BODY_RENDER_CONST int kBodyAttribSize = 1;    // vec4: x radius (world), y grid spacing (the state's unit)
 POND_BODY_RENDER_CONST int kBodyAttribAlbedo = 2;  // vec4: rgb its colour (linear); a: 1 while held
+POND_BODY_RENDER_CONST int kBodyAttribCentre = 3;  // vec3: the centre in grid units (BodyState x, y, z)
 
 // body.vert -> body.frag: the frame's constants as flat varyings (as the water's: llvmpipe gathers
 // push constants per lane in a fragment shader, see POND_WATER_FLAT_* in water_render.h).
@@ -41,9 +45,9 @@ struct BodyFrame {
   vec4 sky;        // rgb: sky colour at the zenith (linear), the ambient light
 };
 
-// One body as drawn: an instance of the unit sphere.
+// One body as drawn: an instance of the unit sphere (its centre comes from its state).
 struct BodyInstance {
-  vec4 sphere;  // xyz: centre (world units); w: radius (world units)
+  vec4 size;    // x: radius (world units); y: the grid spacing (world units per grid unit); zw: 0
   vec4 albedo;  // rgb: colour (linear); a: 1 while the demo holds the body, else 0
 };
 

@@ -12,6 +12,7 @@
 #include "core/npy.h"
 #include "core/output_file.h"
 #include "scene/scene.h"
+#include "scene/session_spec.h"
 #include "sim/diagnostics.h"
 #include "sim/session.h"
 
@@ -66,7 +67,7 @@ int run_simulate(const SimulateOptions& o) {
     if (o.bodies_out == o.out) throw InputError("--bodies-out must differ from --out (" + o.out + ")");
   }
   const InterruptScope interrupt_scope;  // SIGINT/SIGTERM stop the run before anything is written
-  sim::Session session(scene::load_scene(o.scene), parse_solver(o.solver, math, o.threads),
+  sim::Session session(scene::session_spec(scene::load_scene(o.scene)), parse_solver(o.solver, math, o.threads),
                        headless_gpu_solvers(GpuRunOptions{o.device, false}));
 
   const auto t0 = std::chrono::steady_clock::now();

@@ -3,7 +3,7 @@
 // in Vulkan and in IA-32 builds (where gpu_bridge_none.cpp says the GPU is not in this build).
 #include <string>
 
-#include "sim/session.h"
+#include "sim/solver.h"
 
 namespace pond::app {
 

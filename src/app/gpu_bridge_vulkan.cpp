@@ -17,7 +17,9 @@ class HeadlessGpuSolver final : public sim::Solver {
   const sim::WaterModel& model() const override { return solver_.model(); }
   std::int64_t steps_done() const override { return solver_.steps_done(); }
   void advance(std::int64_t steps) override { solver_.advance(steps); }
+  void perturb(const sim::PerturbationTable& table) override { solver_.perturb(table); }
   sim::WaterState read_state() const override { return solver_.read_state(); }
+  sim::HostDisplacements displacements() const override { return solver_.displacements(); }
   void set_state(const sim::WaterState& state, std::int64_t steps) override { solver_.set_state(state, steps); }
   std::vector<sim::BodyState> read_bodies() const override { return solver_.read_bodies(); }
   void set_body_models(std::vector<sim::BodyModel> bodies) override { solver_.set_body_models(std::move(bodies)); }

@@ -1,6 +1,9 @@
 // `pond render`: the frame loop (render/frame_loop.h) drawing into an offscreen image, read back and
-// written as a PNG; median milliseconds per frame by part.
+// written as a PNG; median milliseconds per frame by part. It steps the session as the demo does:
+// a frame draws the state the last steps left and then submits the next frame's steps, so the CPU
+// waits once a frame, for those.
 #include <algorithm>
+#include <chrono>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
@@ -11,14 +14,15 @@
 #include "app/render_bridge.h"
 #include "core/errors.h"
 #include "gpu/context.h"
+#include "gpu/gpu_solvers.h"
 #include "render/body_drawable.h"
 #include "render/frame_loop.h"
 #include "core/png.h"
 #include "render/render_target.h"
 #include "render/tree_drawable.h"
-#include "gpu/gpu_solver.h"
-#include "sim/session.h"
 #include "scene/scene.h"
+#include "scene/session_spec.h"
+#include "sim/session.h"
 
 namespace pond::app {
 namespace {
@@ -30,15 +34,15 @@ double median(std::vector<double> v) {
 }
 
 
-// Each effect the scene has on, timed against the same frame without it: frozen frames (no steps)
-// alternating off and on, so both halves see the same state and the same load; whole frames with
-// the GPU's work (FrameView::wait). Only with --profile, after the picture is written: these
+// Each effect the scene has on, timed against the same frame without it: frozen frames (the session
+// not stepped) alternating off and on, so both halves see the same state and the same load; whole
+// frames with the GPU's work (FrameView::wait). Only with --profile, after the picture is written: these
 // frames overwrite it, and are not among the --frames N the picture and the medians count.
 void print_effect_costs(render::FrameLoop& loop, const render::RenderTarget& target, render::FrameView view,
                         int frames) {
   if (frames < 2) return;
   const int pairs = std::min(frames, 40);
-  view.steps = 0;
+  view.wait = true;
   struct Effect {
     const char* name;
     bool view::Effects::*flag;
@@ -52,7 +56,7 @@ void print_effect_costs(render::FrameLoop& loop, const render::RenderTarget& tar
         render::FrameView v = view;
         v.effects.*e.flag = with;
         const render::FrameStats s = loop.frame(target.frame_target(), v);
-        (with ? on : off).push_back(s.simulate_ms + s.lod_ms + s.draw_ms);
+        (with ? on : off).push_back(s.wait_ms + s.lod_ms + s.draw_ms);
       }
     std::printf("effect %s: %.3f ms per frame (with %.3f, without %.3f; medians of %d alternated frozen frames)\n",
                 e.name, median(on) - median(off), median(on), median(off), pairs);
@@ -67,10 +71,11 @@ int run_render(const RenderOptions& o) {
   const gpu::Context ctx(gpu::ContextOptions{.device = o.device, .validation = o.validation});
   render::check_target_size(ctx, o.width, o.height, render::RenderTarget::kFormat);
 
-  sim::Session session(scene, solver, gpu::gpu_solver_factory(ctx));
-  render::FrameLoop loop(ctx, session, render::RenderTarget::kFormat);
+  gpu::GpuSolvers gpu_solvers(ctx);
+  sim::Session session(scene::session_spec(scene), solver, gpu_solvers.factory());
+  render::FrameLoop loop(ctx, scene, session, &gpu_solvers, render::RenderTarget::kFormat);
   std::optional<render::TreeDrawable> trees;  // the scene's wind trees, in the water's pass
-  if (scene.tree) loop.add_drawable(trees.emplace(ctx, loop, *scene.tree, scene.wind));
+  if (scene.tree) loop.add_drawable(trees.emplace(ctx, loop, *scene.tree));
   render::BodyDrawable bodies(ctx, loop);  // the scene's bodies, as the session moves them
   loop.add_drawable(bodies);
   render::FrameView view;
@@ -80,21 +85,29 @@ int run_render(const RenderOptions& o) {
   if (o.fovy) view.camera.fovy_degrees = *o.fovy;
   view.lod_tolerance_px = o.lod_tolerance.value_or(scene.view.lod_tolerance_px);
   view.wireframe = o.wireframe;
-  view.steps = scene.view.steps_per_frame;
-  view.wait = true;  // time each frame whole, and read the last one back
   view.effects = scene.view.effects;
+  const std::int64_t steps_per_frame = scene.view.steps_per_frame;
   lod::validate(view.camera, view.lod_tolerance_px > 0 ? view.lod_tolerance_px : 1.0);
 
   const render::RenderTarget target(ctx, o.width, o.height);
-  session.advance(o.steps);
-  std::vector<double> total, simulate, lod, draw;
+  using Clock = std::chrono::steady_clock;
+  auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+  session.advance(o.steps + steps_per_frame);  // what the first frame shows
+  std::vector<double> total, simulate, wait, lod, draw;
   render::FrameStats last;
+  Clock::time_point start = Clock::now();
   for (int f = 0; f < o.frames; ++f) {
+    session.catch_up_wind();  // the trees' wind clock is the simulated time
     last = loop.frame(target.frame_target(), view);
-    simulate.push_back(last.simulate_ms);
+    const Clock::time_point drawn = Clock::now();
+    if (f + 1 < o.frames) session.advance(steps_per_frame);  // the next frame's, submitted
+    const Clock::time_point end = Clock::now();
+    simulate.push_back(ms(drawn, end));
+    wait.push_back(last.wait_ms);
     lod.push_back(last.lod_ms);
     draw.push_back(last.draw_ms);
-    total.push_back(last.simulate_ms + last.lod_ms + last.draw_ms);
+    total.push_back(ms(start, end));
+    start = end;
   }
   session.finite_state();
   const std::vector<std::uint8_t> rgba = target.read_rgba();
@@ -108,9 +121,9 @@ int run_render(const RenderOptions& o) {
   if (view.lod_tolerance_px > 0) std::snprintf(lod_text, sizeof lod_text, "LOD %g px", view.lod_tolerance_px);
   std::printf("rendered %d frame%s of a %d x %d grid at %dx%d on %s, %s solver, %" PRId64 " step%s per frame, %s\n",
               o.frames, o.frames == 1 ? "" : "s", m.rows, m.cols, o.width, o.height, ctx.device_name().c_str(),
-              o.solver.c_str(), view.steps, view.steps == 1 ? "" : "s", lod_text);
-  std::printf("ms per frame (median of %d): %.3f = simulate %.3f + LOD %.3f + draw %.3f\n", o.frames, median(total),
-              median(simulate), median(lod), median(draw));
+              o.solver.c_str(), steps_per_frame, steps_per_frame == 1 ? "" : "s", lod_text);
+  std::printf("ms per frame (median of %d): %.3f; its parts: simulate %.3f, wait %.3f, LOD %.3f, draw %.3f\n",
+              o.frames, median(total), median(simulate), median(wait), median(lod), median(draw));
   std::printf("triangles: water %zu of %zu (%.1f%%), land %zu\n", last.triangles, last.full_triangles,
               last.full_triangles ? 100.0 * static_cast<double>(last.triangles) / static_cast<double>(last.full_triangles) : 0.0,
               last.land_triangles);
@@ -119,7 +132,7 @@ int run_render(const RenderOptions& o) {
     std::printf("tree: %zu instance%s of %zu vertices (%s), wind %g at %g deg, %g s of wind\n", t.instances,
                 t.instances == 1 ? "" : "s", t.skeleton_vertices,
                 scene.tree->draw == tree::TreeDraw::lines ? "lines" : "tubes", scene.wind.strength,
-                scene.wind.direction_deg, trees->wind_time());
+                scene.wind.direction_deg, session.wind().time());
   }
   if (bodies.drawn() > 0)
     std::printf("bodies: %zu drawn, %zu triangles\n", bodies.drawn(), bodies.triangles());

@@ -6,13 +6,13 @@
 
 #include "core/errors.h"
 #include "gpu/float_policy.h"
-#include "gpu/shaders.h"
-#include "gpu/water_layout.h"
 
 namespace pond::gpu {
 namespace {
 
 using BU = vk::BufferUsageFlagBits;
+using S = vk::PipelineStageFlagBits2;
+using A = vk::AccessFlagBits2;
 
 // The model's kinds (node row * cols + col) with the GPU state's row pitch, packed four per word
 // (water_gpu.h); the padding columns are fixed nodes, which keeps their state at +0 (water_step.comp).
@@ -39,35 +39,16 @@ std::vector<float> to_soa_words(const sim::WaterState& s, std::size_t rows, std:
   return words;
 }
 
-void write_set(const Context& ctx, const vk::raii::DescriptorSet& set, std::initializer_list<const Buffer*> buffers) {
-  std::vector<vk::DescriptorBufferInfo> infos;
-  for (const Buffer* b : buffers) infos.push_back(b->whole());
-  std::vector<vk::WriteDescriptorSet> writes;
-  for (std::uint32_t k = 0; k < infos.size(); ++k)
-    writes.push_back({.dstSet = *set, .dstBinding = k, .descriptorCount = 1,
-                      .descriptorType = vk::DescriptorType::eStorageBuffer, .pBufferInfo = &infos[k]});
-  ctx.device().updateDescriptorSets(writes, nullptr);
+// A table's entries with the state's node numbering (row * pitch + col), appended to `out`.
+void append_entries(const sim::PerturbationTable& t, std::size_t cols, std::size_t pitch, std::vector<PerturbEntry>& out) {
+  for (std::size_t k = 0; k < t.nodes.size(); ++k)
+    out.push_back({static_cast<std::uint32_t>(t.nodes[k] / cols * pitch + t.nodes[k] % cols), t.weights[k]});
 }
 
-// The descriptor types of each pipeline's bindings 0..n-1 (water_gpu.h): the layouts, and the
-// descriptor pool counted from them.
-std::vector<vk::DescriptorType> step_bindings() {
-  using DT = vk::DescriptorType;
-  std::vector<DT> b(POND_STEP_BINDINGS);
-  b[POND_STEP_BINDING_SRC1] = b[POND_STEP_BINDING_SRC4] = DT::eUniformTexelBuffer;
-  b[POND_STEP_BINDING_DST4] = DT::eStorageBuffer;
-  b[POND_STEP_BINDING_KINDS4] = DT::eUniformTexelBuffer;
-  b[POND_STEP_BINDING_REACH] = DT::eStorageBuffer;
-  return b;
-}
-std::vector<vk::DescriptorType> perturb_bindings() {
-  return {vk::DescriptorType::eStorageBuffer, vk::DescriptorType::eStorageBuffer};  // state, table
-}
-std::vector<vk::DescriptorType> normals_bindings() {
-  std::vector<vk::DescriptorType> b(POND_NORMALS_BINDINGS);
-  b[POND_NORMALS_BINDING_STATE] = vk::DescriptorType::eUniformTexelBuffer;
-  b[POND_NORMALS_BINDING_NORMALS] = vk::DescriptorType::eStorageBuffer;
-  return b;
+PerturbPush push_for(const sim::PerturbationTable& t, std::uint32_t first, std::size_t stride) {
+  return {.first = first, .count = static_cast<std::uint32_t>(t.nodes.size()), .stride = static_cast<std::uint32_t>(stride),
+          .target = t.target == sim::PerturbTarget::velocity ? shared::kPerturbVelocity : shared::kPerturbPosition,
+          .mode = t.mode == sim::PerturbMode::add ? shared::kPerturbAdd : shared::kPerturbSet};
 }
 
 }  // namespace
@@ -76,54 +57,25 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model)
     : ctx_(ctx),
       model_(std::move(model)),
       pitch_(row_pitch(static_cast<std::size_t>(model_.cols))),
-      stride_(state_stride(static_cast<std::size_t>(model_.rows) * pitch_)),
-      submitter_(ctx, "water compute") {
-  create_pipelines();
+      stride_(state_stride(static_cast<std::size_t>(model_.rows) * pitch_)) {
   create_buffers();
   map_state_where_host_readable();
   upload_kinds_and_perturbations();
-  create_descriptor_sets();
+  kernels_ = std::make_unique<WaterKernels>(ctx_, model_, pitch_, stride_,
+                                            WaterBuffers{state_, kinds_, table_, normals_, reach_}, SubmissionRing::kSize);
   if (!model_.bodies.empty())
-    contact_ = std::make_unique<BodyContact>(ctx_, model_, pitch_, stride_, state_, state_r32_, kinds_rgba8_, reach_,
-                                             steps_per_submit() * model_.substeps, 1,
+    contact_ = std::make_unique<BodyContact>(ctx_, model_, pitch_, stride_, state_, kernels_->state_r32(),
+                                             kernels_->kinds_rgba8(), reach_, steps_per_submit() * model_.substeps,
+                                             SubmissionRing::kSize,
                                              model_.math == sim::MathMode::exact && ctx_.denorm_preserve());
+  // The host's copies: the displacements unless the state is read in place, and the bodies.
+  ring_ = std::make_unique<SubmissionRing>(ctx_, state_[0].mapped ? 0 : 3 * stride_ * sizeof(float),
+                                           model_.bodies.size() * sizeof(sim::BodyState));
   set_state(sim::rest_state(model_), 0);
 }
 
-void GpuSolver::create_pipelines() {
-  const bool fast = model_.math == sim::MathMode::fast;
-  // The row pitch keeps every group of 4 columns 16-byte aligned (the stride is a multiple of 16
-  // floats), so the step shader can move 4 nodes per texel on every grid.
-  // One invocation per 4 columns. The workgroup spans the row strip in as few groups as possible (at most POND_STEP_LOCAL_X_MAX invocations, a
-  // multiple of 8 = llvmpipe's lanes) and as evenly as possible: the shader's barrier per row then
-  // makes a group read and write whole rows, contiguous runs the hardware prefetcher follows.
-  step_threads_x_ = static_cast<std::uint32_t>(pitch_ / 4);
-  const std::uint32_t groups_x = std::max(1u, group_count(step_threads_x_, POND_STEP_LOCAL_X_MAX));
-  step_local_x_ = std::max(8u, (group_count(step_threads_x_, groups_x) + 7u) / 8u * 8u);
-  const SpecConstant step_constants[] = {
-      {POND_SPEC_FAST_MATH, fast ? 1u : 0u},
-      {POND_SPEC_RSQRT_STEPS, static_cast<std::uint32_t>(model_.constants.rsqrt_steps)},
-      {POND_SPEC_STEP_LOCAL_X, step_local_x_},
-      {POND_SPEC_PADDED_ROWS, pitch_ != static_cast<std::size_t>(model_.cols) ? 1u : 0u},
-      {POND_SPEC_TRACK_REACH, model_.bodies.empty() ? 0u : 1u}};
-  const bool int64_stores = ctx_.has_int64();
-  // Exact math declares DenormPreserve where the device allows it; fast math leaves denormals to
-  // the device.
-  const bool denorm = !fast && ctx_.denorm_preserve();
-  step_pipe_ = create_compute_pipeline(ctx_, water_step_spirv(int64_stores, denorm),
-                                       step_bindings(), sizeof(StepPush), step_constants,
-                                       std::string(fast ? "water_step (fast" : "water_step (exact") +
-                                           (int64_stores ? ", 64-bit stores" : "") + (denorm ? ", denormals kept)" : ")"));
-  perturb_pipe_ = create_compute_pipeline(ctx_, water_perturb_spirv(denorm), perturb_bindings(), sizeof(PerturbPush), {},
-                                          "water_perturb");
-  // The normals: one invocation per column (walking a strip of rows), the row spanned by as few
-  // and as evenly filled workgroups as possible, as the step shader.
-  const auto cols = static_cast<std::uint32_t>(model_.cols);
-  const std::uint32_t normals_groups_x = std::max(1u, group_count(cols, POND_NORMALS_LOCAL_X_MAX));
-  normals_local_x_ = std::max(8u, (group_count(cols, normals_groups_x) + 7u) / 8u * 8u);
-  const SpecConstant normals_constants[] = {{POND_SPEC_NORMALS_LOCAL_X, normals_local_x_}};
-  normals_pipe_ = create_compute_pipeline(ctx_, water_normals_spirv(denorm), normals_bindings(), sizeof(NormalsPush),
-                                          normals_constants, "water_normals");
+GpuSolver::~GpuSolver() {
+  if (ring_) ctx_.queue().waitIdle();  // the renderer's frames in flight may read these buffers
 }
 
 void GpuSolver::create_buffers() {
@@ -143,8 +95,8 @@ void GpuSolver::create_buffers() {
 }
 
 // Where every device-local memory type the state could be in is also host-visible, cached and
-// coherent (lavapipe: the "GPU" memory is the CPU's), the state stays mapped and the renderer
-// reads the displacements in place instead of copying them each frame (host_state()).
+// coherent (lavapipe: the "GPU" memory is the CPU's), the state stays mapped and the host reads
+// the displacements in place instead of a copy of them (displacements()).
 void GpuSolver::map_state_where_host_readable() {
   using MP = vk::MemoryPropertyFlagBits;
   const vk::MemoryPropertyFlags host = MP::eHostVisible | MP::eHostCached | MP::eHostCoherent;
@@ -160,156 +112,16 @@ void GpuSolver::map_state_where_host_readable() {
 void GpuSolver::upload_kinds_and_perturbations() {
   const std::vector<std::uint32_t> kinds = pack_kinds(model_, pitch_);
   kinds_ = create_buffer(ctx_, kinds.size() * 4, BU::eUniformTexelBuffer | BU::eStorageBuffer | BU::eTransferDst,
-                         MemoryUse::device,
-                         "water node kinds");
+                         MemoryUse::device, "water node kinds");
   upload(ctx_, kinds_, std::as_bytes(std::span(kinds)));
-
-  // The model's tables name node row * cols + col; the state's node is row * pitch + col.
   std::vector<PerturbEntry> table;
-  const auto model_cols = static_cast<std::size_t>(model_.cols);
   for (const sim::PerturbationTable& t : model_.perturbations) {
     table_first_.push_back(static_cast<std::uint32_t>(table.size()));
-    for (std::size_t k = 0; k < t.nodes.size(); ++k) {
-      const std::size_t i = t.nodes[k] / model_cols, j = t.nodes[k] % model_cols;
-      table.push_back({static_cast<std::uint32_t>(i * pitch_ + j), t.weights[k]});
-    }
+    append_entries(t, static_cast<std::size_t>(model_.cols), pitch_, table);
   }
   table_ = create_buffer(ctx_, std::max<std::size_t>(1, table.size()) * sizeof(PerturbEntry),
                          BU::eStorageBuffer | BU::eTransferDst, MemoryUse::device, "perturbation table");
   upload(ctx_, table_, std::as_bytes(std::span(table)));
-}
-
-// Two sets of each pipeline's layout (one per ping-pong direction), the pool sized from the layouts.
-void GpuSolver::create_descriptor_sets() {
-  using DT = vk::DescriptorType;
-  for (int c = 0; c < 2; ++c) {
-    state_r32_[c] = create_texel_view(ctx_, state_[c], vk::Format::eR32Sfloat, "the GPU solver's state");
-    state_rgba32_[c] = create_texel_view(ctx_, state_[c], vk::Format::eR32G32B32A32Sfloat, "the GPU solver's state");
-  }
-  kinds_rgba8_ = create_texel_view(ctx_, kinds_, vk::Format::eR8G8B8A8Uint, "the GPU solver's node kinds");
-
-  constexpr std::uint32_t kSetsPerPipeline = 2;
-  const std::vector<DT> layouts[] = {step_bindings(), perturb_bindings(), normals_bindings()};
-  std::vector<vk::DescriptorPoolSize> sizes;
-  for (const std::vector<DT>& bindings : layouts)
-    for (const DT type : bindings) {
-      auto it = std::find_if(sizes.begin(), sizes.end(), [&](const vk::DescriptorPoolSize& p) { return p.type == type; });
-      if (it == sizes.end()) it = sizes.insert(sizes.end(), {.type = type, .descriptorCount = 0});
-      it->descriptorCount += kSetsPerPipeline;
-    }
-  pool_ = vk::raii::DescriptorPool(
-      ctx_.device(), vk::DescriptorPoolCreateInfo{.flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
-                                                  .maxSets = kSetsPerPipeline * std::size(layouts),
-                                                  .poolSizeCount = static_cast<std::uint32_t>(sizes.size()),
-                                                  .pPoolSizes = sizes.data()});
-  auto allocate = [&](const ComputePipeline& p) {
-    const vk::DescriptorSetLayout set_layouts[kSetsPerPipeline] = {*p.set_layout, *p.set_layout};
-    vk::raii::DescriptorSets sets(ctx_.device(), vk::DescriptorSetAllocateInfo{.descriptorPool = *pool_,
-                                                                               .descriptorSetCount = kSetsPerPipeline,
-                                                                               .pSetLayouts = set_layouts});
-    return std::vector<vk::raii::DescriptorSet>(std::make_move_iterator(sets.begin()),
-                                                std::make_move_iterator(sets.end()));
-  };
-  step_sets_ = allocate(step_pipe_);
-  perturb_sets_ = allocate(perturb_pipe_);
-  normals_sets_ = allocate(normals_pipe_);
-  const std::vector<DT> step_types = step_bindings();
-  for (int c = 0; c < 2; ++c) {
-    std::vector<vk::BufferView> views(POND_STEP_BINDINGS);
-    views[POND_STEP_BINDING_SRC1] = *state_r32_[c];
-    views[POND_STEP_BINDING_SRC4] = *state_rgba32_[c];
-    views[POND_STEP_BINDING_DST4] = *state_rgba32_[1 - c];
-    views[POND_STEP_BINDING_KINDS4] = *kinds_rgba8_;
-    std::vector<vk::WriteDescriptorSet> writes;
-    const vk::DescriptorBufferInfo dst_info = state_[1 - c].whole(), reach_info = reach_.whole();
-    for (std::uint32_t b = 0; b < views.size(); ++b)
-      if (step_types[b] == DT::eStorageBuffer)
-        writes.push_back({.dstSet = *step_sets_[c], .dstBinding = b, .descriptorCount = 1,
-                          .descriptorType = step_types[b],
-                          .pBufferInfo = b == POND_STEP_BINDING_REACH ? &reach_info : &dst_info});
-      else
-        writes.push_back({.dstSet = *step_sets_[c], .dstBinding = b, .descriptorCount = 1,
-                          .descriptorType = step_types[b], .pTexelBufferView = &views[b]});
-    ctx_.device().updateDescriptorSets(writes, nullptr);
-    write_set(ctx_, perturb_sets_[c], {&state_[c], &table_});
-    const vk::DescriptorBufferInfo normals_info = normals_.whole();
-    const vk::BufferView normals_state_view = *state_r32_[c];
-    const vk::WriteDescriptorSet normals_writes[] = {
-        {.dstSet = *normals_sets_[c], .dstBinding = POND_NORMALS_BINDING_STATE, .descriptorCount = 1,
-         .descriptorType = DT::eUniformTexelBuffer, .pTexelBufferView = &normals_state_view},
-        {.dstSet = *normals_sets_[c], .dstBinding = POND_NORMALS_BINDING_NORMALS, .descriptorCount = 1,
-         .descriptorType = DT::eStorageBuffer, .pBufferInfo = &normals_info}};
-    ctx_.device().updateDescriptorSets(normals_writes, nullptr);
-  }
-}
-
-void GpuSolver::set_state(const sim::WaterState& state, std::int64_t steps_done) {
-  if (state.nodes() != model_.nodes()) throw InternalError("GpuSolver::set_state: the state has the wrong node count");
-  const std::vector<float> words = to_soa_words(state, static_cast<std::size_t>(model_.rows),
-                                                static_cast<std::size_t>(model_.cols), pitch_, stride_);
-  cur_ = 0;
-  // Into both buffers: the padding of either is then +0 (the step shader keeps it so).
-  for (const Buffer& b : state_) upload(ctx_, b, std::as_bytes(std::span(words)));
-  if (contact_) contact_->set_bodies(state.bodies);
-  else if (!state.bodies.empty()) throw InternalError("GpuSolver::set_state: bodies for a model without bodies");
-  step_ = steps_done;
-  next_perturbation_ = 0;
-  while (next_perturbation_ < model_.perturbations.size() && model_.perturbations[next_perturbation_].step < step_)
-    ++next_perturbation_;
-}
-
-// Every dispatch reads what the previous one wrote (read-after-write) and overwrites what the one
-// before read (write-after-read); a compute->compute memory barrier orders both. It also makes the
-// uploads and copies of earlier submissions visible (second scope: later commands on the queue).
-void GpuSolver::record_barrier(const vk::raii::CommandBuffer& cmd) const {
-  using S = vk::PipelineStageFlagBits2;
-  using A = vk::AccessFlagBits2;
-  const vk::MemoryBarrier2 barrier{.srcStageMask = S::eComputeShader | S::eTransfer,
-                                   .srcAccessMask = A::eShaderWrite | A::eTransferWrite,
-                                   .dstStageMask = S::eComputeShader | S::eTransfer,
-                                   .dstAccessMask = A::eShaderRead | A::eShaderWrite | A::eTransferRead};
-  cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &barrier});
-}
-
-// One step: its perturbations, then its substeps, each dispatch behind a barrier.
-void GpuSolver::record_step(const vk::raii::CommandBuffer& cmd) {
-  const auto rows = static_cast<std::uint32_t>(model_.rows), cols = static_cast<std::uint32_t>(model_.cols);
-  const auto stride = static_cast<std::uint32_t>(stride_);
-  while (next_perturbation_ < model_.perturbations.size() &&
-         model_.perturbations[next_perturbation_].step == step_) {
-    const sim::PerturbationTable& t = model_.perturbations[next_perturbation_];
-    const PerturbPush push{
-        .first = table_first_[next_perturbation_], .count = static_cast<std::uint32_t>(t.nodes.size()),
-        .stride = stride,
-        .target = t.target == sim::PerturbTarget::velocity ? shared::kPerturbVelocity : shared::kPerturbPosition,
-        .mode = t.mode == sim::PerturbMode::add ? shared::kPerturbAdd : shared::kPerturbSet};
-    ++next_perturbation_;
-    if (push.count == 0) continue;
-    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *perturb_pipe_.pipeline);
-    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *perturb_pipe_.layout, 0, *perturb_sets_[cur_], nullptr);
-    cmd.pushConstants<PerturbPush>(*perturb_pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
-    cmd.dispatch(group_count(push.count, POND_PERTURB_LOCAL_X), 1, 1);
-    record_barrier(cmd);
-  }
-  const sim::StepConstants& k = model_.constants;
-  const StepPush push{.rows = rows, .cols = cols, .stride = stride, .pitch = static_cast<std::uint32_t>(pitch_),
-                      .kc = k.kc, .kd = k.kd,
-                      .dt = k.dt, .rest_edge = k.rest_edge, .rest_diag = k.rest_diag};
-  for (int s = 0; s < model_.substeps; ++s) {
-    if (s == 0 || contact_) {  // the contact pass binds its own pipeline
-      cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *step_pipe_.pipeline);
-      cmd.pushConstants<StepPush>(*step_pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
-    }
-    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *step_pipe_.layout, 0, *step_sets_[cur_], nullptr);
-    cmd.dispatch(group_count(step_threads_x_, step_local_x_), group_count(rows, POND_STEP_ROWS_PER_INVOCATION), 1);
-    record_barrier(cmd);
-    cur_ = 1 - cur_;
-    if (contact_) {
-      contact_->record(cmd, cur_, 0, (step_ - batch_first_step_) * model_.substeps + s);
-      record_barrier(cmd);
-    }
-  }
-  ++step_;
 }
 
 std::int64_t GpuSolver::steps_per_submit() const {
@@ -317,34 +129,131 @@ std::int64_t GpuSolver::steps_per_submit() const {
   return std::max<std::int64_t>(1, kMaxDispatchesPerSubmit / dispatches_per_step);
 }
 
-void GpuSolver::begin_batch(std::int64_t steps) {
-  batch_first_step_ = step_;
-  if (contact_) contact_->write_schedule(step_, steps, 0);
-}
-
 void GpuSolver::advance(std::int64_t steps) {
+  if (steps <= 0) {
+    flush_splashes();
+    return;
+  }
   while (steps > 0) {
     const std::int64_t n = std::min(steps, steps_per_submit());
-    begin_batch(n);
-    submitter_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
-      record_barrier(cmd);
-      for (std::int64_t s = 0; s < n; ++s) record_step(cmd);
-    });
+    submit(n);
     steps -= n;
   }
 }
 
-// Copies `src` into a new host-visible buffer after every compute or transfer write before it, and
-// makes the copy visible to the host.
+void GpuSolver::perturb(const sim::PerturbationTable& table) {
+  if (table.nodes.empty()) return;
+  splash_pushes_.push_back(push_for(table, static_cast<std::uint32_t>(splash_entries_.size()), stride_));
+  append_entries(table, static_cast<std::size_t>(model_.cols), pitch_, splash_entries_);
+}
+
+void GpuSolver::flush_splashes() const {
+  if (!splash_pushes_.empty()) submit(0);
+}
+
+void GpuSolver::submit(std::int64_t steps) const {
+  Submission& s = ring_->begin();
+  const std::uint32_t region = ring_->index_of(s);
+  const vk::raii::CommandBuffer& cmd = s.cmd;
+  WaterKernels::record_barrier(cmd);  // after every earlier submission's writes (uploads, copies)
+  record_splashes(cmd, s);
+  if (contact_ && steps > 0) contact_->write_schedule(step_, steps, region);
+  const std::int64_t first_step = step_;
+  for (std::int64_t k = 0; k < steps; ++k) record_step(cmd, region, first_step);
+  kernels_->record_normals(cmd, cur_);
+  record_copies(cmd, s);
+  ring_->submit();
+}
+
+// The splashes queued since the last submission, from the entry's own table (made larger first if
+// they do not fit; the entry is idle).
+void GpuSolver::record_splashes(const vk::raii::CommandBuffer& cmd, Submission& s) const {
+  if (splash_pushes_.empty()) return;
+  const vk::DeviceSize bytes = splash_entries_.size() * sizeof(PerturbEntry);
+  if (!*s.splashes.buffer || s.splashes.size < bytes) {
+    s.splashes = create_buffer(ctx_, std::max<vk::DeviceSize>(bytes, 2 * s.splashes.size), BU::eStorageBuffer,
+                               MemoryUse::upload, "splash table " + std::to_string(ring_->index_of(s)));
+    kernels_->bind_splash_table(ring_->index_of(s), s.splashes);
+  }
+  std::memcpy(s.splashes.mapped, splash_entries_.data(), bytes);
+  s.splashes.flush(ctx_, bytes);
+  for (const PerturbPush& push : splash_pushes_) {
+    kernels_->record_perturb(cmd, cur_, static_cast<int>(ring_->index_of(s)), push);
+    WaterKernels::record_barrier(cmd);
+  }
+  splash_entries_.clear();
+  splash_pushes_.clear();
+}
+
+// One step: its scheduled perturbations, then its substeps, each dispatch behind a barrier, the
+// bodies' contact after each substep.
+void GpuSolver::record_step(const vk::raii::CommandBuffer& cmd, std::uint32_t region, std::int64_t first_step) const {
+  while (next_perturbation_ < model_.perturbations.size() && model_.perturbations[next_perturbation_].step == step_) {
+    const sim::PerturbationTable& t = model_.perturbations[next_perturbation_];
+    const PerturbPush push = push_for(t, table_first_[next_perturbation_], stride_);
+    ++next_perturbation_;
+    if (push.count == 0) continue;
+    kernels_->record_perturb(cmd, cur_, -1, push);
+    WaterKernels::record_barrier(cmd);
+  }
+  for (int s = 0; s < model_.substeps; ++s) {
+    kernels_->record_substep(cmd, cur_);
+    WaterKernels::record_barrier(cmd);
+    cur_ = 1 - cur_;
+    if (contact_) {
+      contact_->record(cmd, cur_, region, (step_ - first_step) * model_.substeps + s);
+      WaterKernels::record_barrier(cmd);
+    }
+  }
+  ++step_;
+}
+
+// After the normals: the host's copies of the displacements (unless read in place) and the bodies,
+// made visible to the host; and everything the submission wrote before any later submission's
+// commands (the renderer's reads, uploads that overwrite the state).
+void GpuSolver::record_copies(const vk::raii::CommandBuffer& cmd, const Submission& s) const {
+  if (*s.displacements.buffer)
+    cmd.copyBuffer(*state_[cur_].buffer, *s.displacements.buffer,
+                   vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = s.displacements.size});
+  if (contact_)
+    cmd.copyBuffer(*contact_->bodies().buffer, *s.bodies.buffer,
+                   vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = s.bodies.size});
+  const vk::MemoryBarrier2 after{.srcStageMask = S::eComputeShader | S::eTransfer,
+                                 .srcAccessMask = A::eShaderWrite | A::eTransferWrite,
+                                 .dstStageMask = S::eHost | S::eAllCommands,
+                                 .dstAccessMask = A::eHostRead | A::eMemoryRead | A::eMemoryWrite};
+  cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &after});
+}
+
+void GpuSolver::set_state(const sim::WaterState& state, std::int64_t steps_done) {
+  if (state.nodes() != model_.nodes()) throw InternalError("GpuSolver::set_state: the state has the wrong node count");
+  if (!contact_ && !state.bodies.empty()) throw InternalError("GpuSolver::set_state: bodies for a model without bodies");
+  ring_->finish_all();
+  splash_entries_.clear();
+  splash_pushes_.clear();
+  const std::vector<float> words = to_soa_words(state, static_cast<std::size_t>(model_.rows),
+                                                static_cast<std::size_t>(model_.cols), pitch_, stride_);
+  cur_ = 0;
+  // Into both buffers: the padding of either is then +0 (the step shader keeps it so).
+  for (const Buffer& b : state_) upload(ctx_, b, std::as_bytes(std::span(words)));
+  if (contact_) contact_->set_bodies(state.bodies);
+  step_ = steps_done;
+  next_perturbation_ = 0;
+  while (next_perturbation_ < model_.perturbations.size() && model_.perturbations[next_perturbation_].step < step_)
+    ++next_perturbation_;
+  submit(0);  // its normals and copies
+}
+
+// Copies `src` into a new host-visible buffer after every earlier submission's writes, and makes
+// the copy visible to the host.
 Buffer GpuSolver::copy_to_host(const Buffer& src, const char* name) const {
+  flush_splashes();
   Buffer staging = create_buffer(ctx_, src.size, BU::eTransferDst, MemoryUse::readback, name);
   ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
-    record_barrier(cmd);
+    WaterKernels::record_barrier(cmd);
     cmd.copyBuffer(*src.buffer, *staging.buffer, vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = src.size});
-    const vk::MemoryBarrier2 to_host{.srcStageMask = vk::PipelineStageFlagBits2::eTransfer,
-                                     .srcAccessMask = vk::AccessFlagBits2::eTransferWrite,
-                                     .dstStageMask = vk::PipelineStageFlagBits2::eHost,
-                                     .dstAccessMask = vk::AccessFlagBits2::eHostRead};
+    const vk::MemoryBarrier2 to_host{.srcStageMask = S::eTransfer, .srcAccessMask = A::eTransferWrite,
+                                     .dstStageMask = S::eHost, .dstAccessMask = A::eHostRead};
     cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_host});
   });
   staging.invalidate(ctx_);
@@ -354,7 +263,7 @@ Buffer GpuSolver::copy_to_host(const Buffer& src, const char* name) const {
 sim::WaterState GpuSolver::read_state() const {
   const Buffer staging = copy_to_host(state_[cur_], "state readback");
   sim::WaterState s(model_.nodes());
-  if (contact_) s.bodies = contact_->read();
+  s.bodies = read_bodies();
   const auto* words = static_cast<const float*>(staging.mapped);
   float* const dst[kComponents] = {s.ux.data(), s.uy.data(), s.uz.data(), s.vx.data(), s.vy.data(), s.vz.data()};
   const auto rows = static_cast<std::size_t>(model_.rows), cols = static_cast<std::size_t>(model_.cols);
@@ -364,69 +273,27 @@ sim::WaterState GpuSolver::read_state() const {
   return s;
 }
 
-// The normals of the current state; before it, a barrier after every earlier compute or transfer
-// write; after it, the normals (and the state) made ready for the vertex shader and transfers.
-void GpuSolver::record_normals(const vk::raii::CommandBuffer& cmd) const {
-  const NormalsPush push{.rows = static_cast<std::uint32_t>(model_.rows),
-                         .cols = static_cast<std::uint32_t>(model_.cols),
-                         .stride = static_cast<std::uint32_t>(stride_),
-                         .pitch = static_cast<std::uint32_t>(pitch_)};
-  record_barrier(cmd);
-  cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *normals_pipe_.pipeline);
-  cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *normals_pipe_.layout, 0, *normals_sets_[cur_], nullptr);
-  cmd.pushConstants<NormalsPush>(*normals_pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
-  cmd.dispatch(group_count(push.cols, normals_local_x_), group_count(push.rows, POND_NORMALS_ROWS_PER_INVOCATION), 1);
-  // The vertex shader of the renderer reads them next.
-  const vk::MemoryBarrier2 to_vertex{
-      .srcStageMask = vk::PipelineStageFlagBits2::eComputeShader,
-      .srcAccessMask = vk::AccessFlagBits2::eShaderWrite,
-      .dstStageMask = vk::PipelineStageFlagBits2::eVertexShader | vk::PipelineStageFlagBits2::eVertexAttributeInput |
-                      vk::PipelineStageFlagBits2::eTransfer,
-      .dstAccessMask = vk::AccessFlagBits2::eShaderRead | vk::AccessFlagBits2::eVertexAttributeRead |
-                       vk::AccessFlagBits2::eTransferRead};
-  cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_vertex});
+sim::HostDisplacements GpuSolver::displacements() const {
+  flush_splashes();
+  const Submission* s = ring_->finish_last();
+  const float* u = static_cast<const float*>(state_[cur_].mapped);  // read in place (lavapipe)
+  if (!u) {
+    if (!s->displacements_seen) s->displacements.invalidate(ctx_);
+    s->displacements_seen = true;
+    u = static_cast<const float*>(s->displacements.mapped);
+  }
+  return {u, u + stride_, u + 2 * stride_, pitch_};
 }
 
-void GpuSolver::compute_normals() {
-  submitter_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) { record_normals(cmd); });
-}
-
-void GpuSolver::advance_for_frame(std::int64_t steps, const Buffer* displacements) {
-  const vk::DeviceSize bytes = 3 * stride_ * sizeof(float);
-  if (displacements ? displacements->size < bytes : host_state() == nullptr)
-    throw RuntimeError("GpuSolver::advance_for_frame: no readback buffer of " + std::to_string(bytes) +
-                       " bytes, and the state is not host-readable");
-  const std::int64_t per_submit = steps_per_submit();
-  if (steps > per_submit) advance(steps - per_submit);
-  const std::int64_t last = std::min(steps, per_submit);
-  begin_batch(last);
-  submitter_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
-    record_barrier(cmd);
-    for (std::int64_t s = 0; s < last; ++s) record_step(cmd);
-    record_normals(cmd);
-    using S = vk::PipelineStageFlagBits2;
-    using A = vk::AccessFlagBits2;
-    if (displacements) {
-      // record_normals() ended with a compute -> transfer barrier; the last step's barrier
-      // covers the state for the copy.
-      cmd.copyBuffer(*state_[cur_].buffer, *displacements->buffer,
-                     vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = bytes});
-      const vk::MemoryBarrier2 to_host{.srcStageMask = S::eCopy, .srcAccessMask = A::eTransferWrite,
-                                       .dstStageMask = S::eHost, .dstAccessMask = A::eHostRead};
-      cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_host});
-    } else {
-      // The state the substeps (or set_state's upload) wrote, read by the host in place.
-      const vk::MemoryBarrier2 to_host{.srcStageMask = S::eComputeShader | S::eTransfer,
-                                       .srcAccessMask = A::eShaderWrite | A::eTransferWrite,
-                                       .dstStageMask = S::eHost, .dstAccessMask = A::eHostRead};
-      cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_host});
-    }
-  });
-}
-
-sim::Normals GpuSolver::read_normals() {
-  compute_normals();
-  return normals();
+std::vector<sim::BodyState> GpuSolver::read_bodies() const {
+  if (!contact_) return {};
+  flush_splashes();
+  const Submission* s = ring_->finish_last();
+  if (!s->bodies_seen) s->bodies.invalidate(ctx_);
+  s->bodies_seen = true;
+  std::vector<sim::BodyState> out(model_.bodies.size());
+  std::memcpy(out.data(), s->bodies.mapped, out.size() * sizeof(sim::BodyState));
+  return out;
 }
 
 sim::Normals GpuSolver::normals() const {
@@ -449,10 +316,6 @@ void GpuSolver::set_body_models(std::vector<sim::BodyModel> bodies) {
 
 std::string GpuSolver::identity() const {
   return model_.math == sim::MathMode::exact ? identity_line(ctx_) : std::string();
-}
-
-sim::GpuSolverFactory gpu_solver_factory(const Context& ctx) {
-  return [&ctx](const sim::WaterModel& model) { return std::make_unique<GpuSolver>(ctx, model); };
 }
 
 }  // namespace pond::gpu

@@ -12,6 +12,7 @@
 #include "render/body_pipeline.h"
 #include "render/reflection_pass.h"
 #include "render/shadow_pass.h"
+#include "render/frame_constants.h"
 #include "render/sphere_mesh.h"
 #include "scene/body_fields.h"
 #include "shared/body_render.h"
@@ -58,7 +59,7 @@ struct BodyDrawable::Impl {
   sh::BodyFrame frame{};
 
   Impl(const gpu::Context& c, const FrameLoop& l)
-      : ctx(c), loop(l), pipe(create_body_pipeline(c, l.color_format(), FrameLoop::kDepthFormat)),
+      : ctx(c), loop(l), pipe(create_body_pipeline(c, l.color_format(), kDepthFormat)),
         mirror_pipe(create_body_pipeline(c, kReflectionFormat, kReflectionDepthFormat, BodyView::mirrored)),
         shadow_pipe(create_body_pipeline(c, vk::Format::eUndefined, kShadowFormat, BodyView::shadow)) {
     SphereMesh all;  // every level, one after the other
@@ -75,7 +76,7 @@ struct BodyDrawable::Impl {
     indices = gpu::create_buffer(ctx, all.indices.size() * 4, BU::eIndexBuffer | BU::eTransferDst,
                                  gpu::MemoryUse::device, "body sphere indices");
     gpu::upload(ctx, indices, std::as_bytes(std::span(all.indices)));
-    for (std::uint32_t k = 0; k < FrameLoop::kFramesInFlight; ++k)
+    for (std::uint32_t k = 0; k < kFramesInFlight; ++k)
       instances.push_back(gpu::create_buffer(ctx, scene::kMaxBodies * sizeof(sh::BodyInstance), BU::eVertexBuffer,
                                              gpu::MemoryUse::upload, "body instances, slot " + std::to_string(k)));
   }
@@ -93,11 +94,11 @@ struct BodyDrawable::Impl {
   }
 
   void prepare(const FrameInfo& info) {
-    const sim::Session& session = loop.session();
-    const std::vector<sim::BodyState> states = session.bodies();
-    const auto& specs = session.scene().bodies;
+    const sim::Session& session = info.session;
+    const std::vector<sim::BodyState> states = session.bodies();  // the host's copy of what is drawn
+    const auto& specs = session.water().bodies;
     const double h = session.model().spacing;
-    count = static_cast<std::uint32_t>(std::min({states.size(), specs.size(), scene::kMaxBodies}));
+    count = info.bodies ? static_cast<std::uint32_t>(std::min({states.size(), specs.size(), scene::kMaxBodies})) : 0;
     floating.resize(count);
     level_of.assign(count, 0);
     std::vector<sh::BodyInstance> drawn(count);
@@ -106,12 +107,12 @@ struct BodyDrawable::Impl {
       const bool held = session.held(b);
       if (!held) floating[b] = specs[b].motion == sim::BodyMotion::floating;
       const sim::BodyState& s = states[b];
-      drawn[b].sphere = {static_cast<float>(s.x * h), static_cast<float>(s.y * h), static_cast<float>(s.z * h),
-                         static_cast<float>(specs[b].radius)};
-      spheres[b] = drawn[b].sphere;
+      spheres[b] = {static_cast<float>(s.x * h), static_cast<float>(s.y * h), static_cast<float>(s.z * h),
+                    static_cast<float>(specs[b].radius)};
+      drawn[b].size = {static_cast<float>(specs[b].radius), static_cast<float>(h), 0.0f, 0.0f};
       drawn[b].albedo = floating[b] ? kFloating : kKinematic;
       drawn[b].albedo.w = held ? 1.0f : 0.0f;
-      level_of[b] = level_for(info.view_proj, drawn[b].sphere, info.extent.height);
+      level_of[b] = level_for(info.view_proj, spheres[b], info.extent.height);
     }
     if (count > 0) {
       const gpu::Buffer& buffer = instances[info.slot];
@@ -135,8 +136,8 @@ struct BodyDrawable::Impl {
     sh::BodyFrame pushed = frame;
     std::memcpy(pushed.view_proj.m, info.view_proj, sizeof pushed.view_proj.m);
     cmd.pushConstants<sh::BodyFrame>(*with.layout, vk::ShaderStageFlagBits::eVertex, 0, pushed);
-    const vk::Buffer buffers[] = {*points.buffer, *instances[info.slot].buffer};
-    const vk::DeviceSize offsets[] = {0, 0};
+    const vk::Buffer buffers[] = {*points.buffer, *instances[info.slot].buffer, *info.bodies->buffer};
+    const vk::DeviceSize offsets[] = {0, 0, 0};
     cmd.bindVertexBuffers(0, buffers, offsets);
     cmd.bindIndexBuffer(*indices.buffer, 0, vk::IndexType::eUint32);
     for (std::uint32_t b = 0; b < count; ++b) {  // instance b: its own level

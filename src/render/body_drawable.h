@@ -4,16 +4,18 @@
 // of detail) per body, each at the coarsest level whose outline is within half a pixel of the
 // sphere's at its size on screen.
 //
-// Per frame, prepare() reads the session's bodies as they are after the frame's steps
-// (Session::bodies(), grid units, times the spacing) with their radii (Session::scene().bodies,
-// world units) and writes them into the slot's host-visible instance buffer (flushed: it need not
-// be coherent); draw() draws every instance. Kinematic bodies are brick red, floating ones buoy
+// Per frame, prepare() writes each body's radius and colour (Session::water().bodies) into the
+// slot's host-visible instance buffer (flushed: it need not be coherent) and picks its level of
+// detail from the host's copy of its state (Session::bodies(), the same values as drawn); draw()
+// draws every instance at its centre read from the bodies' states on the GPU (FrameInfo::bodies:
+// the GPU solver's own buffer), so nothing waits for the bodies to come back to draw them. Kinematic bodies are brick red, floating ones buoy
 // yellow; a body the demo holds (Session::held) is drawn lighter. A body's part under the water is
 // depth-tested against the surface like everything else.
 #include <cstddef>
 #include <memory>
 
 #include "render/frame_loop.h"
+#include "render/pass_drawable.h"
 
 namespace pond::render {
 

@@ -4,6 +4,7 @@
 
 #include "render/graphics_pipeline.h"
 #include "shared/body_render.h"
+#include "shared/bodies.h"
 
 namespace pond::render {
 namespace {
@@ -25,15 +26,18 @@ BodyPipeline create_body_pipeline(const gpu::Context& ctx, vk::Format color_form
                                                                                  .pPushConstantRanges = &push});
   const vk::VertexInputBindingDescription bindings[] = {
       {.binding = 0, .stride = 4 * sizeof(float), .inputRate = vk::VertexInputRate::eVertex},
-      {.binding = 1, .stride = sizeof(sh::BodyInstance), .inputRate = vk::VertexInputRate::eInstance}};
+      {.binding = 1, .stride = sizeof(sh::BodyInstance), .inputRate = vk::VertexInputRate::eInstance},
+      {.binding = 2, .stride = sizeof(shared::BodyState), .inputRate = vk::VertexInputRate::eInstance}};
   constexpr auto f4 = vk::Format::eR32G32B32A32Sfloat;
   const vk::VertexInputAttributeDescription attributes[] = {
       {.location = sh::kBodyAttribPoint, .binding = 0, .format = f4, .offset = 0},
-      {.location = sh::kBodyAttribSphere, .binding = 1, .format = f4, .offset = offsetof(sh::BodyInstance, sphere)},
-      {.location = sh::kBodyAttribAlbedo, .binding = 1, .format = f4, .offset = offsetof(sh::BodyInstance, albedo)}};
-  const vk::PipelineVertexInputStateCreateInfo vertex_input{.vertexBindingDescriptionCount = 2,
+      {.location = sh::kBodyAttribSize, .binding = 1, .format = f4, .offset = offsetof(sh::BodyInstance, size)},
+      {.location = sh::kBodyAttribAlbedo, .binding = 1, .format = f4, .offset = offsetof(sh::BodyInstance, albedo)},
+      {.location = sh::kBodyAttribCentre, .binding = 2, .format = vk::Format::eR32G32B32Sfloat,
+       .offset = offsetof(shared::BodyState, x)}};
+  const vk::PipelineVertexInputStateCreateInfo vertex_input{.vertexBindingDescriptionCount = 3,
                                                             .pVertexBindingDescriptions = bindings,
-                                                            .vertexAttributeDescriptionCount = 3,
+                                                            .vertexAttributeDescriptionCount = 4,
                                                             .pVertexAttributeDescriptions = attributes};
   const vk::PipelineInputAssemblyStateCreateInfo assembly{.topology = vk::PrimitiveTopology::eTriangleList};
   const vk::PipelineRasterizationStateCreateInfo raster{.polygonMode = vk::PolygonMode::eFill,

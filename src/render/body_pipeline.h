@@ -1,6 +1,7 @@
 #pragma once
 // The bodies' graphics pipeline (dynamic rendering into the frame loop's colour format and depth):
-// the unit sphere (binding 0, per vertex) instanced per body (binding 1, per instance), the frame's
+// the unit sphere (binding 0, per vertex) instanced per body (binding 1: its size and colour;
+// binding 2: its state, whose centre it is drawn at; both per instance), the frame's
 // camera and light as push constants (shared/body_render.h), depth-tested and written, back faces
 // culled (a sphere is only seen from outside).
 #include "gpu/context.h"

@@ -20,6 +20,7 @@
 #include "render/render_target.h"
 #include "shared/caustics.h"
 #include "sim/model.h"
+#include "view/caustics_grid.h"
 
 namespace pond::render {
 
@@ -29,25 +30,6 @@ static_assert(sizeof(CausticsPush) == 80 && offsetof(CausticsPush, light) == 16 
               offsetof(CausticsPush, coarse) == 64);
 
 inline constexpr vk::Format kCausticsFormat = vk::Format::eR8G8B8A8Unorm;  // shared/caustics.h kCausticsUnit
-
-// The rays' grid for a rows x cols grid of nodes (columns, rows): every node up to
-// kCausticsRays + 1 nodes, else every k-th for the smallest k that keeps at most kCausticsRays cells.
-vk::Extent2D caustics_rays(int rows, int cols);
-// The map's size: whole texels per cell of the rays' grid, at most kCausticsTexels along the longer
-// side (or one a cell).
-vk::Extent2D caustics_extent(int rows, int cols);
-
-// The direct sun's share of the floor's light for a sun toward `sun` (unit vector):
-// shared/caustics.h's kFloorAmbient split.
-float caustics_direct_share(const std::array<double, 3>& sun);
-
-// The push constants for a frame: `sun` the unit direction toward the sun, `floor_depth` world
-// units below rest, the state's layout.
-CausticsPush caustics_push(const sim::WaterModel& model, const std::array<double, 3>& sun, double floor_depth,
-                           std::uint32_t stride, std::uint32_t pitch);
-
-// How water.frag finds a world point's texel: uv = p.xz * (x, y) + p.y * (z, w) (WaterFrame::caustics).
-std::array<float, 4> caustics_lookup(const sim::WaterModel& model, const std::array<double, 3>& sun);
 
 class CausticsPass {
  public:

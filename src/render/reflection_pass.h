@@ -15,12 +15,13 @@
 #include <functional>
 
 #include "gpu/context.h"
+#include "render/frame_constants.h"
 #include "render/render_target.h"
 
 namespace pond::render {
 
 inline constexpr vk::Format kReflectionFormat = vk::Format::eR8G8B8A8Unorm;
-inline constexpr vk::Format kReflectionDepthFormat = vk::Format::eD32Sfloat;  // FrameLoop::kDepthFormat
+inline constexpr vk::Format kReflectionDepthFormat = kDepthFormat;
 inline constexpr std::uint32_t kReflectionDivisor = 2;  // per axis: a quarter of the pixels
 
 // The reflection's size for a frame of `frame` pixels (at least 1 x 1).

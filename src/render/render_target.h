@@ -7,7 +7,7 @@
 
 #include "render/color_format.h"
 #include "gpu/context.h"
-#include "render/frame_loop.h"
+#include "render/frame_target.h"
 
 namespace pond::render {
 
@@ -35,7 +35,7 @@ class RenderTarget {
 
   RenderTarget(const gpu::Context& ctx, int width, int height, vk::Format format = kFormat);
 
-  // The FrameTarget for FrameLoop::frame(): cleared each frame, left in eTransferSrcOptimal.
+  // The FrameTarget for a frame (render/frame_loop.h): cleared each frame, left in eTransferSrcOptimal.
   FrameTarget frame_target() const;
   // The last drawn frame as RGBA8 rows, top row first. The frame must have been submitted; this
   // waits for it (the copy is queued behind it).

@@ -4,20 +4,20 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <numbers>
 #include <span>
 #include <string>
 
 #include "gpu/buffer.h"
 #include "tree/tree_lod.h"
 #include "tree/tree_mesh.h"
+#include "render/frame_constants.h"
 #include "render/reflection_pass.h"
 #include "render/shadow_pass.h"
 #include "render/tree_pipeline.h"
-#include "sim/wind_ripples.h"
 #include "shared/tree_render.h"
 #include "tree/bend.h"
 #include "tree/noise.h"
+#include "tree/wind.h"
 
 namespace pond::render {
 namespace {
@@ -53,8 +53,7 @@ struct InstanceLod {
 
 struct Instance {
   sh::vec4 base;  // foot (world) and scale
-  tree::WindState wind;
-  // This frame's (prepare()): the wind pushed to the shader, and the level of detail for the frame
+  // This frame's (prepare()): the wind pushed to the shader (the session's), and the level of detail for the frame
   // and for the planar reflection, whose pixels are kReflectionDivisor times larger: its image is
   // pruned as a tree that far away would be, and kMirroredLodScale more.
   tree::TreeWindFrame frame{};
@@ -71,10 +70,8 @@ struct SlotResources {
 
 struct TreeDrawable::Impl {
   const gpu::Context& ctx;
+  const sim::Session& session;  // the wind
   tree::TreeSpec spec;
-  tree::WindSpec wind_spec;
-  tree::UserWind user;
-  tree::NoiseTable noise;
   TreePipelines pipes;
   tree::Tree grown;
   tree::TreeMesh mesh;
@@ -86,21 +83,18 @@ struct TreeDrawable::Impl {
   std::vector<SlotResources> slots;
   std::vector<Instance> instances;
   bool level_of_detail = true;
-  bool manual_clock = false;
-  double pending_seconds = 0.0;  // manual clock: advanced since the last frame
-  double last_seconds = 0.0;     // simulated clock: FrameInfo::seconds of the last frame
 
-  Impl(const gpu::Context& c, const FrameLoop& loop, const tree::TreeSpec& t, const tree::WindSpec& w)
-      : ctx(c), spec(t), wind_spec(w), user(sim::scene_user_wind(w)), noise(tree::make_noise_table(w.seed)),
-        pipes(create_tree_pipelines(c, loop.color_format(), FrameLoop::kDepthFormat, kReflectionFormat, kShadowFormat)) {
+  Impl(const gpu::Context& c, const FrameLoop& loop, const tree::TreeSpec& t)
+      : ctx(c), session(loop.session()), spec(t),
+        pipes(create_tree_pipelines(c, loop.color_format(), kDepthFormat, kReflectionFormat, kShadowFormat)) {
     const vk::DescriptorPoolSize sizes[] = {
-        {.type = vk::DescriptorType::eUniformBuffer, .descriptorCount = FrameLoop::kFramesInFlight},
-        {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 2 * FrameLoop::kFramesInFlight}};
+        {.type = vk::DescriptorType::eUniformBuffer, .descriptorCount = kFramesInFlight},
+        {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 2 * kFramesInFlight}};
     pool = vk::raii::DescriptorPool(
         ctx.device(), vk::DescriptorPoolCreateInfo{.flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
-                                                   .maxSets = FrameLoop::kFramesInFlight, .poolSizeCount = 2,
+                                                   .maxSets = kFramesInFlight, .poolSizeCount = 2,
                                                    .pPoolSizes = sizes});
-    for (std::uint32_t k = 0; k < FrameLoop::kFramesInFlight; ++k) {
+    for (std::uint32_t k = 0; k < kFramesInFlight; ++k) {
       SlotResources s;
       s.uniforms = gpu::create_buffer(ctx, sizeof(sh::TreeRenderFrame), BU::eUniformBuffer, gpu::MemoryUse::upload,
                                  "tree frame uniforms, slot " + std::to_string(k));
@@ -118,7 +112,6 @@ struct TreeDrawable::Impl {
       const auto& rc = spec.positions[k];
       inst.base = {static_cast<float>(rc[1] * model.spacing), static_cast<float>(land),
                    static_cast<float>(rc[0] * model.spacing), 0.0f};
-      inst.wind.phase = tree::instance_phase(static_cast<int>(k));
       instances.push_back(inst);
     }
     rescale();
@@ -181,15 +174,13 @@ struct TreeDrawable::Impl {
     return l;
   }
 
+  tree::TreeWindFrame wind_frame(std::size_t k) const { return session.wind().frame(k, bend_mode()); }
+
   void prepare(const FrameInfo& info) {
-    double dt = pending_seconds;
-    if (!manual_clock) dt = info.seconds - last_seconds;
-    last_seconds = info.seconds;
-    pending_seconds = 0.0;
     const tree::TreeLodCamera lod_camera = tree::tree_lod_camera(info.view_proj, static_cast<int>(info.extent.height));
-    for (Instance& inst : instances) {
-      tree::advance_wind(inst.wind, noise, user, dt);
-      inst.frame = tree::wind_frame(inst.wind, noise, user, bend_mode());
+    for (std::size_t k = 0; k < instances.size(); ++k) {
+      Instance& inst = instances[k];
+      inst.frame = wind_frame(k);
       const tree::Sphere s = tree::bent_bounds(bounds, inst.frame);
       const tree::Sphere world{tree::Vec3{inst.base.x, inst.base.y, inst.base.z} + s.centre * inst.base.w, s.radius * inst.base.w};
       const float pixels = level_of_detail ? tree::nearest_pixels_per_unit(lod_camera, world, inst.base.w)
@@ -283,9 +274,8 @@ struct TreeDrawable::Impl {
   }
 };
 
-TreeDrawable::TreeDrawable(const gpu::Context& ctx, const FrameLoop& loop, const tree::TreeSpec& tree,
-                           const tree::WindSpec& wind)
-    : impl_(std::make_unique<Impl>(ctx, loop, tree, wind)) {}
+TreeDrawable::TreeDrawable(const gpu::Context& ctx, const FrameLoop& loop, const tree::TreeSpec& tree)
+    : impl_(std::make_unique<Impl>(ctx, loop, tree)) {}
 
 // Frames in flight may still read the tree's buffers.
 TreeDrawable::~TreeDrawable() {
@@ -324,17 +314,6 @@ void TreeDrawable::draw_shadow(const FrameInfo& frame) {
   impl_->draw(frame, impl_->pipes.shadow, &Instance::shadow_lod, 0.0f);
 }
 
-void TreeDrawable::set_wind_direction(double radians) {
-  impl_->user.direction = static_cast<float>(radians);
-  impl_->wind_spec.direction_deg = radians * 180.0 / std::numbers::pi;
-}
-
-void TreeDrawable::set_strength(double strength) {
-  const double s = std::clamp(strength, 0.0, static_cast<double>(tree::kMaxWindStrength));
-  impl_->user.strength = static_cast<float>(s);
-  impl_->wind_spec.strength = s;
-}
-
 void TreeDrawable::regrow(std::uint64_t seed) {
   impl_->ctx.device().waitIdle();  // the buffers being replaced may still be read by frames in flight
   impl_->spec.seed = seed;
@@ -347,17 +326,8 @@ void TreeDrawable::set_draw_mode(tree::TreeDraw mode) { impl_->spec.draw = mode;
 void TreeDrawable::set_leaves(bool leaves) { impl_->spec.leaves = leaves; }
 void TreeDrawable::set_level_of_detail(bool on) { impl_->level_of_detail = on; }
 
-void TreeDrawable::set_manual_clock() { impl_->manual_clock = true; }
-void TreeDrawable::advance_clock(double seconds) {
-  if (seconds > 0.0) impl_->pending_seconds += seconds;
-}
-
 const tree::TreeSpec& TreeDrawable::spec() const { return impl_->spec; }
-const tree::WindSpec& TreeDrawable::wind() const { return impl_->wind_spec; }
 const tree::Tree& TreeDrawable::tree() const { return impl_->grown; }
-double TreeDrawable::wind_time() const {
-  return impl_->instances.empty() ? 0.0 : impl_->instances.front().wind.time;
-}
 
 std::vector<bool> TreeDrawable::diamond_leaves() const {
   std::vector<bool> out;
@@ -373,8 +343,7 @@ std::vector<int> TreeDrawable::thinnest_tube_levels() const {
 
 std::vector<tree::TreeWindFrame> TreeDrawable::wind_frames() const {
   std::vector<tree::TreeWindFrame> out;
-  for (const Instance& inst : impl_->instances)
-    out.push_back(tree::wind_frame(inst.wind, impl_->noise, impl_->user, impl_->bend_mode()));
+  for (std::size_t k = 0; k < impl_->instances.size(); ++k) out.push_back(impl_->wind_frame(k));
   return out;
 }
 

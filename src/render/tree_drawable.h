@@ -3,17 +3,14 @@
 // once (src/tree), drawn at every position of the scene (instances, each with its own wind phase),
 // bending in the scene's "wind".
 //
-// Per frame, prepare() advances every instance's WindState (gusts, inertia: src/tree/wind_state.h)
-// and writes the slot's camera/light uniforms, and picks each instance's level of detail (tubes for
-// the levels wide enough on screen, twig lines for the thinner ones, one triangle a leaf when the
-// leaves are a few pixels long: tree/tree_lod.h); draw() pushes
-// each instance's TreeWindFrame and draws lines, or tubes and twig lines (+ leaves). The wind clock is the simulated time of FrameInfo::seconds by
-// default, so `pond render` is deterministic; the windowed demo switches to set_manual_clock() and
-// calls advance_clock() with its wall-clock frame time, since the simulation runs faster than
-// real time.
+// Per frame, prepare() takes each instance's wind from the session (sim::Session::wind(): gusts and
+// inertia, tree/wind.h; the front end moves its clock), writes the slot's camera/light uniforms,
+// and picks each instance's level of detail (tubes for the levels wide enough on screen, twig lines
+// for the thinner ones, one triangle a leaf when the leaves are a few pixels long: tree/tree_lod.h);
+// draw() pushes each instance's TreeWindFrame and draws lines, or tubes and twig lines (+ leaves).
 //
-// Controls (the demo's right drag, keys 1-9, double-click, ImGui fields) may be called between
-// frames; regrow() waits for the device, the rest only change what the next frame uses.
+// Controls (the demo's double-click, ImGui fields) may be called between frames; regrow() waits for
+// the device, the rest only change what the next frame uses. The wind's controls are the session's.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -22,6 +19,7 @@
 #include "scene/scene.h"
 #include "tree/tree.h"
 #include "tree/wind_state.h"
+#include "render/pass_drawable.h"
 
 namespace pond::render {
 
@@ -32,9 +30,9 @@ struct TreeDrawStats {
 
 class TreeDrawable final : public PassDrawable {
  public:
-  // Uses the loop's colour format, scene (lighting, land height, grid spacing) and the given tree
-  // and wind (usually loop.scene().tree / .wind).
-  TreeDrawable(const gpu::Context& ctx, const FrameLoop& loop, const tree::TreeSpec& tree, const tree::WindSpec& wind);
+  // Uses the loop's colour format, scene (land height), model (grid spacing) and session (the wind)
+  // and the given tree (usually loop.scene().tree).
+  TreeDrawable(const gpu::Context& ctx, const FrameLoop& loop, const tree::TreeSpec& tree);
   ~TreeDrawable() override;
   TreeDrawable(const TreeDrawable&) = delete;
   TreeDrawable& operator=(const TreeDrawable&) = delete;
@@ -47,8 +45,6 @@ class TreeDrawable final : public PassDrawable {
   void draw_shadow(const FrameInfo& frame) override;
 
   // ---- Controls ----
-  void set_wind_direction(double radians);  // in the xz plane, from +x toward +z
-  void set_strength(double strength);       // 0..9 (clamped)
   void regrow(std::uint64_t seed);          // a new tree (same depth and height); waits for the device
   void set_bend_mode(tree::TreeBend mode);
   void set_draw_mode(tree::TreeDraw mode);
@@ -56,15 +52,9 @@ class TreeDrawable final : public PassDrawable {
   // On by default. Off: every level as tubes whatever the distance (the tests compare the two).
   void set_level_of_detail(bool on);
 
-  // ---- Wind clock ----
-  void set_manual_clock();                  // from now on only advance_clock() moves the wind
-  void advance_clock(double seconds);       // manual clock: seconds since the previous frame
-
   // ---- Inspection (tests, the demo's panel) ----
   const tree::TreeSpec& spec() const;
-  const tree::WindSpec& wind() const;
   const tree::Tree& tree() const;
-  double wind_time() const;                 // seconds of wind time so far
   // Each instance's frame as the next draw() pushes it (tree units).
   std::vector<tree::TreeWindFrame> wind_frames() const;
   // Each instance's level of detail in the last prepared frame: the thinnest level drawn as tubes

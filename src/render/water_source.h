@@ -1,55 +1,55 @@
 #pragma once
-// What a frame needs from the session's solver (CPU or GPU) after advancing:
-//  - the buffers the water vertex shader reads (state: ux | uy | uz arrays of `stride` floats,
-//    rows `pitch` nodes apart; normals: one vec4 per node, compact);
-//  - the node positions on the CPU, for the LOD builder: the displacements in grid units where they
-//    already are (lod::grid_displacements; the builder converts them to world units as it copies).
-// GPU: the solver's own buffers (no copy for drawing); the normals pass runs on the GPU and the three
-//      displacement arrays are read in place where the state's memory is host-readable (lavapipe),
-//      else copied into a host-readable buffer (about 0.8 MB at 257^2). A frame's substeps,
-//      normals and copy are one submission.
-// CPU: the state and the CPU normals are written into the frame slot's host-visible buffers
-//      (per slot, so a frame in flight keeps reading its own).
-#include <array>
+// What a frame draws the water and the bodies from, whichever solver the session holds (never cast:
+// the GPU solver is found through the gpu::GpuSolvers that made it):
+//  - the GPU solver: its own buffers, as its last submission left them (the state, the normals it
+//    computed, the bodies' states); nothing is copied for drawing;
+//  - a CPU solver: the state's displacements, their normals (computed here) and the bodies' states
+//    written into the frame slot's host-visible buffers (per slot: a frame in flight keeps its own).
+// The LOD's positions are the solver's displacements() on the host: the GPU solver waits there for
+// its last submission (in a frame, the one wait) and hands over its copy, or the state in place
+// where the state's memory is host-readable (lavapipe).
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 #include "gpu/buffer.h"
-#include "render/frame_loop.h"
-#include "gpu/gpu_solver.h"
+#include "gpu/gpu_solvers.h"
 #include "lod/node_positions.h"
-#include "sim/cpu_solver.h"
+#include "render/frame_constants.h"
+#include "sim/session.h"
 
 namespace pond::render {
 
 class WaterSource {
  public:
-  // For `solver` (a gpu::GpuSolver or a sim::CpuSolver), which must outlive this.
-  WaterSource(const gpu::Context& ctx, sim::Solver& solver, std::uint32_t slots);
+  // `gpu`: what made the session's GPU solvers (null: the session only ever holds CPU solvers).
+  // Both must outlive this.
+  WaterSource(const gpu::Context& ctx, const sim::Session& session, const gpu::GpuSolvers* gpu);
 
   struct DrawBuffers {
-    const gpu::Buffer* state;
-    const gpu::Buffer* normals;
-    std::uint32_t stride;  // floats between the state's component arrays
-    std::uint32_t pitch;   // nodes between the state's rows: the GPU solver's pitch, or cols (CPU)
+    const gpu::Buffer* state;    // ux | uy | uz arrays of `stride` floats, rows `pitch` nodes apart
+    const gpu::Buffer* normals;  // one vec4 per node, compact
+    const gpu::Buffer* bodies;   // sim::BodyState per body; null without bodies
+    std::uint32_t stride;
+    std::uint32_t pitch;
   };
-  // Normals of the current state, positions made visible to the CPU, and the buffers frame slot
-  // `slot` draws from.
+  // The state on the host, as the session's solver last changed it: the GPU solver waits here for
+  // its last submission (which also finishes every frame submitted before it).
+  void sync() { displacements_ = session_.solver().displacements(); }
+  // The buffers frame slot `slot` (finished) draws the state sync() saw from.
   DrawBuffers prepare(std::uint32_t slot);
-  // Positions of the state prepare() last saw, as a view of its displacements: valid until the
-  // solver's next step or state change, or the next prepare.
+  // The positions of the state prepare() last saw, for the LOD builder: valid until the session
+  // changes the state.
   lod::NodePositions positions() const;
 
  private:
   const gpu::Context& ctx_;
-  const sim::WaterModel& model_;
-  gpu::GpuSolver* gpu_ = nullptr;        // one of the two
-  const sim::CpuSolver* cpu_ = nullptr;
-  gpu::Buffer readback_;  // GPU, when the state is not host-readable: the displacements, copied
-  std::vector<gpu::Buffer> slot_state_, slot_normals_;  // CPU: per slot
-  std::array<const float*, 3> displacements_{};  // ux, uy, uz of the state prepare() last saw
-  std::size_t displacements_pitch_ = 0;           // nodes between their rows
+  const sim::Session& session_;
+  const gpu::GpuSolvers* gpu_;
+  struct SlotBuffers {
+    gpu::Buffer state, normals, bodies;
+  };
+  std::vector<SlotBuffers> cpu_;  // CPU solver: per slot, made on first use
+  sim::HostDisplacements displacements_{};
 };
 
 }  // namespace pond::render

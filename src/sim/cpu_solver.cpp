@@ -65,6 +65,8 @@ void CpuSolver::substep(int substep_index) {
   }
 }
 
+void CpuSolver::perturb(const PerturbationTable& table) { apply_perturbation(table, cur_); }
+
 void CpuSolver::set_body_models(std::vector<BodyModel> bodies) {
   if (bodies.size() != model_.bodies.size()) throw InternalError("set_body_models: another number of bodies");
   model_.bodies = std::move(bodies);

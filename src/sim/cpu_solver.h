@@ -31,6 +31,10 @@ class CpuSolver final : public Solver {
   std::string engine() const override;
   void set_body_models(std::vector<BodyModel> bodies) override;
   std::vector<BodyState> read_bodies() const override { return cur_.bodies; }
+  void perturb(const PerturbationTable& table) override;
+  HostDisplacements displacements() const override {
+    return {cur_.ux.data(), cur_.uy.data(), cur_.uz.data(), static_cast<std::size_t>(model_.cols)};
+  }
 
   // Advances `steps` steps. Throws InputError naming the step when the state becomes non-finite.
   void advance(std::int64_t steps) override;

@@ -7,12 +7,16 @@
 namespace pond::sim {
 
 Normals compute_normals(const WaterState& s, const WaterModel& m) {
+  return compute_normals(HostDisplacements{s.ux.data(), s.uy.data(), s.uz.data(), static_cast<std::size_t>(m.cols)}, m);
+}
+
+Normals compute_normals(const HostDisplacements& s, const WaterModel& m) {
   Normals n;
   n.x.resize(m.nodes());
   n.y.resize(m.nodes());
   n.z.resize(m.nodes());
   const int R = m.rows, C = m.cols;
-  auto at = [C](int i, int j) { return static_cast<std::size_t>(i) * C + j; };
+  auto at = [&s](int i, int j) { return static_cast<std::size_t>(i) * s.pitch + static_cast<std::size_t>(j); };
   for (int i = 0; i < R; ++i)
     for (int j = 0; j < C; ++j) {
       const int i1 = std::min(i + 1, R - 1), i0 = std::max(i - 1, 0);
@@ -26,7 +30,7 @@ Normals compute_normals(const WaterState& s, const WaterModel& m) {
       const float cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
       const float l2 = (cx * cx + cy * cy) + cz * cz;
       const float r = l2 > 0.0f ? shared::rsqrt_exact(l2, shared::kRsqrtStepsExact) : 0.0f;
-      const std::size_t k = at(i, j);
+      const std::size_t k = static_cast<std::size_t>(i) * static_cast<std::size_t>(C) + static_cast<std::size_t>(j);
       n.x[k] = cx * r;
       n.y[k] = l2 > 0.0f ? cy * r : 1.0f;
       n.z[k] = cz * r;

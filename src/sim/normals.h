@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sim/model.h"
+#include "sim/solver.h"
 #include "sim/state.h"
 
 namespace pond::sim {
@@ -15,5 +16,7 @@ struct Normals {
 };
 
 Normals compute_normals(const WaterState& state, const WaterModel& model);
+// The same from displacements only (sim/solver.h): rows `pitch` nodes apart; out compact.
+Normals compute_normals(const HostDisplacements& u, const WaterModel& model);
 
 }  // namespace pond::sim

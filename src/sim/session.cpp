@@ -4,10 +4,8 @@
 #include <array>
 
 #include "core/errors.h"
-#include "scene/body_fields.h"
 #include "sim/cpu_solver.h"
 #include "sim/diagnostics.h"
-#include "sim/perturbation.h"
 #include "sim/wind_ripples.h"
 
 namespace pond::sim {
@@ -30,9 +28,10 @@ void constrain(WaterState& s, const WaterModel& model) {
 
 }  // namespace
 
-Session::Session(scene::Scene scene, SolverChoice choice, GpuSolverFactory gpu)
-    : scene_(std::move(scene)), choice_(choice), gpu_(std::move(gpu)) {
-  if (scene_.wind.ripples) ripples_until_ = kRippleHorizonSteps;
+Session::Session(SessionSpec spec, SolverChoice choice, GpuSolverFactory gpu)
+    : water_(std::move(spec.water)), wind_spec_(spec.wind), rules_(std::move(spec.rules)), choice_(choice),
+      gpu_(std::move(gpu)), wind_(spec.wind, spec.trees), sun_(spec.sun) {
+  if (wind_spec_.ripples) ripples_until_ = kRippleHorizonSteps;
   WaterModel model = build();
   const WaterState rest = rest_state(model);
   replace_solver(std::move(model), rest, 0);
@@ -41,8 +40,8 @@ Session::Session(scene::Scene scene, SolverChoice choice, GpuSolverFactory gpu)
 Session::~Session() = default;
 
 WaterModel Session::build() const {
-  WaterSpec water = scene_;
-  add_wind_ripples(water, scene_.wind, ripples_until_);
+  WaterSpec water = water_;
+  add_wind_ripples(water, wind_spec_, ripples_until_);
   return build_model(water, choice_.math);
 }
 
@@ -50,7 +49,6 @@ void Session::replace_solver(WaterModel model, const WaterState& state, std::int
   if (state.nodes() != model.nodes())
     throw InternalError("the state has " + std::to_string(state.nodes()) + " nodes, the grid " +
                      std::to_string(model.nodes()));
-  notify_change();
   std::unique_ptr<Solver> next;
   if (choice_.gpu) {
     if (!gpu_) throw InternalError("a GPU solver was chosen without a factory for it");
@@ -68,7 +66,7 @@ void Session::replace_solver(WaterModel model, const WaterState& state, std::int
 void Session::advance(std::int64_t steps) {
   if (steps <= 0) return;
   const std::int64_t end = solver_->steps_done() + steps;
-  if (scene_.wind.ripples && end > ripples_until_) {
+  if (wind_spec_.ripples && end > ripples_until_) {
     ripples_until_ = end + kRippleHorizonSteps;
     replace_solver(build(), solver_->read_state(), solver_->steps_done());
   }
@@ -77,30 +75,27 @@ void Session::advance(std::int64_t steps) {
 }
 
 void Session::splash(const Perturbation& splash) {
-  WaterState state = solver_->read_state();
-  apply_perturbation(tabulate(splash, solver_->model()), state);
-  notify_change();
-  solver_->set_state(state, solver_->steps_done());
+  solver_->perturb(tabulate(splash, solver_->model()));
   ++state_revision_;
 }
 
 void Session::set_physics(const Physics& physics) {
-  scene::check_physics(physics);
+  if (rules_.physics) rules_.physics(physics);
   const WaterState state = solver_->read_state();
   const std::int64_t steps = solver_->steps_done();
-  scene_.physics = physics;
+  water_.physics = physics;
   replace_solver(build(), state, steps);
 }
 
 void Session::set_water(const WaterSpec& water) {
-  if (water.grid.rows != scene_.grid.rows || water.grid.cols != scene_.grid.cols ||
-      water.grid.spacing != scene_.grid.spacing)
+  if (water.grid.rows != water_.grid.rows || water.grid.cols != water_.grid.cols ||
+      water.grid.spacing != water_.grid.spacing)
     throw InternalError("new constraints must keep the grid");
   WaterState state = solver_->read_state();
   const std::int64_t steps = solver_->steps_done();
-  const Physics physics = scene_.physics;
-  static_cast<WaterSpec&>(scene_) = water;
-  scene_.physics = physics;
+  const Physics physics = water_.physics;
+  water_ = water;
+  water_.physics = physics;
   WaterModel model = build();
   constrain(state, model);
   replace_solver(std::move(model), state, steps);
@@ -121,48 +116,45 @@ void Session::set_solver(SolverChoice choice) {
 }
 
 void Session::add_body(const BodySpec& body) {
-  if (scene_.bodies.size() >= scene::kMaxBodies)
-    throw InputError("a scene holds at most " + std::to_string(scene::kMaxBodies) + " bodies");
-  if (const std::optional<scene::Problem> p = scene::body_problem(body, scene_.grid))
-    throw InputError("bodies[" + std::to_string(scene_.bodies.size()) + "]." + p->key + " " + p->what);
+  if (rules_.body) rules_.body(body, water_.grid, water_.bodies.size());
   WaterState state = solver_->read_state();
   const std::int64_t steps = solver_->steps_done();
-  scene_.bodies.push_back(body);
-  held_.resize(scene_.bodies.size());
+  water_.bodies.push_back(body);
+  held_.resize(water_.bodies.size());
   WaterModel model = build();
   state.bodies.push_back(model.bodies.back().initial);
   replace_solver(std::move(model), state, steps);
 }
 
 void Session::remove_body(std::size_t index) {
-  if (index >= scene_.bodies.size()) throw InternalError("no body " + std::to_string(index));
+  if (index >= water_.bodies.size()) throw InternalError("no body " + std::to_string(index));
   WaterState state = solver_->read_state();
   const std::int64_t steps = solver_->steps_done();
-  scene_.bodies.erase(scene_.bodies.begin() + static_cast<std::ptrdiff_t>(index));
+  water_.bodies.erase(water_.bodies.begin() + static_cast<std::ptrdiff_t>(index));
   state.bodies.erase(state.bodies.begin() + static_cast<std::ptrdiff_t>(index));
-  held_.resize(scene_.bodies.size() + 1);
+  held_.resize(water_.bodies.size() + 1);
   held_.erase(held_.begin() + static_cast<std::ptrdiff_t>(index));
   replace_solver(build(), state, steps);
 }
 
 void Session::drag_body(std::size_t index, const std::array<double, 3>& target, std::int64_t steps) {
-  if (index >= scene_.bodies.size()) throw InternalError("no body " + std::to_string(index));
-  held_.resize(scene_.bodies.size());
-  const double h = scene_.grid.spacing;
+  if (index >= water_.bodies.size()) throw InternalError("no body " + std::to_string(index));
+  held_.resize(water_.bodies.size());
+  const double h = water_.grid.spacing;
   const BodyState now = solver_->read_bodies()[index];
-  BodySpec& spec = scene_.bodies[index];
+  BodySpec& spec = water_.bodies[index];
   if (!held_[index]) held_[index] = spec;
-  const std::array<double, 3> to{std::clamp(target[0], 0.0, (scene_.grid.cols - 1) * h), target[1],
-                                 std::clamp(target[2], 0.0, (scene_.grid.rows - 1) * h)};
+  const std::array<double, 3> to{std::clamp(target[0], 0.0, (water_.grid.cols - 1) * h), target[1],
+                                 std::clamp(target[2], 0.0, (water_.grid.rows - 1) * h)};
   const std::int64_t from = solver_->steps_done();
   spec.motion = BodyMotion::kinematic;
   spec.path = {PathKey{from, {now.x * h, now.y * h, now.z * h}}, PathKey{from + std::max<std::int64_t>(1, steps), to}};
-  solver_->set_body_models(build_bodies(scene_.bodies, scene_.physics, h));
+  solver_->set_body_models(build_bodies(water_.bodies, water_.physics, h));
 }
 
 void Session::release_body(std::size_t index, const std::array<double, 3>& velocity) {
   if (!held(index)) return;
-  const double h = scene_.grid.spacing;
+  const double h = water_.grid.spacing;
   WaterState state = solver_->read_state();
   BodyState& now = state.bodies[index];
   BodySpec spec = *held_[index];
@@ -177,18 +169,17 @@ void Session::release_body(std::size_t index, const std::array<double, 3>& veloc
     spec.path = {PathKey{solver_->steps_done(), {now.x * h, now.y * h, now.z * h}}};
     now.vx = now.vy = now.vz = 0.0f;
   }
-  scene_.bodies[index] = spec;
-  notify_change();
-  solver_->set_body_models(build_bodies(scene_.bodies, scene_.physics, h));
+  water_.bodies[index] = spec;
+  solver_->set_body_models(build_bodies(water_.bodies, water_.physics, h));
   solver_->set_state(state, solver_->steps_done());
   ++state_revision_;
 }
 
 void Session::reset() {
   for (std::size_t b = 0; b < held_.size(); ++b)  // held bodies go back to their own motion
-    if (held_[b]) scene_.bodies[b] = *held_[b];
-  held_.assign(scene_.bodies.size(), std::nullopt);
-  if (scene_.wind.ripples) ripples_until_ = kRippleHorizonSteps;
+    if (held_[b]) water_.bodies[b] = *held_[b];
+  held_.assign(water_.bodies.size(), std::nullopt);
+  if (wind_spec_.ripples) ripples_until_ = kRippleHorizonSteps;
   replace_solver(build(), rest_state(solver_->model()), 0);
 }
 
@@ -196,7 +187,6 @@ void Session::set_state(const WaterState& state, std::int64_t steps) {
   if (state.nodes() != model().nodes())
     throw InternalError("set_state: " + std::to_string(state.nodes()) + " nodes for a grid of " +
                      std::to_string(model().nodes()));
-  notify_change();
   solver_->set_state(state, steps);
   ++state_revision_;
 }

@@ -1,56 +1,76 @@
 #pragma once
 // The simulation session: the one piece of state every front end drives (`pond simulate`,
-// `pond render`, the demo). It owns the scene's water, the model built from it, the solver (CPU
-// backend or GPU) and its state, and every change to them: steps, splashes, the scene's wind
-// ripples, physics edits (checked by the scene file's own checks), new constraints, a solver
-// switch, reset, and the blow-up check. No Vulkan: the GPU solver comes from a factory the front end
-// passes in (gpu::GpuSolver), and the renderer reads the solver it is given.
+// `pond render`, the demo) and the renderer only reads. It owns the water of a scene (its spec with
+// the edits made since), the model built from it, the solver (CPU backend or GPU) and its state,
+// the wind (its ripples on the water, and the trees' gusts) and the sun, and every change to them:
+// steps, splashes, physics edits (checked by the rules it is given: the scene file's), new
+// constraints, bodies added, dragged and removed, a solver switch, reset, and the blow-up check.
+// No Vulkan: the GPU solver comes from a factory the front end passes in (gpu/gpu_solvers.h).
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
 
-#include "scene/scene.h"
 #include "sim/model.h"
+#include "sim/rain.h"
 #include "sim/solver.h"
 #include "sim/state.h"
+#include "tree/wind.h"
 
 namespace pond::sim {
 
-// Makes the GPU solver of a model (the front end's: it owns the Vulkan device).
-using GpuSolverFactory = std::function<std::unique_ptr<Solver>(const WaterModel& model)>;
+// The rules run-time edits must pass, each throwing InputError naming what is wrong: the scene
+// file's own checks (scene::session_spec fills them in). Empty: nothing is checked.
+struct EditRules {
+  std::function<void(const Physics&)> physics;
+  // A body that would be the scene's body number `index` on `grid` (its count included).
+  std::function<void(const BodySpec&, const GridSpec& grid, std::size_t index)> body;
+};
+
+// What a session simulates: the water, the wind over it and its trees, the sun.
+struct SessionSpec {
+  WaterSpec water;
+  tree::WindSpec wind;
+  std::size_t trees = 0;                   // tree instances the wind sways (each its own phase)
+  std::array<double, 3> sun{};             // toward the sun (the scene's lighting.sun)
+  EditRules rules;
+};
 
 class Session {
  public:
-  // Starts from rest at step 0. InputError for a CPU backend this machine lacks or a GPU choice
-  // without a factory.
-  Session(scene::Scene scene, SolverChoice choice, GpuSolverFactory gpu = {});
+  // Starts from rest at step 0. InputError for a CPU backend this machine lacks; InternalError
+  // for a GPU choice without a factory.
+  Session(SessionSpec spec, SolverChoice choice, GpuSolverFactory gpu = {});
   ~Session();
   Session(const Session&) = delete;
   Session& operator=(const Session&) = delete;
 
-  // Called before the session changes the water other than by stepping it (a splash, an edit, a
-  // new solver, a new state): a renderer still reading the solver's buffers waits for them there.
-  void set_before_change(std::function<void()> hook) { before_change_ = std::move(hook); }
-
   // Advances `steps` steps; the scene's perturbations and wind ripples land just before their step.
+  // With the GPU solver this submits the work and returns (solver.h: displacements() waits).
   void advance(std::int64_t steps);
   // A splash applied to the current state now (its `step` is ignored); row/col in grid indices.
+  // With the GPU solver a dispatch in its next submission, never a round trip of the state.
   void splash(const Perturbation& splash);
-  // New physics for the same grid, refused (InputError, nothing changed) by the scene file's own
-  // checks; the state carries over.
+  // This frame's rain (sim/rain.h): `drops_per_frame` on average, each a splash of `radius` and
+  // about `amplitude` (world units).
+  void rain(double drops_per_frame, double radius, double amplitude) {
+    for (const Perturbation& p : rain_.drops(model(), drops_per_frame, radius, amplitude)) splash(p);
+  }
+  // New physics for the same grid, refused (InputError, nothing changed) by the rules; the state
+  // carries over.
   void set_physics(const Physics& physics);
   // New constraints or border for the same grid (the demo's modes): the state carries over and
   // obeys them at once (fixed nodes at rest, vertical-only nodes without horizontal motion). The
-  // physics stays the session's. InputError for another grid.
+  // physics stays the session's. InternalError for another grid.
   void set_water(const WaterSpec& water);
   void set_solver(SolverChoice choice);  // the state and the step count carry over
 
-  // The bodies (world units). Their specs are scene().bodies, with the edits below.
-  std::vector<BodyState> bodies() const { return solver_->read_bodies(); }  // grid units
-  // Adds a body where its spec puts it (InputError: a radius below the grid spacing, a mass that
-  // is not positive, a position off the grid, more than 64 bodies). The water carries over.
+  // The bodies (grid units). Their specs are water().bodies, with the edits below.
+  std::vector<BodyState> bodies() const { return solver_->read_bodies(); }
+  // Adds a body where its spec puts it (InputError from the rules: a radius below the grid
+  // spacing, a position off the grid, too many bodies, ...). The water carries over.
   void add_body(const BodySpec& body);
   void remove_body(std::size_t index);
   // Holds body `index` and moves it, kinematic, from where it is to `target` (world units) over the
@@ -61,19 +81,30 @@ class Session {
   void release_body(std::size_t index, const std::array<double, 3>& velocity);
   bool held(std::size_t index) const { return index < held_.size() && held_[index].has_value(); }
   void reset();                          // rest, step 0: the scene's perturbations replay
-  // Replaces the state and the step count (same grid; InputError otherwise).
+  // Replaces the state and the step count (same grid; InternalError otherwise).
   void set_state(const WaterState& state, std::int64_t steps);
   // The state after the blow-up check (the CPU solver stops at the step it blows up, the GPU
   // solver does not stop to look): InputError naming the first node whose velocity is not finite.
   WaterState finite_state() const;
 
-  const scene::Scene& scene() const { return scene_; }  // with the edits made since
+  // The trees' wind: by default its clock is the simulated time, moved by catch_up_wind(); the
+  // demo moves it in real time with advance_wind(). The controls change the user's wind.
+  void catch_up_wind() { wind_.advance(simulated_seconds() - wind_.time()); }
+  void advance_wind(double seconds) { wind_.advance(seconds); }
+  void set_wind_direction(double radians) { wind_.set_direction(radians); }
+  void set_wind_strength(double strength) { wind_.set_strength(strength); }
+  const tree::Wind& wind() const { return wind_; }
+  // The direction toward the sun; the caller has checked it (scene::check_sun).
+  void set_sun(const std::array<double, 3>& toward_sun) { sun_ = toward_sun; }
+  const std::array<double, 3>& sun() const { return sun_; }
+
+  const WaterSpec& water() const { return water_; }  // with the edits made since
   const WaterModel& model() const { return solver_->model(); }
   const SolverChoice& choice() const { return choice_; }
   std::int64_t steps_done() const { return solver_->steps_done(); }
+  double simulated_seconds() const { return static_cast<double>(steps_done()) * water_.physics.dt; }
   WaterState state() const { return solver_->read_state(); }
   const Solver& solver() const { return *solver_; }
-  Solver& solver() { return *solver_; }  // the renderer's: the GPU solver computes its normals
   // Grows whenever solver() is replaced (a drawer holding its buffers must let go), and whenever
   // the state changes, respectively.
   std::uint64_t solver_generation() const { return solver_generation_; }
@@ -81,19 +112,20 @@ class Session {
 
  private:
   WaterModel build() const;
-  void notify_change() const {
-    if (before_change_) before_change_();
-  }
   // `model` (from build()) with `state` at `steps`; the solver the choice says.
   void replace_solver(WaterModel model, const WaterState& state, std::int64_t steps);
 
-  scene::Scene scene_;
+  WaterSpec water_;
+  tree::WindSpec wind_spec_;  // the scene's, for the ripples (a pure function of it and the step)
+  EditRules rules_;
   SolverChoice choice_;
   GpuSolverFactory gpu_;
   std::int64_t ripples_until_ = 0;  // the model holds the wind ripples of steps below this
-  std::function<void()> before_change_;
   std::vector<std::optional<BodySpec>> held_;  // per body: its spec before drag_body() took it
   std::unique_ptr<Solver> solver_;
+  tree::Wind wind_;
+  std::array<double, 3> sun_;
+  Rain rain_;
   std::uint64_t solver_generation_ = 0, state_revision_ = 0;
 };
 

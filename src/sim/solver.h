@@ -2,7 +2,10 @@
 // The solver behind a session: the CPU reference solver (sim::CpuSolver) or the GPU compute solver
 // (gpu::GpuSolver). Both advance the same model through the same step sequence, with the same bits
 // in exact math. The session owns one; a front end chooses which with a SolverChoice.
+#include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,6 +15,15 @@
 
 namespace pond::sim {
 
+// The displacements (grid units, sim/state.h) of a solver's current state where the host can read
+// them: node (i, j) at i * pitch + j of each array.
+struct HostDisplacements {
+  const float* ux = nullptr;
+  const float* uy = nullptr;
+  const float* uz = nullptr;
+  std::size_t pitch = 0;
+};
+
 class Solver {
  public:
   virtual ~Solver() = default;
@@ -19,11 +31,19 @@ class Solver {
   virtual std::int64_t steps_done() const = 0;
   // Advances `steps` steps, each perturbation of the model applied just before its step.
   virtual void advance(std::int64_t steps) = 0;
-  // A copy of the current state (the GPU solver reads it back).
+  // Applies a perturbation (any step) to the current state, as if it were scheduled just before
+  // the next step: the GPU solver records its dispatch into its next submission, no round trip.
+  virtual void perturb(const PerturbationTable& table) = 0;
+  // A copy of the current state (the GPU solver reads it back and waits).
   virtual WaterState read_state() const = 0;
+  // The current state's displacements on the host, valid until the next call that changes the
+  // state. The GPU solver copies them in every submission that changes the state and waits here
+  // for its last one: in a frame, the one wait for the GPU.
+  virtual HostDisplacements displacements() const = 0;
   // Replaces the state and the step counter (the model's perturbations resume from that step).
   virtual void set_state(const WaterState& state, std::int64_t steps_done) = 0;
-  // The bodies' current states (cheaper than read_state().bodies on the GPU).
+  // The bodies' current states (the GPU solver copies them in every submission, so this waits for
+  // its last one, as displacements() does, and reads a few bytes).
   virtual std::vector<BodyState> read_bodies() const = 0;
   // Replaces the bodies' models (the same number of bodies; their states stay): a kinematic
   // body's new path, a body turned floating or kinematic. InputError for another count.
@@ -34,6 +54,9 @@ class Solver {
   // whether it is guaranteed or only observed (empty: nothing to say, as for every CPU backend).
   virtual std::string identity() const { return {}; }
 };
+
+// Makes the GPU solver of a model (the front end's: it owns the Vulkan device; gpu/gpu_solvers.h).
+using GpuSolverFactory = std::function<std::unique_ptr<Solver>(const WaterModel& model)>;
 
 // Which solver advances the water. Switching at run time carries the state over.
 struct SolverChoice {

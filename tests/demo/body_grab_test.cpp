@@ -7,6 +7,7 @@
 
 #include "app/demo/body_grab.h"
 #include "scene/scene.h"
+#include "scene/session_spec.h"
 
 namespace pond::app::demo {
 namespace {
@@ -26,7 +27,7 @@ lod::Camera above() {
 }
 
 TEST(BodyGrab, DragsAFloatingBallAndLetsItGoWithTheDragsVelocity) {
-  sim::Session session(scene::parse_scene(kBall, "test"), sim::SolverChoice{.gpu = false});
+  sim::Session session(scene::session_spec(scene::parse_scene(kBall, "test")), sim::SolverChoice{.gpu = false});
   const lod::Camera camera = above();
   BodyGrab grab;
   EXPECT_FALSE(grab.grab(session, pixel_ray(camera, 5, 5)).has_value());  // the corner: water only
@@ -47,9 +48,9 @@ TEST(BodyGrab, DragsAFloatingBallAndLetsItGoWithTheDragsVelocity) {
   const std::array<double, 3> v = grab.release(session);
   EXPECT_FALSE(grab.active());
   EXPECT_FALSE(session.held(0));
-  EXPECT_EQ(session.scene().bodies[0].motion, sim::BodyMotion::floating);
+  EXPECT_EQ(session.water().bodies[0].motion, sim::BodyMotion::floating);
   // The drag's velocity: its displacement a frame over a step's time, along +x.
-  const double per_step = (held.x - x0) / 20.0 / session.scene().physics.dt;
+  const double per_step = (held.x - x0) / 20.0 / session.water().physics.dt;
   EXPECT_NEAR(v[0], per_step, 0.25 * per_step);
   EXPECT_EQ(v[1], 0.0);
   EXPECT_NEAR(v[2], 0.0, 0.05 * per_step);
@@ -59,7 +60,7 @@ TEST(BodyGrab, DragsAFloatingBallAndLetsItGoWithTheDragsVelocity) {
 
 // Removing bodies keeps the hold on the same body, or ends it when that body goes.
 TEST(BodyGrab, FollowsRemovedBodies) {
-  sim::Session session(scene::parse_scene(kBall, "test"), sim::SolverChoice{.gpu = false});
+  sim::Session session(scene::session_spec(scene::parse_scene(kBall, "test")), sim::SolverChoice{.gpu = false});
   session.add_body({.shape = sim::BodyShape::sphere, .motion = sim::BodyMotion::floating, .radius = 2.0, .mass = 30.0,
                     .position = {30.0, 1.5, 30.0}, .velocity = {}, .path = {}});
   BodyGrab grab;

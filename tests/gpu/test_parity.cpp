@@ -325,7 +325,7 @@ TEST_F(GoldenTest, NormalsEqualTheCpuNormals) {
     solver.advance(300);
     const sim::WaterState state = solver.read_state();
     const sim::Normals cpu = sim::compute_normals(state, model);
-    const sim::Normals gpu = solver.read_normals();
+    const sim::Normals gpu = solver.normals();  // what the last submission computed
     int differing = 0;
     for (std::size_t n = 0; n < model.nodes(); ++n)
       differing += std::bit_cast<std::uint32_t>(cpu.x[n]) != std::bit_cast<std::uint32_t>(gpu.x[n]) ||
@@ -339,61 +339,52 @@ TEST_F(GoldenTest, NormalsEqualTheCpuNormals) {
   }
 }
 
-// The renderer's one submission per frame (advance_for_frame: steps, normals, the displacements
-// made visible to the CPU) leaves the same state, step count and normals as advance() then
-// compute_normals(), and the CPU sees the state's ux | uy | uz: copied into a readback buffer,
-// or in place where the state is host-readable (lavapipe). The second model has so many
-// substeps that 5 steps exceed kMaxDispatchesPerSubmit: the earlier steps go in submissions of
-// their own.
-TEST_F(GpuTest, AdvanceForFrameEqualsAdvanceThenNormals) {
+// Every submission that changes the state leaves the host its displacements (copied, or read in
+// place where the state is host-readable: lavapipe) and the normals of the new state; a splash
+// (perturb) is a dispatch in the next submission and gives the CPU's bits. The second model has so
+// many substeps that 5 steps exceed kMaxDispatchesPerSubmit: the earlier steps go in submissions of
+// their own, which the ring of submissions takes in turn.
+TEST_F(GpuTest, EverySubmissionLeavesDisplacementsNormalsAndSplashes) {
   sim::WaterModel chunked = model_of(kCases[5]);  // big_splash_17x33_fixed
   chunked.substeps = 2000;
   ASSERT_LT(gpu::GpuSolver::kMaxDispatchesPerSubmit / chunked.substeps, 5);
   for (const sim::WaterModel& model : {model_of(kCases[5]), chunked}) {
-    gpu::GpuSolver framed(ctx(), model), plain(ctx(), model);
-    const std::size_t stride = framed.stride(), pitch = framed.pitch();
-    EXPECT_EQ(pitch, gpu::row_pitch(static_cast<std::size_t>(model.cols)));
-    EXPECT_EQ(stride, gpu::state_stride(static_cast<std::size_t>(model.rows) * pitch));
-    const gpu::Buffer readback = gpu::create_buffer(ctx(), 3 * stride * sizeof(float),
-                                                    vk::BufferUsageFlagBits::eTransferDst, gpu::MemoryUse::readback,
-                                                    "test readback");
-    // Where the state's memory is host-readable (lavapipe) the frames alternate between reading it
-    // in place and the copy; elsewhere (a discrete GPU, the test layer) every frame copies.
+    gpu::GpuSolver gpu(ctx(), model);
+    sim::CpuSolver cpu(model, sim::Backend::scalar, 1);
+    EXPECT_EQ(gpu.pitch(), gpu::row_pitch(static_cast<std::size_t>(model.cols)));
+    EXPECT_EQ(gpu.stride(), gpu::state_stride(static_cast<std::size_t>(model.rows) * gpu.pitch()));
+    const sim::PerturbationTable splash =
+        sim::tabulate(sim::Perturbation{.row = 8, .col = 20.5, .radius = 1.5, .amplitude = 0.7}, model);
     int frame = 0;
     for (const std::int64_t steps : {1, 5, 0, 3, 2, 1}) {
-      const bool in_place = framed.host_state() && frame++ % 2 == 1;
-      framed.advance_for_frame(steps, in_place ? nullptr : &readback);
-      // What the CPU reads now, before any other command.
-      const float* u = framed.host_state();
-      std::vector<float> seen(3 * stride);
-      if (!in_place) {
-        readback.invalidate(ctx());
-        u = static_cast<const float*>(readback.mapped);
+      if (frame++ % 2 == 0) {
+        gpu.perturb(splash);
+        cpu.perturb(splash);
       }
-      std::memcpy(seen.data(), u, seen.size() * sizeof(float));
-      plain.advance(steps);
-      ASSERT_EQ(framed.steps_done(), plain.steps_done());
-      const sim::WaterState a = framed.read_state(), b = plain.read_state();
-      EXPECT_EQ(sim::state_hash(a, model), sim::state_hash(b, model)) << "after " << plain.steps_done() << " steps";
-      // Row i of component c at c * stride + i * pitch; the padding after each row stays +0.
+      gpu.advance(steps);
+      cpu.advance(steps);
+      ASSERT_EQ(gpu.steps_done(), cpu.steps_done());
+      // What the host reads now, rows `pitch` apart; the padding after each row stays +0.
+      const sim::HostDisplacements u = gpu.displacements();
+      const sim::WaterState& want = cpu.state();
       const auto rows = static_cast<std::size_t>(model.rows), cols = static_cast<std::size_t>(model.cols);
-      const float* const want[3] = {a.ux.data(), a.uy.data(), a.uz.data()};
+      const float* const seen[3] = {u.ux, u.uy, u.uz};
+      const float* const wanted[3] = {want.ux.data(), want.uy.data(), want.uz.data()};
       int rows_differing = 0, padding_nonzero = 0;
       for (std::size_t c = 0; c < 3; ++c)
         for (std::size_t i = 0; i < rows; ++i) {
-          const float* row = seen.data() + c * stride + i * pitch;
-          rows_differing += std::memcmp(row, want[c] + i * cols, cols * sizeof(float)) != 0;
-          for (std::size_t j = cols; j < pitch; ++j) padding_nonzero += std::bit_cast<std::uint32_t>(row[j]) != 0u;
+          const float* row = seen[c] + i * u.pitch;
+          rows_differing += std::memcmp(row, wanted[c] + i * cols, cols * sizeof(float)) != 0;
+          for (std::size_t j = cols; j < u.pitch; ++j) padding_nonzero += std::bit_cast<std::uint32_t>(row[j]) != 0u;
         }
-      EXPECT_EQ(rows_differing, 0);
+      EXPECT_EQ(rows_differing, 0) << "after " << cpu.steps_done() << " steps";
       EXPECT_EQ(padding_nonzero, 0);
+      EXPECT_EQ(sim::state_hash(gpu.read_state(), model), sim::state_hash(want, model));
+      const sim::Normals na = gpu.normals(), nb = sim::compute_normals(want, model);
+      EXPECT_EQ(std::memcmp(na.x.data(), nb.x.data(), model.nodes() * sizeof(float)), 0);
+      EXPECT_EQ(std::memcmp(na.y.data(), nb.y.data(), model.nodes() * sizeof(float)), 0);
+      EXPECT_EQ(std::memcmp(na.z.data(), nb.z.data(), model.nodes() * sizeof(float)), 0);
     }
-    // The normals the last advance_for_frame() left (read back as they are) equal the plain
-    // solver's, computed now.
-    const sim::Normals na = framed.normals(), nb = plain.read_normals();
-    EXPECT_EQ(std::memcmp(na.x.data(), nb.x.data(), model.nodes() * sizeof(float)), 0);
-    EXPECT_EQ(std::memcmp(na.y.data(), nb.y.data(), model.nodes() * sizeof(float)), 0);
-    EXPECT_EQ(std::memcmp(na.z.data(), nb.z.data(), model.nodes() * sizeof(float)), 0);
   }
 }
 

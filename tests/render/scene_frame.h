@@ -21,14 +21,14 @@ inline Rgba render_scene_frame(const gpu::Context& ctx, const std::string& json,
   DrawnSession drawn(ctx, scene, {}, render::RenderTarget::kFormat);
   render::FrameLoop& loop = drawn.loop;
   std::optional<render::TreeDrawable> tree;
-  if (scene.tree) loop.add_drawable(tree.emplace(ctx, loop, *scene.tree, scene.wind));
+  if (scene.tree) loop.add_drawable(tree.emplace(ctx, loop, *scene.tree));
   render::BodyDrawable bodies(ctx, loop);
   loop.add_drawable(bodies);
   const render::RenderTarget target(ctx, width, height);
   drawn.session.advance(steps);
+  drawn.session.catch_up_wind();
   render::FrameView view;
   view.camera = loop.default_camera(width, height);
-  view.steps = 0;
   view.wait = true;
   view.effects = effects;
   loop.frame(target.frame_target(), view);

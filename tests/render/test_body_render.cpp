@@ -15,6 +15,7 @@
 #include "render/render_target.h"
 #include "render/sphere_mesh.h"
 #include "scene/scene.h"
+#include "scene/session_spec.h"
 #include "view/view_projection.h"
 
 namespace pond::test {
@@ -77,7 +78,6 @@ class BodyRenderTest : public GpuTest {
     view.lod_tolerance_px = tolerance;
     view.effects.reflections = reflections;
     view.effects.caustics = false;  // the bodies and the LOD's dents, not the floor's light
-    view.steps = 0;
     view.wait = true;
     d.loop.frame(target.frame_target(), view);
     drawn_ = s.bodies.drawn();
@@ -87,7 +87,7 @@ class BodyRenderTest : public GpuTest {
   // The pixel of the top half of body b's centre line (above the water whatever the dent).
   Pixel body_pixel(const sim::Session& s, std::size_t b) const {
     const sim::BodyState st = s.bodies().at(b);
-    const double h = s.model().spacing, r = s.scene().bodies.at(b).radius;
+    const double h = s.model().spacing, r = s.water().bodies.at(b).radius;
     return project(view_proj_.data(), {st.x * h, st.y * h + 0.5 * r, st.z * h}, kWidth, kHeight);
   }
 

@@ -22,6 +22,7 @@
 #include "render/render_target.h"
 #include "render/water_source.h"
 #include "scene/scene.h"
+#include "scene/session_spec.h"
 
 namespace pond::test {
 namespace {
@@ -71,14 +72,16 @@ class CausticsTest : public GpuTest {
   // The map of `json`'s water after `steps` steps, computed by the pass alone.
   Map map(const std::string& json, std::int64_t steps, sim::SolverChoice solver = {}) {
     const scene::Scene scene = scene::parse_scene(json, "test");
-    sim::Session session(scene, solver, gpu::gpu_solver_factory(ctx()));
+    gpu::GpuSolvers solvers(ctx());
+    sim::Session session(scene::session_spec(scene), solver, solvers.factory());
     session.advance(steps);
-    render::WaterSource water(ctx(), session.solver(), 1);
+    render::WaterSource water(ctx(), session, &solvers);
+    water.sync();
     const render::WaterSource::DrawBuffers b = water.prepare(0);
     render::CausticsPass pass(ctx(), session.model(), 1);
     pass.bind(0, *b.state, *b.normals);
     const std::array<double, 3> sun = unit(scene.lighting.sun);
-    const render::CausticsPush push = render::caustics_push(session.model(), sun, scene.view.floor_depth, b.stride, b.pitch);
+    const render::CausticsPush push = view::caustics_push(session.model(), sun, scene.view.floor_depth, b.stride, b.pitch);
     ctx().submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
       using S = vk::PipelineStageFlagBits2;
       using A = vk::AccessFlagBits2;
@@ -88,7 +91,7 @@ class CausticsTest : public GpuTest {
       cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &visible});
       pass.record(cmd, 0, push);
     });
-    return {pass.map(0).extent, pass.read_map(0), render::caustics_direct_share(sun)};
+    return {pass.map(0).extent, pass.read_map(0), view::caustics_direct_share(sun)};
   }
 
   Rgba render(const std::string& json, std::int64_t steps, bool caustics) {

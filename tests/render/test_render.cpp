@@ -77,7 +77,6 @@ class RenderTest : public GpuTest {
     // The goldens are the picture without caustics, as before they existed: `view.caustics`
     // false gives the old picture (test_caustics.cpp has the pictures with them).
     view.effects.caustics = c.caustics;
-    view.steps = 0;
     view.wait = true;
     last_ = loop.frame(target.frame_target(), view);
     return Rgba{kWidth, kHeight, target.read_rgba()};
@@ -148,22 +147,22 @@ TEST_F(RenderTest, CpuSolverDrawsTheSamePictureAndSwitchingCarriesTheState) {
   const render::RenderTarget target(ctx(), kWidth, kHeight);
   render::FrameView view;
   view.camera = loop.default_camera(kWidth, kHeight);
-  view.steps = 4;
   view.wait = true;
-  d.session.advance(8);
+  d.session.advance(12);
   loop.frame(target.frame_target(), view);   // 12 steps on the CPU
   d.session.set_solver({.gpu = true});
+  d.session.advance(4);
   loop.frame(target.frame_target(), view);   // 16 on the GPU
   d.session.set_solver({.gpu = false});
-  d.session.advance(4);
+  d.session.advance(8);
   loop.frame(target.frame_target(), view);   // 24 on the CPU
   EXPECT_EQ(d.session.steps_done(), 24);
   EXPECT_EQ(compare(gpu_img, Rgba{kWidth, kHeight, target.read_rgba()}, 0).share, 0.0);
 }
 
 // A splash added at run time is the scene's perturbation applied now: same picture.
-// The demo's light control: set_sun() on a running loop draws what a scene with that sun draws; a
-// zero or non-finite direction is refused by the scene file's own check, which the demo calls first.
+// The demo's light control: the session's set_sun() draws what a scene with that sun draws; a zero
+// or non-finite direction is refused by the scene file's own check, which the demo calls first.
 TEST_F(RenderTest, SetSunEqualsTheSceneLightAndRefusesZero) {
   const std::array<double, 3> low_sun{0.8, 0.25, 0.3};
   scene::Scene scene = scene::load_scene("");
@@ -174,7 +173,7 @@ TEST_F(RenderTest, SetSunEqualsTheSceneLightAndRefusesZero) {
 
   DrawnSession d(ctx(), scene::load_scene(""), {}, render::RenderTarget::kFormat);
   EXPECT_NO_THROW(scene::check_sun(low_sun));
-  d.loop.set_sun(low_sun);
+  d.session.set_sun(low_sun);
   EXPECT_THROW(scene::check_sun({0.0, 0.0, 0.0}), InputError);
   EXPECT_THROW(scene::check_sun({std::nan(""), 1.0, 0.0}), InputError);
   EXPECT_EQ(compare(expected, draw(d, {.steps = 24}), 0).share, 0.0);
@@ -188,8 +187,8 @@ TEST_F(RenderTest, RunTimeSplashEqualsTheScenePerturbation) {
   EXPECT_EQ(compare(render({.steps = 24}), draw(d, {.steps = 24}), 0).share, 0.0);
 }
 
-// The demo simulates a frame for the swapchain's size and may draw it into a recreated swapchain of
-// another size: the passes simulate() submitted for the old size (the reflection's target among
+// The demo prepares a frame for the swapchain's size and may draw it into a recreated swapchain of
+// another size: the passes prepare() submitted for the old size (the reflection's target among
 // them) are made again for the new one, and the picture is the one drawn at that size directly.
 TEST_F(RenderTest, AFrameSimulatedForAnotherSizeIsDrawnAsAtItsOwn) {
   const scene::Scene scene = scene::parse_scene(std::string(scene::default_scene_json()), "test");
@@ -199,10 +198,9 @@ TEST_F(RenderTest, AFrameSimulatedForAnotherSizeIsDrawnAsAtItsOwn) {
     d.session.advance(24);
     render::FrameView view;  // every effect on
     view.camera = d.loop.default_camera(kWidth, kHeight);
-    view.steps = 0;
     view.wait = true;
     if (resized) {
-      d.loop.simulate(view, {kWidth / 2, kHeight + 40});
+      d.loop.prepare(view, {kWidth / 2, kHeight + 40});
       d.loop.draw(target.frame_target());
     } else {
       d.loop.frame(target.frame_target(), view);

@@ -36,14 +36,14 @@ class TreeLodRenderTest : public GpuTest {
     const tree::TreeSpec tree = *scene.tree;
     DrawnSession drawn(ctx(), scene, {}, render::RenderTarget::kFormat);
     render::FrameLoop& loop = drawn.loop;
-    render::TreeDrawable drawable(ctx(), loop, tree, scene.wind);
+    render::TreeDrawable drawable(ctx(), loop, tree);
     drawable.set_level_of_detail(lod);
     if (with_tree) loop.add_drawable(drawable);
     const render::RenderTarget target(ctx(), kWidth, kHeight);
     drawn.session.advance(25);
+    drawn.session.catch_up_wind();
     render::FrameView view;
     view.camera = camera ? *camera : loop.default_camera(kWidth, kHeight);
-    view.steps = 0;
     view.wait = true;
     view.effects.shadows = false;  // the tree's own pixels: its shadow's level of detail is the map's
     loop.frame(target.frame_target(), view);

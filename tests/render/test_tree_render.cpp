@@ -162,19 +162,19 @@ class TreeRenderTest : public GpuTest {
     const scene::Scene scene = scene::parse_scene(json, "test");
     DrawnSession drawn(ctx(), scene, {}, render::RenderTarget::kFormat);
     render::FrameLoop& loop = drawn.loop;
-    render::TreeDrawable tree(ctx(), loop, *scene.tree, scene.wind);
+    render::TreeDrawable tree(ctx(), loop, *scene.tree);
     loop.add_drawable(tree);
     const render::RenderTarget target(ctx(), kWidth, kHeight);
     drawn.session.advance(steps);
+    drawn.session.catch_up_wind();
     render::FrameView view;
     view.camera = loop.default_camera(kWidth, kHeight);
-    view.steps = 0;
     view.wait = true;
     for (int f = 0; f < frames; ++f) {
       const render::FrameStats s = loop.frame(target.frame_target(), view);
       if (stats) *stats = s;
     }
-    EXPECT_NEAR(tree.wind_time(), static_cast<double>(steps) * scene.physics.dt, 1e-9);
+    EXPECT_NEAR(drawn.session.wind().time(), static_cast<double>(steps) * scene.physics.dt, 1e-9);
     return Rgba{kWidth, kHeight, target.read_rgba()};
   }
 };
@@ -217,13 +217,17 @@ TEST_F(TreeRenderTest, InstancesSwayOutOfStep) {
       tree_scene(R"({"depth": 5, "positions": [[31, 31], [34, 35]]})", kWind), "test");
   DrawnSession drawn(ctx(), scene, {}, render::RenderTarget::kFormat);
   render::FrameLoop& loop = drawn.loop;
-  render::TreeDrawable tree(ctx(), loop, *scene.tree, scene.wind);
+  render::TreeDrawable tree(ctx(), loop, *scene.tree);
   loop.add_drawable(tree);
   const render::RenderTarget target(ctx(), kWidth, kHeight);
   render::FrameView view;
   view.camera = loop.default_camera(kWidth, kHeight);
   view.wait = true;
-  for (int f = 0; f < 10; ++f) loop.frame(target.frame_target(), view);
+  for (int f = 0; f < 10; ++f) {  // a step a frame, the wind's clock the simulated time
+    drawn.session.advance(1);
+    drawn.session.catch_up_wind();
+    loop.frame(target.frame_target(), view);
+  }
   const auto frames = tree.wind_frames();
   ASSERT_EQ(frames.size(), 2u);
   EXPECT_NE(frames[0].wind.x, frames[1].wind.x);
@@ -231,29 +235,31 @@ TEST_F(TreeRenderTest, InstancesSwayOutOfStep) {
   EXPECT_EQ(tree.stats().instances, 2u);
 }
 
-// The controls change what the next frame draws; regrow gives another tree of the same size.
+// The controls (the tree's and the session's wind) change what the next frame draws; regrow gives
+// another tree of the same size.
 TEST_F(TreeRenderTest, ControlsAndRegrow) {
   const scene::Scene scene = scene::parse_scene(tree_scene(kTubes, kCalm), "test");
   DrawnSession drawn(ctx(), scene, {}, render::RenderTarget::kFormat);
   render::FrameLoop& loop = drawn.loop;
-  render::TreeDrawable tree(ctx(), loop, *scene.tree, scene.wind);
+  render::TreeDrawable tree(ctx(), loop, *scene.tree);
   loop.add_drawable(tree);
   const render::RenderTarget target(ctx(), kWidth, kHeight);
   render::FrameView view;
   view.camera = loop.default_camera(kWidth, kHeight);
   view.wait = true;
+  drawn.session.advance(1);
+  drawn.session.catch_up_wind();
   loop.frame(target.frame_target(), view);
   const Rgba before{kWidth, kHeight, target.read_rgba()};
-  tree.set_strength(12);  // clamped to 9
-  EXPECT_EQ(tree.wind().strength, 9.0);
-  tree.set_wind_direction(1.0);
+  drawn.session.set_wind_strength(12);  // clamped to 9
+  EXPECT_EQ(drawn.session.wind().spec().strength, 9.0);
+  drawn.session.set_wind_direction(1.0);
   tree.set_bend_mode(tree::TreeBend::keep_length);
   tree.set_draw_mode(tree::TreeDraw::lines);
   tree.set_leaves(false);
-  tree.set_manual_clock();
-  tree.advance_clock(2.0);
+  drawn.session.advance_wind(2.0);  // the demo's clock: wall time
   loop.frame(target.frame_target(), view);
-  EXPECT_NEAR(tree.wind_time(), 2.0 + 0.4, 1e-9);  // the first frame's step, then 2 s by hand
+  EXPECT_NEAR(drawn.session.wind().time(), 2.0 + 0.4, 1e-9);  // the first frame's step, then 2 s by hand
   EXPECT_EQ(tree.wind_frames().at(0).bend_mode, sh::kTreeBendKeepLength);
   const Rgba after{kWidth, kHeight, target.read_rgba()};
   EXPECT_GT(compare(before, after, kGoldenLevels).share, 0.002);
@@ -293,7 +299,7 @@ TEST(TreeRipples, DeterministicOnWaterAndOnlyInWind) {
   const scene::Scene scene = scene::parse_scene(tree_scene("{}", R"({"strength": 6, "ripples": true})"), "test");
   const sim::WaterModel model = sim::build_model(scene);
   const tree::NoiseTable noise = tree::make_noise_table(1);
-  const auto user = sim::scene_user_wind(scene.wind);
+  const auto user = tree::user_wind(scene.wind);
   const auto a = sim::wind_ripples(model, noise, user, 1, 0, 300);
   const auto b = sim::wind_ripples(model, noise, user, 1, 0, 300);
   ASSERT_EQ(a.size(), 100u);  // one every kRippleEverySteps

@@ -10,6 +10,7 @@
 
 #include "core/errors.h"
 #include "scene/scene.h"
+#include "scene/session_spec.h"
 #include "sim/cpu_solver.h"
 #include "sim/diagnostics.h"
 #include "sim/session.h"
@@ -48,7 +49,7 @@ std::string edit_message(Session& s, const Physics& p) {
 }
 
 TEST(Session, AdvancesAsTheSolverDoes) {
-  Session s(scene::load_scene(""), kScalar);
+  Session s(scene::session_spec(scene::load_scene("")), kScalar);
   s.advance(300);
   s.advance(0);
   s.advance(200);
@@ -57,7 +58,7 @@ TEST(Session, AdvancesAsTheSolverDoes) {
 }
 
 TEST(Session, PhysicsEditsAreCheckedLikeSceneFiles) {
-  Session s(scene::load_scene(""), kScalar);
+  Session s(scene::session_spec(scene::load_scene("")), kScalar);
   s.advance(10);
   const std::uint64_t before = hash(s);
   struct Case {
@@ -78,7 +79,7 @@ TEST(Session, PhysicsEditsAreCheckedLikeSceneFiles) {
   }
   // Refused edits change nothing; an accepted one rebuilds the model with the state carried over.
   EXPECT_EQ(hash(s), before);
-  EXPECT_EQ(s.scene().physics.dt, 0.4);
+  EXPECT_EQ(s.water().physics.dt, 0.4);
   EXPECT_EQ(edit_message(s, {.dt = 2.0, .substeps = 4}), "");
   EXPECT_EQ(s.model().substeps, 4);
   EXPECT_EQ(s.steps_done(), 10);
@@ -90,14 +91,14 @@ TEST(Session, SplashEqualsTheScenePerturbation) {
   const Perturbation p = calm.perturbations.at(0);
   ASSERT_EQ(p.step, 0);
   calm.perturbations.clear();
-  Session s(calm, kScalar);
+  Session s(scene::session_spec(calm), kScalar);
   s.splash(p);
   s.advance(40);
   EXPECT_EQ(hash(s), solver_hash(scene::load_scene(""), 40));
 }
 
 TEST(Session, SwitchingBackendsCarriesTheStateAndResetReplays) {
-  Session s(scene::load_scene(""), kScalar);
+  Session s(scene::session_spec(scene::load_scene("")), kScalar);
   s.advance(100);
   s.set_solver({.gpu = false, .backend = best_backend(), .threads = 2});
   s.advance(100);
@@ -112,9 +113,9 @@ TEST(Session, SwitchingBackendsCarriesTheStateAndResetReplays) {
 }
 
 TEST(Session, NewConstraintsHoldTheCarriedWaterAtOnce) {
-  Session s(scene::load_scene(""), kScalar);
+  Session s(scene::session_spec(scene::load_scene("")), kScalar);
   s.advance(30);
-  WaterSpec walled = s.scene();
+  WaterSpec walled = s.water();
   walled.border = NodeKind::fixed;
   walled.constraints = {{.kind = NodeKind::fixed, .row0 = 20, .row1 = 30, .col0 = 20, .col1 = 30}};
   s.set_water(walled);
@@ -134,12 +135,12 @@ TEST(Session, WindRipplesLandPastTheirHorizon) {
   // What `pond render` used to do: every ripple up to the end, with the scene's perturbations.
   WaterSpec all = scene;
   add_wind_ripples(all, scene.wind, 40000);
-  Session s(scene, kScalar);
+  Session s(scene::session_spec(scene), kScalar);
   s.advance(16000);
   s.advance(1000);  // past the first horizon (16384): the solver is rebuilt with the next ripples
   EXPECT_EQ(hash(s), solver_hash(all, 17000));
   const std::uint64_t without = [] {
-    Session calm(scene::parse_scene(R"({"grid": {"rows": 12, "cols": 14}, "wind": {"strength": 7}})", "test"), kScalar);
+    Session calm(scene::session_spec(scene::parse_scene(R"({"grid": {"rows": 12, "cols": 14}, "wind": {"strength": 7}})", "test")), kScalar);
     calm.advance(17000);
     return hash(calm);
   }();
@@ -147,7 +148,7 @@ TEST(Session, WindRipplesLandPastTheirHorizon) {
 }
 
 TEST(Session, BlowUpIsReportedNamingTheNode) {
-  Session s(scene::load_scene(""), kScalar);
+  Session s(scene::session_spec(scene::load_scene("")), kScalar);
   WaterState w = s.state();
   w.vy[3 * 50 + 7] = std::numeric_limits<float>::infinity();
   s.set_state(w, 5);
@@ -167,7 +168,7 @@ TEST(Session, BodiesAreAddedDraggedReleasedAndRemoved) {
   scene::Scene scene = scene::parse_scene(R"({"grid": {"rows": 33, "cols": 33},
     "perturbations": [{"step": 0, "row": 16, "col": 16, "radius": 2.0, "amplitude": 1.0}],
     "bodies": [{"motion": "floating", "radius": 2.0, "mass": 20, "position": [8, 2, 8]}]})", "f");
-  Session session(scene, kScalar);
+  Session session(scene::session_spec(scene), kScalar);
   session.advance(20);
   const WaterState before = session.state();
   BodySpec ball;
@@ -201,20 +202,20 @@ TEST(Session, BodiesAreAddedDraggedReleasedAndRemoved) {
   EXPECT_NEAR(session.bodies()[1].y, 1.0f, 1e-4);
   session.release_body(1, {0.5, 0.0, 0.0});
   EXPECT_FALSE(session.held(1));
-  EXPECT_EQ(session.scene().bodies[1].motion, BodyMotion::floating);
+  EXPECT_EQ(session.water().bodies[1].motion, BodyMotion::floating);
   session.advance(4);
   EXPECT_GT(session.bodies()[1].x, 20.5f) << "released with the drag's velocity";
 
   session.remove_body(0);
   ASSERT_EQ(session.bodies().size(), 1u);
-  EXPECT_EQ(session.scene().bodies[0].radius, 2.5);
+  EXPECT_EQ(session.water().bodies[0].radius, 2.5);
   session.reset();
   EXPECT_EQ(session.bodies().size(), 1u);  // the edits stay; the state starts over
   EXPECT_EQ(session.steps_done(), 0);
 }
 
 TEST(Session, GpuWithoutAFactoryIsRefused) {
-  EXPECT_THROW(Session(scene::load_scene(""), SolverChoice{.gpu = true}), InternalError);
+  EXPECT_THROW(Session(scene::session_spec(scene::load_scene("")), SolverChoice{.gpu = true}), InternalError);
 }
 
 }  // namespace

@@ -10,12 +10,12 @@ BodyRequests draw_bodies_panel(const sim::Session& session, float width) {
   ImGui::SetNextWindowPos(ImVec2(width - kWidth - 10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(kWidth, 0), ImGuiCond_FirstUseEver);
   // Collapsed at first, like the panel's closed sections: on lavapipe every panel pixel costs.
-  ImGui::SetNextWindowCollapsed(session.scene().bodies.empty(), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowCollapsed(session.water().bodies.empty(), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("bodies (O: drop a ball)")) {
     ImGui::End();
     return req;
   }
-  const auto& bodies = session.scene().bodies;
+  const auto& bodies = session.water().bodies;
   if (bodies.empty()) ImGui::TextDisabled("no bodies: O drops a ball where the cursor points");
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const sim::BodySpec& spec = bodies[b];

@@ -14,7 +14,7 @@ constexpr double kVelocityBlend = 0.5;
 
 std::optional<std::size_t> BodyGrab::grab(const sim::Session& session, const Ray& ray) {
   const std::vector<sim::BodyState> states = session.bodies();
-  const auto& specs = session.scene().bodies;
+  const auto& specs = session.water().bodies;
   const double h = session.model().spacing;
   std::vector<Sphere> spheres;
   for (std::size_t b = 0; b < states.size() && b < specs.size(); ++b)
@@ -38,7 +38,7 @@ void BodyGrab::drag(sim::Session& session, const lod::Camera& camera, std::int64
   const std::array<double, 3> target =
       under ? std::array<double, 3>{(*under)[0] + offset_[0], height_, (*under)[2] + offset_[2]} : *last_target_;
   if (steps > 0) {
-    const double seconds = static_cast<double>(steps) * session.scene().physics.dt;
+    const double seconds = static_cast<double>(steps) * session.water().physics.dt;
     for (int k = 0; k < 3; ++k)
       velocity_[k] = (1 - kVelocityBlend) * velocity_[k] + kVelocityBlend * (target[k] - (*last_target_)[k]) / seconds;
   }

@@ -41,7 +41,7 @@ struct DemoSettings {
   bool vsync = true;
   bool show_panel = true;
   bool show_help = false;
-  std::array<double, 3> sun{};  // toward the sun; edited in the panel, applied with FrameLoop::set_sun
+  std::array<double, 3> sun{};  // toward the sun; edited in the panel, applied with sim::Session::set_sun
   SplashSettings splash;
   RainSettings rain;
   std::string message;  // the last notice (screenshot saved, unstable parameters refused, …)
@@ -52,6 +52,7 @@ struct DemoStats {
   double fps = 0;        // smoothed
   double frame_ms = 0;   // smoothed wall time per frame
   render::FrameStats last;  // the frame loop's split of the last frame
+  double simulate_ms = 0;   // the last frame's session.advance (the GPU's: recording and submitting)
   std::int64_t steps_done = 0;
   std::string device, solver, present_mode;
   int width = 0, height = 0;

@@ -16,13 +16,13 @@ bool input_double(const char* label, double& value, double step, const char* for
 }
 
 // The wind tree: the same controls as right drag, keys 1-9 and double-click.
-void draw_tree_section(render::TreeDrawable& tree) {
+void draw_tree_section(render::TreeDrawable& tree, sim::Session& session) {
   if (!ImGui::CollapsingHeader("Wind tree")) return;
-  float strength = static_cast<float>(tree.wind().strength);
-  if (ImGui::SliderFloat("wind strength (1-9)", &strength, 0.0f, 9.0f, "%.1f")) tree.set_strength(strength);
-  float direction = static_cast<float>(tree.wind().direction_deg);
+  float strength = static_cast<float>(session.wind().spec().strength);
+  if (ImGui::SliderFloat("wind strength (1-9)", &strength, 0.0f, 9.0f, "%.1f")) session.set_wind_strength(strength);
+  float direction = static_cast<float>(session.wind().spec().direction_deg);
   if (ImGui::SliderFloat("wind direction (right drag)", &direction, -180.0f, 180.0f, "%.0f deg"))
-    tree.set_wind_direction(direction * std::numbers::pi / 180.0);
+    session.set_wind_direction(direction * std::numbers::pi / 180.0);
   int bend = tree.spec().bend == tree::TreeBend::article ? 0 : 1;
   ImGui::Text("bend:");
   ImGui::SameLine();
@@ -61,7 +61,7 @@ bool edit_sun(std::array<double, 3>& sun) {
 
 }  // namespace
 
-PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, render::TreeDrawable* tree) {
+PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, render::TreeDrawable* tree, sim::Session& session) {
   PanelRequests req;
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
@@ -75,7 +75,8 @@ PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, render::TreeDr
   }
   ImGui::Text("%.1f FPS  %.2f ms/frame  %dx%d  %s", stats.fps, stats.frame_ms, stats.width, stats.height,
               stats.present_mode.c_str());
-  ImGui::Text("simulate %.2f  LOD %.2f  draw %.2f ms", stats.last.simulate_ms, stats.last.lod_ms, stats.last.draw_ms);
+  ImGui::Text("simulate %.2f  wait %.2f  LOD %.2f  draw %.2f ms", stats.simulate_ms, stats.last.wait_ms,
+              stats.last.lod_ms, stats.last.draw_ms);
   const double share = stats.last.full_triangles ? 100.0 * static_cast<double>(stats.last.triangles) /
                                                        static_cast<double>(stats.last.full_triangles)
                                                  : 0.0;
@@ -152,7 +153,7 @@ PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, render::TreeDr
     input_double("drops / frame", s.rain.drops_per_frame, 0.1, "%.2f");
     input_double("drop velocity", s.rain.amplitude, 0.1, "%.2f");
   }
-  if (tree) draw_tree_section(*tree);
+  if (tree) draw_tree_section(*tree, session);
   if (!s.message.empty()) ImGui::TextWrapped("%s", s.message.c_str());
   ImGui::End();
   return req;

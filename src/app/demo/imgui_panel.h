@@ -3,6 +3,7 @@
 // frame, LOD tolerance, splash and rain settings, the wind tree, stats) and the help overlay.
 #include "app/demo/demo_settings.h"
 #include "render/tree_drawable.h"
+#include "sim/session.h"
 
 namespace pond::app::demo {
 
@@ -17,8 +18,10 @@ struct PanelRequests {
 };
 
 // Builds this frame's windows (between ImGui::NewFrame and ImGui::Render). `tree` is the scene's
-// wind tree, or null: its controls act on it directly (they only change what the next frame uses).
-PanelRequests draw_panel(DemoSettings& settings, const DemoStats& stats, render::TreeDrawable* tree);
+// wind tree, or null: its controls act on it and on the session's wind directly (they only change
+// what the next frame uses).
+PanelRequests draw_panel(DemoSettings& settings, const DemoStats& stats, render::TreeDrawable* tree,
+                         sim::Session& session);
 void draw_help_overlay(bool& open);
 
 }  // namespace pond::app::demo

@@ -134,7 +134,7 @@ ImGuiRenderer::ImGuiRenderer(const gpu::Context& ctx, vk::Format color_format)
   const vk::DynamicState dynamic_states[] = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
   const vk::PipelineDynamicStateCreateInfo dynamic{.dynamicStateCount = 2, .pDynamicStates = dynamic_states};
   const vk::PipelineRenderingCreateInfo rendering{.colorAttachmentCount = 1, .pColorAttachmentFormats = &color_format,
-                                                  .depthAttachmentFormat = render::FrameLoop::kDepthFormat};
+                                                  .depthAttachmentFormat = render::kDepthFormat};
   pipeline_ = vk::raii::Pipeline(ctx.device(), nullptr,
                                  vk::GraphicsPipelineCreateInfo{.pNext = &rendering, .stageCount = 2, .pStages = stages,
                                                                 .pVertexInputState = &vertex_input,

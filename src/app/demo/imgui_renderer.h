@@ -12,7 +12,8 @@
 
 #include "gpu/buffer.h"
 #include "gpu/context.h"
-#include "render/frame_loop.h"
+#include "render/frame_constants.h"
+#include "render/pass_drawable.h"
 #include "render/render_target.h"
 
 namespace pond::app::demo {
@@ -23,9 +24,8 @@ class ImGuiRenderer final : public render::PassDrawable {
   ImGuiRenderer(const gpu::Context& ctx, vk::Format color_format);
 
   void draw(const render::FrameInfo&) override {}
-  // Copies ImGui::GetDrawData() into the slot's buffers and draws it. Not in prepare(): the loop
-  // prepares a frame in simulate(), and the demo may build its panel again before the frame is
-  // drawn (after a failed acquire).
+  // Copies ImGui::GetDrawData() into the slot's buffers and draws it. Not in prepare(): the demo
+  // may build its panel again between the frame's halves (after a failed acquire).
   void draw_occluding(const render::FrameInfo& frame) override;
 
  private:
@@ -45,7 +45,7 @@ class ImGuiRenderer final : public render::PassDrawable {
   vk::raii::DescriptorSet set_ = nullptr;
   vk::raii::PipelineLayout layout_ = nullptr;
   vk::raii::Pipeline pipeline_ = nullptr;
-  std::array<SlotBuffers, render::FrameLoop::kFramesInFlight> slots_;
+  std::array<SlotBuffers, render::kFramesInFlight> slots_;
 };
 
 }  // namespace pond::app::demo

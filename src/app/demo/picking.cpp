@@ -53,12 +53,13 @@ Ray pixel_ray(const lod::Camera& camera, double x, double y) {
   return Ray{camera.eye, normalized(d)};
 }
 
-std::optional<SurfaceHit> intersect_surface(const Ray& ray, const sim::WaterModel& model, const sim::WaterState& state) {
+std::optional<SurfaceHit> intersect_surface(const Ray& ray, const sim::WaterModel& model,
+                                           const sim::HostDisplacements& at) {
   const int rows = model.rows, cols = model.cols;
   const double h = model.spacing;
   auto node = [&](int i, int j) {
-    const std::size_t n = static_cast<std::size_t>(i) * cols + j;
-    return Vec{(static_cast<double>(j) + state.ux[n]) * h, state.uy[n] * h, (static_cast<double>(i) + state.uz[n]) * h};
+    const std::size_t n = static_cast<std::size_t>(i) * at.pitch + static_cast<std::size_t>(j);
+    return Vec{(static_cast<double>(j) + at.ux[n]) * h, at.uy[n] * h, (static_cast<double>(i) + at.uz[n]) * h};
   };
   std::optional<SurfaceHit> best;
   for (int i = 0; i + 1 < rows; ++i) {

@@ -10,7 +10,7 @@
 
 #include "lod/camera_budget.h"
 #include "sim/model.h"
-#include "sim/state.h"
+#include "sim/solver.h"
 
 namespace pond::app::demo {
 
@@ -27,9 +27,10 @@ struct SurfaceHit {
   double distance = 0;       // along the ray, world units
 };
 
-// The nearest hit of `ray` with the surface of `state` (both triangles of every cell, world
-// units), or nothing when the ray misses the water.
-std::optional<SurfaceHit> intersect_surface(const Ray& ray, const sim::WaterModel& model, const sim::WaterState& state);
+// The nearest hit of `ray` with the surface of the displacements `at` (the solver's on the host:
+// both triangles of every cell, world units), or nothing when the ray misses the water.
+std::optional<SurfaceHit> intersect_surface(const Ray& ray, const sim::WaterModel& model,
+                                           const sim::HostDisplacements& at);
 
 struct Sphere {
   std::array<double, 3> centre;  // world units

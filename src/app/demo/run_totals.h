@@ -11,26 +11,26 @@ namespace pond::app::demo {
 
 struct RunTotals {
   std::int64_t drawn = 0;  // frames drawn, the first included
-  double total_ms = 0, acquire_ms = 0, present_ms = 0;
+  double total_ms = 0, simulate_ms = 0, acquire_ms = 0, present_ms = 0;
   render::FrameStats sum{};
 
-  void add(double frame_ms, const render::FrameStats& last, double acquire, double present) {
+  void add(double frame_ms, const render::FrameStats& last, double simulate, double acquire, double present) {
     if (drawn++ == 0) return;
     total_ms += frame_ms;
-    sum.simulate_ms += last.simulate_ms, sum.lod_ms += last.lod_ms, sum.draw_ms += last.draw_ms;
+    sum.wait_ms += last.wait_ms, sum.lod_ms += last.lod_ms, sum.draw_ms += last.draw_ms;
     sum.triangles += last.triangles;
-    acquire_ms += acquire, present_ms += present;
+    simulate_ms += simulate, acquire_ms += acquire, present_ms += present;
   }
 
-  // "pond demo: N frames at WxH on DEVICE, SOLVER, MODE: ms/frame (FPS); simulate, LOD, draw, ..."
+  // "pond demo: N frames at WxH on DEVICE, SOLVER, MODE: ms/frame (FPS); simulate, wait, LOD, draw, ..."
   void print(unsigned width, unsigned height, const std::string& device, const std::string& solver,
              const std::string& present_mode, std::size_t full_triangles) const {
     if (drawn < 2) return;
     const double n = static_cast<double>(drawn - 1);
-    std::printf("pond demo: %lld frames at %ux%u on %s, %s, %s: %.2f ms/frame (%.1f FPS); simulate %.2f, LOD %.2f, "
-                "draw %.2f, acquire %.2f, present %.2f ms; %.0f of %zu triangles\n",
+    std::printf("pond demo: %lld frames at %ux%u on %s, %s, %s: %.2f ms/frame (%.1f FPS); simulate %.2f, wait %.2f, "
+                "LOD %.2f, draw %.2f, acquire %.2f, present %.2f ms; %.0f of %zu triangles\n",
                 static_cast<long long>(drawn), width, height, device.c_str(), solver.c_str(), present_mode.c_str(),
-                total_ms / n, 1000.0 * n / total_ms, sum.simulate_ms / n, sum.lod_ms / n, sum.draw_ms / n,
+                total_ms / n, 1000.0 * n / total_ms, simulate_ms / n, sum.wait_ms / n, sum.lod_ms / n, sum.draw_ms / n,
                 acquire_ms / n, present_ms / n, static_cast<double>(sum.triangles) / n, full_triangles);
   }
 };

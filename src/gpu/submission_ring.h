@@ -1,0 +1,54 @@
+#pragma once
+// The GPU solver's submissions: a few command buffers, each with its fence and the host-readable
+// copies of what its submission left (the displacements, the bodies) and the splashes it applied,
+// used in turn. Recording the next one never waits for the last: a frame's compute is submitted
+// and the CPU goes on; it waits once, when it reads what the last submission left.
+#include <array>
+#include <cstdint>
+#include <string>
+
+#include "gpu/buffer.h"
+#include "gpu/context.h"
+
+namespace pond::gpu {
+
+struct Submission {
+  vk::raii::CommandBuffer cmd = nullptr;
+  vk::raii::Fence done = nullptr;
+  Buffer displacements;  // readback: ux | uy | uz as in the state (empty where read in place)
+  Buffer bodies;         // readback: the bodies' states (empty without bodies)
+  Buffer splashes;       // upload: the entries of the splashes it applies (grown when needed)
+  mutable bool in_flight = false;
+  // Its copies invalidated since it finished (each once: the host reads them several times).
+  mutable bool displacements_seen = false, bodies_seen = false;
+};
+
+class SubmissionRing {
+ public:
+  static constexpr std::uint32_t kSize = 3;
+
+  // `displacement_bytes` 0: no displacement copies (the state is read in place).
+  SubmissionRing(const Context& ctx, vk::DeviceSize displacement_bytes, vk::DeviceSize body_bytes);
+
+  // The next submission's entry, its previous use finished (polled; waited for only if it still
+  // runs), its command buffer reset and begun.
+  Submission& begin();
+  std::uint32_t index_of(const Submission& s) const { return static_cast<std::uint32_t>(&s - entries_.data()); }
+  // Ends and submits the command buffer begun last; its entry becomes last().
+  void submit();
+  // The entry submitted last, finished (null before any): polls its fence, waits only while it runs.
+  const Submission* finish_last() const;
+  // Every entry finished.
+  void finish_all() const;
+
+ private:
+  void finish(const Submission& s) const;
+
+  const Context& ctx_;
+  vk::raii::CommandPool pool_ = nullptr;
+  std::array<Submission, kSize> entries_;
+  std::uint32_t next_ = 0;
+  int last_ = -1;
+};
+
+}  // namespace pond::gpu

@@ -1,0 +1,81 @@
+#include "render/frame_data.h"
+
+#include <string>
+
+#include "core/errors.h"
+#include "render/render_layout.h"
+
+namespace pond::render {
+
+FrameRing::FrameRing(const gpu::Context& ctx, vk::DescriptorSetLayout set_layout) : ctx_(ctx) {
+  pool_ = vk::raii::CommandPool(ctx.device(), vk::CommandPoolCreateInfo{
+                                                  .flags = vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
+                                                  .queueFamilyIndex = ctx.queue_family()});
+  const vk::DescriptorPoolSize sizes[] = {{.type = vk::DescriptorType::eUniformBuffer, .descriptorCount = kFramesInFlight},
+                                          {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 2 * kFramesInFlight},
+                                          {.type = vk::DescriptorType::eCombinedImageSampler,
+                                           .descriptorCount = 3 * kFramesInFlight}};
+  descriptor_pool_ = vk::raii::DescriptorPool(
+      ctx.device(), vk::DescriptorPoolCreateInfo{.flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
+                                                 .maxSets = kFramesInFlight, .poolSizeCount = 3, .pPoolSizes = sizes});
+  vk::raii::CommandBuffers cmds(ctx.device(), vk::CommandBufferAllocateInfo{.commandPool = *pool_,
+                                                                            .level = vk::CommandBufferLevel::ePrimary,
+                                                                            .commandBufferCount = 2 * kFramesInFlight});
+  for (std::uint32_t k = 0; k < kFramesInFlight; ++k) {
+    FrameData& f = frames_[k];
+    f.early = std::move(cmds[2 * k]);
+    f.main = std::move(cmds[2 * k + 1]);
+    f.early_done = vk::raii::Fence(ctx.device(), vk::FenceCreateInfo{.flags = vk::FenceCreateFlagBits::eSignaled});
+    f.done = vk::raii::Fence(ctx.device(), vk::FenceCreateInfo{.flags = vk::FenceCreateFlagBits::eSignaled});
+    f.uniforms = gpu::create_buffer(ctx, sizeof(WaterFrame), vk::BufferUsageFlagBits::eUniformBuffer,
+                                    gpu::MemoryUse::upload, "water frame uniforms, slot " + std::to_string(k));
+    f.set = std::move(vk::raii::DescriptorSets(ctx.device(), vk::DescriptorSetAllocateInfo{
+                                                                 .descriptorPool = *descriptor_pool_,
+                                                                 .descriptorSetCount = 1, .pSetLayouts = &set_layout})[0]);
+  }
+}
+
+void write_frame_set(const gpu::Context& ctx, const FrameData& f, const gpu::Buffer& state, const gpu::Buffer& normals,
+                     vk::ImageView caustics_map, vk::Sampler nearest, vk::Sampler shadow) {
+  using DT = vk::DescriptorType;
+  constexpr auto kRead = vk::ImageLayout::eShaderReadOnlyOptimal;
+  const vk::DescriptorBufferInfo infos[] = {f.uniforms.whole(), state.whole(), normals.whole()};
+  const vk::DescriptorImageInfo images[] = {{.sampler = nearest, .imageView = *f.reflection.color.view, .imageLayout = kRead},
+                                            {.sampler = shadow, .imageView = *f.shadow.view, .imageLayout = kRead},
+                                            {.sampler = nearest, .imageView = caustics_map, .imageLayout = kRead}};
+  const vk::WriteDescriptorSet writes[] = {
+      {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_FRAME, .descriptorCount = 1,
+       .descriptorType = DT::eUniformBuffer, .pBufferInfo = &infos[0]},
+      {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_STATE, .descriptorCount = 1,
+       .descriptorType = DT::eStorageBuffer, .pBufferInfo = &infos[1]},
+      {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_NORMALS, .descriptorCount = 1,
+       .descriptorType = DT::eStorageBuffer, .pBufferInfo = &infos[2]},
+      {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_REFLECTION, .descriptorCount = 1,
+       .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[0]},
+      {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_SHADOW, .descriptorCount = 1,
+       .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[1]},
+      {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_CAUSTICS, .descriptorCount = 1,
+       .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[2]}};
+  ctx.device().updateDescriptorSets(writes, nullptr);
+}
+
+void FrameRing::finish(std::uint32_t slot) const {
+  const FrameData& f = frames_[slot];
+  if (f.early_done.getStatus() == vk::Result::eSuccess && f.done.getStatus() == vk::Result::eSuccess) return;
+  const vk::Fence fences[] = {*f.early_done, *f.done};
+  if (ctx_.device().waitForFences(fences, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
+    throw RuntimeError("waiting for a frame failed");
+}
+
+void FrameRing::finish_all() const {
+  for (std::uint32_t k = 0; k < kFramesInFlight; ++k) finish(k);
+}
+
+void FrameRing::ensure_depth(std::uint32_t slot, vk::Extent2D extent) {
+  FrameData& f = frames_[slot];
+  if (*f.depth.image && f.depth.extent == extent) return;
+  f.depth = create_image(ctx_, extent, kDepthFormat, vk::ImageUsageFlagBits::eDepthStencilAttachment,
+                         vk::ImageAspectFlagBits::eDepth, "depth, slot " + std::to_string(slot));
+}
+
+}  // namespace pond::render

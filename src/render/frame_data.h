@@ -1,0 +1,57 @@
+#pragma once
+// One frame in flight's resources (vkguide's FrameData, Vulkan-Samples' RenderFrame): its command
+// buffers and fences, its uniforms and descriptor set, its depth buffer, the reflection's target
+// and the sun's shadow map; and the ring of kFramesInFlight of them the frame loop uses in turn, so
+// writing frame N+1's uniforms and indices never waits for frame N's draw.
+#include <array>
+#include <cstdint>
+
+#include "gpu/buffer.h"
+#include "gpu/context.h"
+#include "render/frame_constants.h"
+#include "render/reflection_pass.h"
+#include "render/render_target.h"
+
+namespace pond::render {
+
+struct FrameData {
+  vk::raii::CommandBuffer early = nullptr;  // the passes before the main one
+  vk::raii::CommandBuffer main = nullptr;   // the main pass
+  vk::raii::Fence early_done = nullptr;     // signalled when its last early passes finished
+  vk::raii::Fence done = nullptr;           // signalled when its last main pass finished
+  gpu::Buffer uniforms;                     // host-visible: WaterFrame
+  vk::raii::DescriptorSet set = nullptr;    // the water renderer's set 0 (shared/water_render.h)
+  Image depth;
+  ReflectionTarget reflection;
+  Image shadow;  // the sun's shadow map (render/shadow_pass.h)
+};
+
+// Points `frame`'s descriptor set (shared/water_render.h bindings) at its uniforms, the water's
+// `state` and `normals`, its reflection and shadow map and the caustics' `caustics_map`; the frame
+// must be finished. `nearest`: the reflection's and the caustics map's sampler; `shadow`: the
+// depth-compare one.
+void write_frame_set(const gpu::Context& ctx, const FrameData& frame, const gpu::Buffer& state,
+                     const gpu::Buffer& normals, vk::ImageView caustics_map, vk::Sampler nearest, vk::Sampler shadow);
+
+class FrameRing {
+ public:
+  // Frames whose sets have the layout `set_layout`.
+  FrameRing(const gpu::Context& ctx, vk::DescriptorSetLayout set_layout);
+
+  FrameData& operator[](std::uint32_t slot) { return frames_[slot]; }
+  const FrameData& operator[](std::uint32_t slot) const { return frames_[slot]; }
+  // Until slot's last submissions finished: polls its fences and waits only while they run (in the
+  // steady state the frame's one wait, for an earlier frame's compute, has finished them already).
+  void finish(std::uint32_t slot) const;
+  void finish_all() const;
+  // Makes slot's depth buffer `extent` (the slot must be finished).
+  void ensure_depth(std::uint32_t slot, vk::Extent2D extent);
+
+ private:
+  const gpu::Context& ctx_;
+  vk::raii::CommandPool pool_ = nullptr;
+  vk::raii::DescriptorPool descriptor_pool_ = nullptr;
+  std::array<FrameData, kFramesInFlight> frames_;
+};
+
+}  // namespace pond::render

@@ -1,0 +1,48 @@
+#pragma once
+// A frame's plan (no Vulkan): which of the passes before the main one it draws, and for the sun's
+// shadow map its view, fitted to this frame's casters, and the parts of the target its shadows can
+// reach (where the land and the water are drawn with the shaders that sample it).
+#include <array>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "view/pixel_rect.h"
+#include "view/sun_shadow.h"
+#include "view/view_spec.h"
+
+namespace pond::view {
+
+// The sun's shadow map: texels per unit over the camera's pixels per unit at the nearest caster (a
+// shadow on the ground is stretched along the sunlight, and the filter spans two texels), and its
+// largest size. The receivers' heights the shadows are looked for between: the floor and the land's
+// top plus this much for wave crests.
+inline constexpr double kShadowTexelsPerPixel = 1.5;
+inline constexpr std::uint32_t kMaxShadowMapSize = 1024;
+inline constexpr double kShadowWaveMargin = 1.0;
+
+struct FramePlan {
+  bool caustics = false;
+  bool reflection = false;
+  std::optional<SunShadowView> shadow;  // shadows on, something casts, and a shadow is on screen
+  std::vector<PixelRect> shadow_rects;  // where its shadows can fall (merged; empty without a map)
+};
+
+// What the scene around the frame is: the pond's floor depth and land height (world units) and
+// the direction toward the sun.
+struct PlanInput {
+  Effects effects;
+  std::span<const ShadowCaster> casters;
+  const std::array<float, 16>& view_proj;  // the camera's, column-major, Vulkan clip space
+  int width = 0, height = 0;               // the target's
+  std::array<double, 3> sun{};
+  double floor_depth = 0, land_height = 0;
+};
+
+FramePlan plan_frame(const PlanInput& in);
+
+// The camera's pixels per world unit at the nearest point of any caster's box (0 without casters):
+// the shadow map's resolution follows it.
+double nearest_caster_pixels(std::span<const ShadowCaster> casters, const std::array<float, 16>& view_proj, int height);
+
+}  // namespace pond::view
