@@ -78,4 +78,32 @@ void FrameRing::ensure_depth(std::uint32_t slot, vk::Extent2D extent) {
                          vk::ImageAspectFlagBits::eDepth, "depth, slot " + std::to_string(slot));
 }
 
+const vk::raii::CommandBuffer& FrameRing::begin(const vk::raii::CommandBuffer& cmd) {
+  cmd.reset();
+  cmd.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
+  return cmd;
+}
+
+void FrameRing::submit_early(std::uint32_t slot) const { submit(frames_[slot].early, frames_[slot].early_done, nullptr); }
+void FrameRing::submit_main(std::uint32_t slot, const FrameTarget& target) const {
+  submit(frames_[slot].main, frames_[slot].done, &target);
+}
+
+void FrameRing::submit(const vk::raii::CommandBuffer& cmd, const vk::raii::Fence& fence, const FrameTarget* target) const {
+  using S = vk::PipelineStageFlagBits2;
+  cmd.end();
+  ctx_.device().resetFences(*fence);
+  const vk::CommandBufferSubmitInfo cmd_info{.commandBuffer = *cmd};
+  const bool wait = target && target->wait_semaphore, signal = target && target->signal_semaphore;
+  const vk::SemaphoreSubmitInfo wait_info{.semaphore = wait ? target->wait_semaphore : nullptr,
+                                          .stageMask = S::eColorAttachmentOutput};
+  const vk::SemaphoreSubmitInfo signal_info{.semaphore = signal ? target->signal_semaphore : nullptr,
+                                            .stageMask = S::eAllCommands};
+  ctx_.queue().submit2(vk::SubmitInfo2{.waitSemaphoreInfoCount = wait ? 1u : 0u, .pWaitSemaphoreInfos = &wait_info,
+                                       .commandBufferInfoCount = 1, .pCommandBufferInfos = &cmd_info,
+                                       .signalSemaphoreInfoCount = signal ? 1u : 0u,
+                                       .pSignalSemaphoreInfos = &signal_info},
+                       *fence);
+}
+
 }  // namespace pond::render

@@ -9,6 +9,7 @@
 #include "gpu/buffer.h"
 #include "gpu/context.h"
 #include "render/frame_constants.h"
+#include "render/frame_target.h"
 #include "render/reflection_pass.h"
 #include "render/render_target.h"
 
@@ -46,8 +47,17 @@ class FrameRing {
   void finish_all() const;
   // Makes slot's depth buffer `extent` (the slot must be finished).
   void ensure_depth(std::uint32_t slot, vk::Extent2D extent);
+  // Slot's early (main) command buffer reset and begun; submitted with its fence, the main one
+  // waiting for the target's semaphore at colour output and signalling its other one.
+  const vk::raii::CommandBuffer& begin_early(std::uint32_t slot) { return begin(frames_[slot].early); }
+  const vk::raii::CommandBuffer& begin_main(std::uint32_t slot) { return begin(frames_[slot].main); }
+  void submit_early(std::uint32_t slot) const;
+  void submit_main(std::uint32_t slot, const FrameTarget& target) const;
 
  private:
+  static const vk::raii::CommandBuffer& begin(const vk::raii::CommandBuffer& cmd);
+  void submit(const vk::raii::CommandBuffer& cmd, const vk::raii::Fence& fence, const FrameTarget* target) const;
+
   const gpu::Context& ctx_;
   vk::raii::CommandPool pool_ = nullptr;
   vk::raii::DescriptorPool descriptor_pool_ = nullptr;

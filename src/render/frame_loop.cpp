@@ -136,12 +136,8 @@ struct FrameLoop::Impl {
     f.water = water.prepare(f.slot);
     f.state_revision = session.state_revision();
     f.generation = generation;
-    FrameData& d = frames[f.slot];
-    d.early.reset();
-    d.early.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
-    set_up(f, extent, d.early);
-    d.early.end();
-    submit(d.early, d.early_done, nullptr);  // the device draws them while the CPU builds the LOD
+    set_up(f, extent, frames.begin_early(f.slot));
+    frames.submit_early(f.slot);  // the device draws them while the CPU builds the LOD
     f.stats.draw_ms = ms_since(t);
     build_lod(f);
     f.stats.lod_ms = ms_since(t);
@@ -158,43 +154,24 @@ struct FrameLoop::Impl {
     if (!is_prepared()) throw InternalError("FrameLoop::draw without a prepared frame");
     Prepared f = std::move(*prepared);
     prepared.reset();
-    FrameData& d = frames[f.slot];
     next = (f.slot + 1) % kFramesInFlight;
     auto t = std::chrono::steady_clock::now();
-    d.main.reset();
-    d.main.begin(vk::CommandBufferBeginInfo{.flags = vk::CommandBufferUsageFlagBits::eOneTimeSubmit});
+    const vk::raii::CommandBuffer& cmd = frames.begin_main(f.slot);
     if (static_cast<std::uint32_t>(f.camera.width) != target.extent.width ||
         static_cast<std::uint32_t>(f.camera.height) != target.extent.height) {
       frames.finish(f.slot);  // the window was resized between the halves: the early passes again
-      set_up(f, target.extent, d.main);
+      set_up(f, target.extent, cmd);
       build_lod(f);
       f.stats.lod_ms += ms_since(t);
     }
     frames.ensure_depth(f.slot, target.extent);
-    record_main_pass(d.main, context(f, info(d.main, f)), target,
+    record_main_pass(cmd, context(f, info(cmd, f)), target,
                      {.wireframe = f.view.wireframe, .reflections = f.plan.reflection, .caustics = f.plan.caustics,
                       .sky = f.lighting.sky});
-    d.main.end();
-    submit(d.main, d.done, &target);
+    frames.submit_main(f.slot, target);
     if (f.view.wait) frames.finish(f.slot);
     f.stats.draw_ms += ms_since(t);
     return f.stats;
-  }
-
-  void submit(const vk::raii::CommandBuffer& cmd, const vk::raii::Fence& fence, const FrameTarget* target) const {
-    using S = vk::PipelineStageFlagBits2;
-    ctx.device().resetFences(*fence);
-    const vk::CommandBufferSubmitInfo cmd_info{.commandBuffer = *cmd};
-    const bool wait = target && target->wait_semaphore, signal = target && target->signal_semaphore;
-    const vk::SemaphoreSubmitInfo wait_info{.semaphore = wait ? target->wait_semaphore : nullptr,
-                                            .stageMask = S::eColorAttachmentOutput};
-    const vk::SemaphoreSubmitInfo signal_info{.semaphore = signal ? target->signal_semaphore : nullptr,
-                                              .stageMask = S::eAllCommands};
-    ctx.queue().submit2(vk::SubmitInfo2{.waitSemaphoreInfoCount = wait ? 1u : 0u, .pWaitSemaphoreInfos = &wait_info,
-                                        .commandBufferInfoCount = 1, .pCommandBufferInfos = &cmd_info,
-                                        .signalSemaphoreInfoCount = signal ? 1u : 0u,
-                                        .pSignalSemaphoreInfos = &signal_info},
-                        *fence);
   }
 };
 
