@@ -2,7 +2,7 @@
 // Wind that also ripples the water (optional, scene "wind.ripples"): the gusts drop small splashes
 // ("cat's paws") on the surface. Deterministic: a pure function of the step number, the scene and
 // the user wind, so `pond render` gives the same frames every run, for every solver, and the
-// demo can drop the same ripples at run time (FrameLoop::splash) as it advances.
+// demo drops the same ripples as it advances (the session builds them into its model).
 //
 // Model: every kRippleEverySteps steps, one splash pushing the surface down at a water node drawn
 // from a hash of (wind seed, step); its amplitude follows the gust's strength at that moment,
