@@ -274,7 +274,6 @@ sim::WaterState GpuSolver::read_state() const {
 }
 
 sim::HostDisplacements GpuSolver::displacements() const {
-  flush_splashes();
   const Submission* s = ring_->finish_last();
   const float* u = static_cast<const float*>(state_[cur_].mapped);  // read in place (lavapipe)
   if (!u) {
@@ -287,7 +286,6 @@ sim::HostDisplacements GpuSolver::displacements() const {
 
 std::vector<sim::BodyState> GpuSolver::read_bodies() const {
   if (!contact_) return {};
-  flush_splashes();
   const Submission* s = ring_->finish_last();
   if (!s->bodies_seen) s->bodies.invalidate(ctx_);
   s->bodies_seen = true;

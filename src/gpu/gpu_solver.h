@@ -8,8 +8,9 @@
 //  - Every submission that changes the state (steps, splashes, a new state) ends with the normals
 //    (normals_buffer(), what the water's vertex shader reads) and small host-readable copies: the
 //    displacements where the state's memory is not host-readable, and the bodies. It is submitted
-//    without waiting (gpu/submission_ring.h); displacements(), read_bodies() and read_state() wait
-//    for the last one. A splash is a dispatch in the next submission, never a round trip.
+//    without waiting (gpu/submission_ring.h); displacements() and read_bodies() wait for the last
+//    one. A splash is a dispatch in the next submission, never a round trip: those two show it
+//    once that submission is made (the next advance(), or read_state(), which submits it first).
 //  - Exact math (model.math == exact) gives the CPU solver's bits; fast math (hardware
 //    inversesqrt, contraction allowed) is the same pipeline with a specialization constant.
 #include <cstdint>

@@ -38,7 +38,8 @@ class Solver {
   virtual WaterState read_state() const = 0;
   // The current state's displacements on the host, valid until the next call that changes the
   // state. The GPU solver copies them in every submission that changes the state and waits here
-  // for its last one: in a frame, the one wait for the GPU.
+  // for its last one: in a frame, the one wait for the GPU. Its perturbations not yet submitted
+  // (they go with the next advance(), which may be of 0 steps) are not in them yet.
   virtual HostDisplacements displacements() const = 0;
   // Replaces the state and the step counter (the model's perturbations resume from that step).
   virtual void set_state(const WaterState& state, std::int64_t steps_done) = 0;
