@@ -62,7 +62,10 @@ void BM_GpuStep(benchmark::State& state, sim::MathMode math) {
   constexpr std::int64_t kSteps = 8;
   solver.advance(kSteps);  // warm-up: pipeline compiled, pages touched
   const double cpu0 = process_cpu_seconds();
-  for (auto _ : state) solver.advance(kSteps);
+  for (auto _ : state) {
+    solver.advance(kSteps);
+    solver.finish();
+  }
   const double node_steps = static_cast<double>(n) * n * kSteps * static_cast<double>(state.iterations());
   state.counters["node-steps/s"] = benchmark::Counter(node_steps, benchmark::Counter::kIsRate);
   count_cpu(state, node_steps, cpu0);
@@ -77,7 +80,10 @@ void BM_GpuDispatchOverhead(benchmark::State& state) {
   constexpr int kSubsteps = 1000;
   gpu::GpuSolver solver(context(), square_pond(8, kSubsteps, sim::MathMode::exact));
   solver.advance(1);
-  for (auto _ : state) solver.advance(1);
+  for (auto _ : state) {
+    solver.advance(1);
+    solver.finish();
+  }
   // Seconds per dispatch (printed with an SI prefix: "19u" = 19 microseconds).
   state.counters["s/dispatch"] = benchmark::Counter(static_cast<double>(state.iterations()) * kSubsteps,
                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
@@ -117,6 +123,7 @@ void BM_GpuVsCpuScalarRatio(benchmark::State& state) {
     const auto t0 = Clock::now();
     const double c0 = process_cpu_seconds();
     gpu_solver.advance(kGpuSteps);
+    gpu_solver.finish();
     const auto t1 = Clock::now();
     const double c1 = process_cpu_seconds();
     cpu_solver.advance(kCpuSteps);

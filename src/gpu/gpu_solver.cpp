@@ -53,9 +53,10 @@ PerturbPush push_for(const sim::PerturbationTable& t, std::uint32_t first, std::
 
 }  // namespace
 
-GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model)
+GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, bool drawn)
     : ctx_(ctx),
       model_(std::move(model)),
+      drawn_(drawn),
       pitch_(row_pitch(static_cast<std::size_t>(model_.cols))),
       stride_(state_stride(static_cast<std::size_t>(model_.rows) * pitch_)) {
   create_buffers();
@@ -136,7 +137,7 @@ void GpuSolver::advance(std::int64_t steps) {
   }
   while (steps > 0) {
     const std::int64_t n = std::min(steps, steps_per_submit());
-    submit(n);
+    submit(n, drawn_);
     steps -= n;
   }
 }
@@ -148,10 +149,10 @@ void GpuSolver::perturb(const sim::PerturbationTable& table) {
 }
 
 void GpuSolver::flush_splashes() const {
-  if (!splash_pushes_.empty()) submit(0);
+  if (!splash_pushes_.empty()) submit(0, drawn_);
 }
 
-void GpuSolver::submit(std::int64_t steps) const {
+void GpuSolver::submit(std::int64_t steps, bool publish) const {
   Submission& s = ring_->begin();
   const std::uint32_t region = ring_->index_of(s);
   const vk::raii::CommandBuffer& cmd = s.cmd;
@@ -160,9 +161,16 @@ void GpuSolver::submit(std::int64_t steps) const {
   if (contact_ && steps > 0) contact_->write_schedule(step_, steps, region);
   const std::int64_t first_step = step_;
   for (std::int64_t k = 0; k < steps; ++k) record_step(cmd, region, first_step);
-  kernels_->record_normals(cmd, cur_);
+  if (publish) kernels_->record_normals(cmd, cur_);
+  s.published = publish;
   record_copies(cmd, s);
   ring_->submit();
+}
+
+const Submission& GpuSolver::published() const {
+  const Submission* last = ring_->last();
+  if (!last || !last->published) submit(0, true);
+  return *ring_->finish_last();
 }
 
 // The splashes queued since the last submission, from the entry's own table (made larger first if
@@ -212,10 +220,10 @@ void GpuSolver::record_step(const vk::raii::CommandBuffer& cmd, std::uint32_t re
 // made visible to the host; and everything the submission wrote before any later submission's
 // commands (the renderer's reads, uploads that overwrite the state).
 void GpuSolver::record_copies(const vk::raii::CommandBuffer& cmd, const Submission& s) const {
-  if (*s.displacements.buffer)
+  if (s.published && *s.displacements.buffer)
     cmd.copyBuffer(*state_[cur_].buffer, *s.displacements.buffer,
                    vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = s.displacements.size});
-  if (contact_)
+  if (s.published && contact_)
     cmd.copyBuffer(*contact_->bodies().buffer, *s.bodies.buffer,
                    vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = s.bodies.size});
   const vk::MemoryBarrier2 after{.srcStageMask = S::eComputeShader | S::eTransfer,
@@ -241,7 +249,7 @@ void GpuSolver::set_state(const sim::WaterState& state, std::int64_t steps_done)
   next_perturbation_ = 0;
   while (next_perturbation_ < model_.perturbations.size() && model_.perturbations[next_perturbation_].step < step_)
     ++next_perturbation_;
-  submit(0);  // its normals and copies
+  submit(0, drawn_);  // its normals and copies, when drawn
 }
 
 // Copies `src` into a new host-visible buffer after every earlier submission's writes, and makes
@@ -274,7 +282,7 @@ sim::WaterState GpuSolver::read_state() const {
 }
 
 sim::HostDisplacements GpuSolver::displacements() const {
-  const Submission* s = ring_->finish_last();
+  const Submission* s = &published();
   const float* u = static_cast<const float*>(state_[cur_].mapped);  // read in place (lavapipe)
   if (!u) {
     if (!s->displacements_seen) s->displacements.invalidate(ctx_);
@@ -286,7 +294,7 @@ sim::HostDisplacements GpuSolver::displacements() const {
 
 std::vector<sim::BodyState> GpuSolver::read_bodies() const {
   if (!contact_) return {};
-  const Submission* s = ring_->finish_last();
+  const Submission* s = &published();
   if (!s->bodies_seen) s->bodies.invalidate(ctx_);
   s->bodies_seen = true;
   std::vector<sim::BodyState> out(model_.bodies.size());
@@ -295,6 +303,7 @@ std::vector<sim::BodyState> GpuSolver::read_bodies() const {
 }
 
 sim::Normals GpuSolver::normals() const {
+  published();  // the normals of the current state
   const Buffer staging = copy_to_host(normals_, "normals readback");
   sim::Normals n;
   const auto* v = static_cast<const float*>(staging.mapped);

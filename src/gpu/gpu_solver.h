@@ -5,11 +5,11 @@
 //  - The state lives on the GPU in two ping-pong buffers (structure of arrays, water_gpu.h);
 //    a substep reads one and writes the other, so k substeps are k dispatches with a barrier
 //    between each, all in one command buffer (gpu/water_kernels.h).
-//  - Every submission that changes the state (steps, splashes, a new state) ends with the normals
-//    (normals_buffer(), what the water's vertex shader reads) and small host-readable copies: the
-//    displacements where the state's memory is not host-readable, and the bodies. It is submitted
-//    without waiting (gpu/submission_ring.h); displacements() and read_bodies() wait for the last
-//    one. A splash is a dispatch in the next submission, never a round trip: those two show it
+//  - Work is submitted without waiting (gpu/submission_ring.h). A drawn solver's every submission
+//    ends by publishing the state: the normals (normals_buffer(), what the water's vertex shader
+//    reads) and small host-readable copies (the displacements where the state's memory is not
+//    host-readable, and the bodies); displacements() and read_bodies() wait for the last one. An
+//    undrawn solver (pond simulate, benchmarks) publishes only when they ask. A splash is a dispatch in the next submission, never a round trip: those two show it
 //    once that submission is made (the next advance(), or read_state(), which submits it first).
 //  - Exact math (model.math == exact) gives the CPU solver's bits; fast math (hardware
 //    inversesqrt, contraction allowed) is the same pipeline with a specialization constant.
@@ -35,7 +35,8 @@ class GpuSolver : public sim::Solver {
  public:
   // Starts from rest. The context must outlive the solver. The step shader stores 64 bits at a
   // time where the context enabled shaderInt64 (faster on llvmpipe, the same bits), else vec4s.
-  GpuSolver(const Context& ctx, sim::WaterModel model);
+  // `drawn`: every submission publishes the state (see the top), for a renderer's frames.
+  GpuSolver(const Context& ctx, sim::WaterModel model, bool drawn = false);
   // Waits for the queue: frames in flight may still read the solver's buffers.
   ~GpuSolver() override;
 
@@ -56,10 +57,12 @@ class GpuSolver : public sim::Solver {
   sim::HostDisplacements displacements() const override;
   std::vector<sim::BodyState> read_bodies() const override;
 
+  // Waits until every submission finished (benchmarks time the steps, not their submission).
+  void finish() const { ring_->finish_all(); }
   std::size_t stride() const { return stride_; }  // floats between the state's component arrays
   // Nodes between two rows of the state buffers: cols rounded up to 4 (gpu/water_layout.h).
   std::size_t pitch() const { return pitch_; }
-  // The normals of the current state, as the last submission computed them, read back (waits).
+  // The normals of the current state, read back (waits).
   sim::Normals normals() const;
   // What the renderer draws from, as the last submission left it: the state now (its first
   // 3 * stride floats are ux | uy | uz), the normals, the bodies (null without bodies).
@@ -76,8 +79,11 @@ class GpuSolver : public sim::Solver {
 
   // Steps one submission records: kMaxDispatchesPerSubmit dispatches, counting the contact's.
   std::int64_t steps_per_submit() const;
-  // One submission: the queued splashes, `steps` steps, the normals and the host copies.
-  void submit(std::int64_t steps) const;
+  // One submission: the queued splashes, `steps` steps, and with `publish` the normals and the
+  // host copies.
+  void submit(std::int64_t steps, bool publish) const;
+  // The last submission, finished and published (one that publishes submitted first if it was not).
+  const Submission& published() const;
   void record_splashes(const vk::raii::CommandBuffer& cmd, Submission& s) const;
   void record_step(const vk::raii::CommandBuffer& cmd, std::uint32_t region, std::int64_t first_step) const;
   void record_copies(const vk::raii::CommandBuffer& cmd, const Submission& s) const;
@@ -87,6 +93,7 @@ class GpuSolver : public sim::Solver {
 
   const Context& ctx_;
   sim::WaterModel model_;
+  bool drawn_ = false;
   std::size_t pitch_ = 0;   // row_pitch(cols)
   std::size_t stride_ = 0;  // state_stride(rows * pitch_)
   Buffer state_[2], kinds_, table_, normals_;

@@ -5,7 +5,7 @@ namespace pond::gpu {
 // A GpuSolver that tells its GpuSolvers when it goes.
 class GpuSolvers::Tracked final : public GpuSolver {
  public:
-  Tracked(GpuSolvers& owner, const sim::WaterModel& model) : GpuSolver(owner.ctx_, model), owner_(owner) {}
+  Tracked(GpuSolvers& owner, const sim::WaterModel& model) : GpuSolver(owner.ctx_, model, true), owner_(owner) {}
   ~Tracked() override {
     if (owner_.live_ == this) owner_.live_ = nullptr;
   }

@@ -16,7 +16,8 @@ class GpuSolvers {
   GpuSolvers(const GpuSolvers&) = delete;
   GpuSolvers& operator=(const GpuSolvers&) = delete;
 
-  // Makes GpuSolvers for a session (sim/session.h), remembering the last one made while it lives.
+  // Makes GpuSolvers for a session (sim/session.h) whose every submission publishes the state for
+  // the renderer, remembering the last one made while it lives.
   sim::GpuSolverFactory factory();
   // The GPU solver made last, if it still lives (the session holds it, or a CPU solver replaced it).
   const GpuSolver* live() const { return live_; }

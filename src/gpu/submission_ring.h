@@ -18,6 +18,7 @@ struct Submission {
   Buffer displacements;  // readback: ux | uy | uz as in the state (empty where read in place)
   Buffer bodies;         // readback: the bodies' states (empty without bodies)
   Buffer splashes;       // upload: the entries of the splashes it applies (grown when needed)
+  bool published = false;  // it computed the normals and made the host's copies
   mutable bool in_flight = false;
   // Its copies invalidated since it finished (each once: the host reads them several times).
   mutable bool displacements_seen = false, bodies_seen = false;
@@ -36,7 +37,9 @@ class SubmissionRing {
   std::uint32_t index_of(const Submission& s) const { return static_cast<std::uint32_t>(&s - entries_.data()); }
   // Ends and submits the command buffer begun last; its entry becomes last().
   void submit();
-  // The entry submitted last, finished (null before any): polls its fence, waits only while it runs.
+  // The entry submitted last (null before any), and the same finished: polls its fence, waits only
+  // while it runs.
+  const Submission* last() const { return last_ < 0 ? nullptr : &entries_[static_cast<std::size_t>(last_)]; }
   const Submission* finish_last() const;
   // Every entry finished.
   void finish_all() const;

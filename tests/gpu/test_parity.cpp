@@ -339,17 +339,19 @@ TEST_F(GoldenTest, NormalsEqualTheCpuNormals) {
   }
 }
 
-// Every submission that changes the state leaves the host its displacements (copied, or read in
-// place where the state is host-readable: lavapipe) and the normals of the new state; a splash
-// (perturb) is a dispatch in the next submission and gives the CPU's bits. The second model has so
+// Every submission of a drawn solver (and, on demand, of an undrawn one) leaves the host its
+// displacements (copied, or read in place where the state is host-readable: lavapipe) and the
+// normals of the new state; a splash (perturb) is a dispatch in the next submission and gives the
+// CPU's bits. The second model has so
 // many substeps that 5 steps exceed kMaxDispatchesPerSubmit: the earlier steps go in submissions of
 // their own, which the ring of submissions takes in turn.
 TEST_F(GpuTest, EverySubmissionLeavesDisplacementsNormalsAndSplashes) {
   sim::WaterModel chunked = model_of(kCases[5]);  // big_splash_17x33_fixed
   chunked.substeps = 2000;
   ASSERT_LT(gpu::GpuSolver::kMaxDispatchesPerSubmit / chunked.substeps, 5);
+  for (const bool drawn : {false, true})
   for (const sim::WaterModel& model : {model_of(kCases[5]), chunked}) {
-    gpu::GpuSolver gpu(ctx(), model);
+    gpu::GpuSolver gpu(ctx(), model, drawn);
     sim::CpuSolver cpu(model, sim::Backend::scalar, 1);
     EXPECT_EQ(gpu.pitch(), gpu::row_pitch(static_cast<std::size_t>(model.cols)));
     EXPECT_EQ(gpu.stride(), gpu::state_stride(static_cast<std::size_t>(model.rows) * gpu.pitch()));
@@ -377,7 +379,7 @@ TEST_F(GpuTest, EverySubmissionLeavesDisplacementsNormalsAndSplashes) {
           rows_differing += std::memcmp(row, wanted[c] + i * cols, cols * sizeof(float)) != 0;
           for (std::size_t j = cols; j < u.pitch; ++j) padding_nonzero += std::bit_cast<std::uint32_t>(row[j]) != 0u;
         }
-      EXPECT_EQ(rows_differing, 0) << "after " << cpu.steps_done() << " steps";
+      EXPECT_EQ(rows_differing, 0) << "after " << cpu.steps_done() << " steps" << (drawn ? ", drawn" : "");
       EXPECT_EQ(padding_nonzero, 0);
       EXPECT_EQ(sim::state_hash(gpu.read_state(), model), sim::state_hash(want, model));
       const sim::Normals na = gpu.normals(), nb = sim::compute_normals(want, model);
