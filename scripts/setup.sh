@@ -13,6 +13,7 @@ packages=(
   qemu-user  # tests/cli/ia32_golden_test.sh, on kernels that cannot run 32-bit programs
   gnuplot-nox
   clang-14 libclang-rt-14-dev  # scripts/fuzz.sh: libFuzzer and clang's ASan/UBSan runtimes
+  dpkg-dev file  # cpack -G DEB (tests/install): dpkg-shlibdeps computes Depends; CPack finds ELF files with `file`
 )
 
 missing=()

@@ -39,7 +39,8 @@ ctest --preset sanitize-gpu -j "$jobs"
 # shaderDenormPreserveFloat32, the validation layer above it (docs/layer.md). The whole
 # GPU label with the feature, then without it only the solver's tests and `pond check` (denormals
 # reach only the solver).
-# The parity runs at 0.3 of their length here; the plain run below keeps the full length.
+# The parity runs at 0.3 of their length here; the plain run below keeps the full length. The
+# installed and packaged pond's tests (label install) run their own layer; the plain run has them.
 stage "GPU tests under the discrete-GPU layer"
 validation_json=$(dpkg -L vulkan-validationlayers | grep -m1 'VkLayer_khronos_validation.json$')
 for pass in "1 gpu" "0 gpu_solver|parity"; do
@@ -47,7 +48,7 @@ for pass in "1 gpu" "0 gpu_solver|parity"; do
   VK_LAYER_PATH="$(dirname "$validation_json"):$PWD/build/layers" \
   VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation:VK_LAYER_POND_discrete_gpu \
   POND_DISCRETE_GPU_DENORM_PRESERVE=$denorm POND_PARITY_STEP_SCALE=0.3 \
-    ctest --preset release -j "$jobs" -L "$label" -LE "soak|layer"
+    ctest --preset release -j "$jobs" -L "$label" -LE "soak|layer|install"
 done
 
 # Last, so its summary closes the output.

@@ -9,6 +9,7 @@
 #include "app/check_bridge.h"
 #include "app/check_cases.h"
 #include "app/interrupt.h"
+#include "app/version.h"
 #include "gpu/context.h"
 #include "gpu/float_policy.h"
 #include "gpu/headless.h"
@@ -44,6 +45,7 @@ void print_device(const gpu::Context& ctx) {
 int run_check(const CheckOptions& o) {
   const InterruptScope interrupt_scope;
   const gpu::Context ctx(gpu::headless_options(o.device, false));
+  std::printf("%s\n", version_line().c_str());  // first, so a report that is passed on names its build
   std::printf("pond check: the GPU's exact math against the CPU reference, bit for bit, on %s\n\n",
               ctx.device_name().c_str());
   std::printf("%-26s %-7s %7s  %s\n", "case", "grid", "steps", "result");

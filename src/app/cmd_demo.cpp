@@ -20,29 +20,29 @@ struct DemoCli {
 };
 
 void add_demo_options(CLI::App& app, DemoCli& cli) {
-  app.add_option("--scene", cli.options.scene, "scene JSON file (default: the embedded scene)")->type_name("FILE");
-  app.add_option("--frames", cli.options.frames, "run N frames, then exit 0 (default: until closed)")
+  app.add_option("--scene", cli.options.scene, "Scene JSON file (default: the embedded scene)")->type_name("FILE");
+  app.add_option("--frames", cli.options.frames, "Run N frames, then exit 0 (default: until closed)")
       ->type_name("N")
       ->check(CLI::Range(std::int64_t{1}, std::int64_t{1000000000}));
-  app.add_option("--screenshot", cli.options.screenshot, "save the last frame as PNG")->type_name("FILE");
+  app.add_option("--screenshot", cli.options.screenshot, "Save the last frame as PNG")->type_name("FILE");
   app.add_option("--script", cli.options.script,
-                 "replay input events from a text file (lines like 'frame 10 click 640 360', see README)")
+                 "Replay input events from a text file (lines like 'frame 10 click 640 360', see README)")
       ->type_name("FILE");
   // For tests and measurements, not in --help.
-  app.add_option("--size", cli.size, "window size WxH")->group("");
-  app.add_flag("--no-vsync", cli.no_vsync, "present without waiting for vertical blank")->group("");
+  app.add_option("--size", cli.size, "Window size WxH")->group("");
+  app.add_flag("--no-vsync", cli.no_vsync, "Present without waiting for vertical blank")->group("");
   app.add_flag("--validation", cli.options.validation,
-               "Vulkan validation layer; any message fails the run (also POND_VALIDATION=1)")
+               "Enable the Vulkan validation layer; any message fails the run (also POND_VALIDATION=1)")
       ->group("");
   app.add_option("--device", cli.options.device, "Vulkan device name substring")->group("");
-  app.add_flag("--quiet", cli.options.quiet, "no summary line at exit")->group("");
+  app.add_flag("--quiet", cli.options.quiet, "No summary line at exit")->group("");
 }
 
 }  // namespace
 
 Command add_demo_command(CLI::App& app) {
   auto cli = std::make_shared<DemoCli>();
-  CLI::App* sub = app.add_subcommand("demo", "the windowed demo (also the default when no command is named)");
+  CLI::App* sub = app.add_subcommand("demo", "The windowed demo (also the default when no command is named)");
   add_demo_options(app, *cli);
   add_demo_options(*sub, *cli);
   return {sub, [cli] {

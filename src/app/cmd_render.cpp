@@ -24,7 +24,7 @@ Command add_render_command(CLI::App& app) {
   sub->add_option("--fovy", o->fovy, "Vertical field of view in degrees")->check(CLI::Range(0.01, 179.99));
   sub->add_option("--lod-tolerance", o->lod_tolerance, "LOD screen-space error in pixels; 0 = the full mesh")
       ->check(CLI::Range(0.0, 1e6));
-  sub->add_option("--solver", o->solver, "gpu (default) or a CPU backend")
+  sub->add_option("--solver", o->solver, "Solver: gpu (default) or a CPU backend")
       ->check(CLI::IsMember({"gpu", "scalar", "sse", "avx2", "avx512"}));
   sub->add_flag("--wireframe", o->wireframe, "Overlay the LOD triangles");
   sub->add_option("--device", o->device, "Vulkan device name (substring)");

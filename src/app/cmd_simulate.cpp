@@ -114,7 +114,7 @@ Command add_simulate_command(CLI::App& app) {
       std::int64_t{0}, std::int64_t{1} << 40));
   sub->add_option("--solver", o->solver, "Solver backend (default: the widest the CPU has)")
       ->check(CLI::IsMember({"auto", "scalar", "sse", "avx2", "avx512", "gpu"}));
-  sub->add_option("--math", o->math, "exact: bit-reproducible; fast: approximations allowed")
+  sub->add_option("--math", o->math, "Float math: exact (bit-reproducible, the default) or fast (approximations allowed)")
       ->check(CLI::IsMember({"exact", "fast"}));
   sub->add_option("--threads", o->threads, "CPU threads (default: all cores)")
       ->check(CLI::Range(1, 1024));

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "app/version.h"
 
 namespace pond::app {
 
@@ -15,6 +16,8 @@ class CommandLine {
  public:
   CommandLine() {
     app_.require_subcommand(0, 1);
+    app_.set_version_flag("--version", [] { return version_line(); },
+                          "Print the version, the CPU backends and the Vulkan headers of this build, then exit");
     commands_ = {add_demo_command(app_), add_simulate_command(app_), add_render_command(app_),
                  add_lod_command(app_), add_tree_command(app_), add_check_command(app_)};
   }
@@ -33,7 +36,7 @@ class CommandLine {
     try {
       app_.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-      if (e.get_exit_code() == 0) {  // --help, --help-all
+      if (e.get_exit_code() == 0) {  // --help, --help-all, --version
         if (quiet) return {nullptr, 0};
         return {nullptr, app_.exit(e)};
       }

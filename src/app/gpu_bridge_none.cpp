@@ -9,4 +9,6 @@ sim::GpuSolverFactory headless_gpu_solvers(const GpuRunOptions&) {
   };
 }
 
+std::string vulkan_in_build() { return "no Vulkan"; }
+
 }  // namespace pond::app

@@ -1,5 +1,10 @@
-// `pond simulate --solver gpu`: the GPU solver behind the one door the CPU-only command code knows.
+// `pond simulate --solver gpu`: the GPU solver behind the one door the CPU-only command code knows
+// (and the Vulkan headers' version for `pond --version`).
+#include <cstdint>
 #include <memory>
+#include <string>
+
+#include <vulkan/vulkan_core.h>
 
 #include "app/gpu_bridge.h"
 #include "gpu/context.h"
@@ -39,6 +44,12 @@ sim::GpuSolverFactory headless_gpu_solvers(const GpuRunOptions& options) {
     if (!ctx) ctx = std::make_shared<const gpu::Context>(gpu::headless_options(options.device, options.validation));
     return std::make_unique<HeadlessGpuSolver>(ctx, model);
   };
+}
+
+std::string vulkan_in_build() {
+  constexpr std::uint32_t v = VK_HEADER_VERSION_COMPLETE;
+  return "Vulkan headers " + std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) +
+         "." + std::to_string(VK_API_VERSION_PATCH(v));
 }
 
 }  // namespace pond::app

@@ -41,14 +41,23 @@ bool masked(Backend b) { return b != Backend::scalar && feature_index(b) >= unma
 
 }  // namespace
 
+bool compiled_in(Backend b) {
+  switch (b) {
+    case Backend::scalar:
+    case Backend::sse: return true;
+    case Backend::avx2: return step_rows_avx2(shared::kRsqrtStepsExact, false) != nullptr;
+    case Backend::avx512: return step_rows_avx512(shared::kRsqrtStepsExact, false) != nullptr;
+  }
+  return false;
+}
+
 bool cpu_supports(Backend b) {
-  if (masked(b)) return false;
+  if (!compiled_in(b) || masked(b)) return false;
   switch (b) {
     case Backend::scalar: return true;
     case Backend::sse: return __builtin_cpu_supports("sse2");
-    case Backend::avx2: return step_rows_avx2(shared::kRsqrtStepsExact, false) != nullptr && __builtin_cpu_supports("avx2");
-    case Backend::avx512:
-      return step_rows_avx512(shared::kRsqrtStepsExact, false) != nullptr && __builtin_cpu_supports("avx512f");
+    case Backend::avx2: return __builtin_cpu_supports("avx2");
+    case Backend::avx512: return __builtin_cpu_supports("avx512f");
   }
   return false;
 }
@@ -77,8 +86,7 @@ std::optional<Backend> parse_backend(std::string_view name) {
 }
 
 StepRowsFn step_rows_for(Backend b, int rsqrt_steps, bool reach) {
-  if ((b == Backend::avx2 && step_rows_avx2(rsqrt_steps, reach) == nullptr) ||
-      (b == Backend::avx512 && step_rows_avx512(rsqrt_steps, reach) == nullptr))
+  if (!compiled_in(b))
     throw InputError(std::string("solver ") + backend_name(b) +
                      " is not in this build (IA-32 builds have scalar and sse)");
   if (!cpu_supports(b)) {

@@ -1,6 +1,6 @@
 #!/bin/sh
-# `pond check` as a user runs it: exit 0, a row per case saying "identical", the device and its
-# float controls, the identity line; bad input exits 2 with one line.
+# `pond check` as a user runs it: exit 0, the version line first, a row per case saying "identical",
+# the device and its float controls, the identity line; bad input exits 2 with one line.
 # Usage: check_cli_test.sh PATH/TO/pond
 set -u
 pond=$1
@@ -15,6 +15,7 @@ done
 echo "$out" | grep -q "^float controls, 32-bit: shaderDenormPreserveFloat32 " || fail "no float controls line"
 echo "$out" | grep -q "^bit-identity with the CPU: " || fail "no identity line"
 echo "$out" | grep -q "^all 6 cases bit-identical$" || fail "no summary line"
+[ "$(echo "$out" | head -n 1)" = "$("$pond" --version)" ] || fail "the report does not start with the version line"
 for bad in "--steps 0" "--steps x" "--device no-such-device-anywhere" "--frobnicate"; do
   "$pond" check $bad > /dev/null 2> /tmp/check_err.$$
   rc=$?
