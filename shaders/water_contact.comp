@@ -1,21 +1,17 @@
 #version 460
-// The bodies' contact after one substep (the algorithm and its order: shared/bodies.h), in one
-// workgroup that takes the bodies one after the other: all invocations move the body alike; lane
-// l = (i % 8) * 8 + j % 8 of the POND_CONTACT_LANES lanes tests its footprint nodes (i, j) in
-// row-major order and keeps its own sums; every invocation adds the lanes' sums in lane order;
-// then the lanes move their nodes inside to the surface with the common velocity. A barrier
-// separates the bodies, so a body sees the nodes the one before it moved. Every float operation
-// is `precise` (the CPU's bits).
-//
-// The workgroup has local_size_x invocations (a specialization constant dividing the 64 lanes: the
-// device's subgroup size, so that llvmpipe runs it as one SIMD batch without switching between
-// batches at each barrier); invocation t takes lanes t, t + local_size_x, ... The lanes and their
-// order are the same for any size: the same bits.
-//
-// A node is loaded only as far as needed: its rest position decides whether it can touch the body
-// (contact_may_touch, no load), then ux and uz whether it is under the sphere, and only then its
-// kind and height (on llvmpipe every storage-buffer load with a per-invocation address is a loop
-// over the lanes).
+// The bodies' contact after one substep (the order: shared/bodies.h; the laws: shared/body_*.h),
+// in one workgroup that holds the bodies in shared memory:
+//  1. floating bodies one after the other: lane l = (i % 8) * 8 + j % 8 of the POND_CONTACT_LANES
+//     lanes sums the water moments of its kernel nodes (i, j) in row-major order; every invocation
+//     adds the lanes in lane order and computes the exchange; the lanes kick their nodes;
+//  2. the motion: the bodies' moves in parallel, the pairs on invocation 0 (their order is the
+//     law), the land in parallel (each body alone against it);
+//  3. kinematic bodies one after the other: the lanes push the nodes inside to the surface.
+// Barriers separate the bodies, so each sees the nodes the ones before it changed. Every float
+// operation is `precise` (the CPU's bits). The workgroup has local_size_x invocations (a
+// specialization constant dividing the 64 lanes: the device's subgroup size, so that llvmpipe runs
+// it as one SIMD batch); invocation t takes lanes t, t + local_size_x, ...: the same lanes, and so
+// the same bits, for any size.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_spirv_intrinsics : require
 
@@ -31,14 +27,14 @@ spirv_execution_mode(capabilities = [4464], 4459, 32);  // DenormPreserve, 32-bi
 layout(local_size_x = POND_CONTACT_LOCAL_X, local_size_y = 1, local_size_z = 1) in;
 layout(local_size_x_id = POND_SPEC_CONTACT_LOCAL_X) in;
 
-// uy and vy, which an earlier body of the same pass may have moved, through the coherent storage
-// buffer; ux, uz and the kinds, which this pass never writes, through texel-buffer views (a
-// straight-line gather on llvmpipe; see water_step.comp). The state's view aliases `state` (on
-// components it does not write), so `state` is not `restrict`.
+// uy and the velocities, which this pass writes, through the coherent storage buffer; ux, uz and
+// the kinds, which it never writes, through texel-buffer views (a straight-line gather on
+// llvmpipe). The state's view aliases `state` (on components it does not write), so `state` is
+// not `restrict`.
 layout(std430, set = 0, binding = POND_CONTACT_BINDING_STATE) coherent buffer State { float state[]; };
 layout(set = 0, binding = POND_CONTACT_BINDING_STATE1) uniform samplerBuffer state1;  // R32F: float n
 layout(set = 0, binding = POND_CONTACT_BINDING_KINDS4) uniform usamplerBuffer kinds4;  // RGBA8UI: nodes 4t..4t+3
-layout(std430, set = 0, binding = POND_CONTACT_BINDING_BODIES) coherent restrict buffer Bodies { BodyState bodies[]; };
+layout(std430, set = 0, binding = POND_CONTACT_BINDING_BODIES) restrict buffer Bodies { BodyState bodies[]; };
 layout(std430, set = 0, binding = POND_CONTACT_BINDING_CONSTANTS) restrict readonly buffer Constants {
   BodyConstants constants[];
 };
@@ -46,33 +42,26 @@ layout(std430, set = 0, binding = POND_CONTACT_BINDING_SCHEDULE) restrict readon
   BodyState schedule[];
 };
 layout(std430, set = 0, binding = POND_CONTACT_BINDING_REACH) coherent restrict buffer Reach { uint reach_bits; };
+layout(std430, set = 0, binding = POND_CONTACT_BINDING_LAND) restrict readonly buffer Land { uint land[]; };
 layout(push_constant) uniform Push { ContactPush p; };
 
-shared float lane_sums[POND_CONTACT_LANES];
-shared uint lane_counts[POND_CONTACT_LANES];
-// A floating body's pass 1 keeps each lane's first kCacheDepth nodes inside (index, height on the
-// surface) for pass 2, at slot lane + LANES * m: pass 2 then only writes them, where it would load
-// and test the footprint again. A lane with more nodes inside (a large body) walks it again.
-const uint kCacheDepth = 16u;
-shared uint cached_node[POND_CONTACT_LANES * kCacheDepth];
-shared float cached_height[POND_CONTACT_LANES * kCacheDepth];
+// The bodies (sb), their constants (sc) and the kinematic ones' positions at the substep's end
+// (sk): the arrays shared/body_motion.h works on.
+shared BodyState sb[POND_MAX_BODIES];
+shared BodyConstants sc[POND_MAX_BODIES];
+shared BodyState sk[POND_MAX_BODIES];
+shared float moves[POND_MAX_BODIES];
+shared uint pairs_touched;
 
-const uint kY = 1u, kVy = 4u;  // component arrays of the state (water_gpu.h)
+#include "shared/body_kinematic.h"
+#include "shared/body_motion.h"
+#include "shared/body_water.h"
 
-// Whether footprint node (i, j) (state index n) is inside the body: not fixed, under the sphere
-// (half chord `half_height` over its actual x, z) and within that chord at its height `y`.
-bool inside_at(int i, int j, BodyState b, float r2, out uint n, out float half_height, out float y) {
-  n = uint(i) * p.pitch + uint(j);
-  precise float x = float(j) + texelFetch(state1, int(n)).x;                 // ux
-  precise float z = float(i) + texelFetch(state1, int(2u * p.stride + n)).x;  // uz
-  half_height = contact_half_height(x, z, b.x, b.z, r2);
-  y = 0.0;
-  if (!(half_height > 0.0)) return false;
-  const uint kind = texelFetch(kinds4, int(n >> 2u))[n & 3u];
-  if (kind == kNodeFixed) return false;
-  y = state[kY * p.stride + n];
-  return contact_inside(y, b.y, half_height);
-}
+shared WaterMoments lane_moments[POND_CONTACT_LANES];
+
+const uint kY = 1u, kVx = 3u, kVy = 4u, kVz = 5u;  // component arrays of the state (water_gpu.h)
+
+uint kind_at(uint n) { return texelFetch(kinds4, int(n >> 2u))[n & 3u]; }
 
 // The first index from `first` on that is congruent to `residue` modulo the lane side.
 int first_of_lane(int first, int residue) {
@@ -82,91 +71,153 @@ int first_of_lane(int first, int residue) {
 // Buffer structs copied member by member (a whole-struct copy between layouts is not valid SPIR-V).
 BodyState body_at(uint index) {
   return BodyState(bodies[index].x, bodies[index].y, bodies[index].z, bodies[index].vx, bodies[index].vy,
-                   bodies[index].vz);
+                   bodies[index].vz, bodies[index].flags);
 }
 BodyState scheduled_at(uint entry) {
   return BodyState(schedule[entry].x, schedule[entry].y, schedule[entry].z, schedule[entry].vx, schedule[entry].vy,
-                   schedule[entry].vz);
+                   schedule[entry].vz, schedule[entry].flags);
+}
+BodyConstants constants_at(uint index) {
+  return BodyConstants(constants[index].radius, constants[index].radius2, constants[index].inv_radius,
+                       constants[index].inv_4r3, constants[index].node_over_body, constants[index].body_over_node,
+                       constants[index].inv_mass, constants[index].gravity_dt, constants[index].buoyancy_dt,
+                       constants[index].drag_dt, constants[index].floating);
 }
 
-void main() {
-  const uint first_lane = gl_LocalInvocationID.x, invocations = gl_WorkGroupSize.x;
-  const float reach = uintBitsToFloat(reach_bits);  // the step shader's, for this substep
-  for (uint index = 0u; index < p.count; ++index) {
-    const BodyConstants c = BodyConstants(constants[index].radius, constants[index].radius2,
-                                          constants[index].node_over_body, constants[index].gravity_dt,
-                                          constants[index].floating);
-    BodyState b = c.floating != 0u ? contact_move_floating(body_at(index), p.dt, p.rim_x, p.rim_z)
-                                   : scheduled_at(p.schedule_first + index);
-    const float extent = contact_extent(c.radius, reach), limit2 = contact_touch_limit2(c.radius);
-    const int i0 = footprint_first(b.z, extent), i1 = footprint_last(b.z, extent, int(p.rows) - 1);
-    const int j0 = footprint_first(b.x, extent), j1 = footprint_last(b.x, extent, int(p.cols) - 1);
-    float common_v = b.vy;
-    if (c.floating != 0u) {
-      for (uint lane = first_lane; lane < POND_CONTACT_LANES; lane += invocations) {
-        precise float sum = 0.0;
-        uint nodes = 0u;
-        const int lane_i = int(lane) / POND_CONTACT_LANE_SIDE, lane_j = int(lane) % POND_CONTACT_LANE_SIDE;
-        for (int i = first_of_lane(i0, lane_i); i <= i1; i += POND_CONTACT_LANE_SIDE)
-          for (int j = first_of_lane(j0, lane_j); j <= j1; j += POND_CONTACT_LANE_SIDE) {
-            if (!contact_may_touch(j, i, b.x, b.z, reach, limit2)) continue;
-            uint n;
-            float half_height, y;
-            if (inside_at(i, j, b, c.radius2, n, half_height, y)) {
-              sum = sum + state[kVy * p.stride + n];
-              if (nodes < kCacheDepth) {
-                cached_node[lane + POND_CONTACT_LANES * nodes] = n;
-                cached_height[lane + POND_CONTACT_LANES * nodes] = contact_surface(y, b.y, half_height);
-              }
-              ++nodes;
-            }
-          }
-        lane_sums[lane] = sum;
-        lane_counts[lane] = nodes;
+// Step 1 for floating body `index`: the moments lane by lane, the exchange, the nodes' kicks.
+void exchange_with_water(uint index, uint first_lane, uint invocations) {
+  const BodyState b = sb[index];
+  const BodyConstants c = sc[index];
+  const int last_i = int(p.rows) - 1, last_j = int(p.cols) - 1;
+  const int i0 = water_first(b.z, c.radius, last_i), i1 = water_last(b.z, c.radius, last_i);
+  const int j0 = water_first(b.x, c.radius, last_j), j1 = water_last(b.x, c.radius, last_j);
+  for (uint lane = first_lane; lane < POND_CONTACT_LANES; lane += invocations) {
+    WaterMoments m = moments_zero();
+    const int lane_i = int(lane) / POND_CONTACT_LANE_SIDE, lane_j = int(lane) % POND_CONTACT_LANE_SIDE;
+    for (int i = first_of_lane(i0, lane_i); i <= i1; i += POND_CONTACT_LANE_SIDE)
+      for (int j = first_of_lane(j0, lane_j); j <= j1; j += POND_CONTACT_LANE_SIDE) {
+        const float w = water_weight(j, i, b.x, b.z, c.inv_radius);
+        if (!(w > 0.0)) continue;
+        const uint n = uint(i) * p.pitch + uint(j), kind = kind_at(n);
+        if (kind == kNodeFixed) continue;
+        m = moments_add_node(m, w, j, i, b.x, b.z, state[kY * p.stride + n], state[kVx * p.stride + n],
+                             state[kVy * p.stride + n], state[kVz * p.stride + n], kind == kNodeFree);
       }
-      barrier();  // also orders the shared-memory writes (compute shaders)
-      precise float total = 0.0;
-      uint all_nodes = 0u;
-      for (uint l = 0u; l < POND_CONTACT_LANES; ++l) {
-        total = total + lane_sums[l];
-        all_nodes += lane_counts[l];
-      }
-      if (all_nodes > 0u) common_v = contact_common_velocity(b.vy, total, all_nodes, c.node_over_body);
-      b.vy = contact_fall(common_v, c.gravity_dt);
-    }
+    lane_moments[lane] = m;
+  }
+  barrier();  // also orders the shared-memory writes (compute shaders)
+  WaterMoments total = moments_zero();
+  for (uint l = 0u; l < POND_CONTACT_LANES; ++l) total = moments_add(total, lane_moments[l]);
+  const WaterExchange e = water_exchange(total, b, c);
+  if (e.wet != 0u)
     for (uint lane = first_lane; lane < POND_CONTACT_LANES; lane += invocations) {
-      if (c.floating != 0u && lane_counts[lane] <= kCacheDepth) {  // pass 1 kept all of this lane's
-        for (uint m = 0u; m < lane_counts[lane]; ++m) {
-          const uint n = cached_node[lane + POND_CONTACT_LANES * m];
-          state[kY * p.stride + n] = cached_height[lane + POND_CONTACT_LANES * m];
-          state[kVy * p.stride + n] = common_v;
-        }
-        continue;
-      }
       const int lane_i = int(lane) / POND_CONTACT_LANE_SIDE, lane_j = int(lane) % POND_CONTACT_LANE_SIDE;
       for (int i = first_of_lane(i0, lane_i); i <= i1; i += POND_CONTACT_LANE_SIDE)
         for (int j = first_of_lane(j0, lane_j); j <= j1; j += POND_CONTACT_LANE_SIDE) {
-          if (!contact_may_touch(j, i, b.x, b.z, reach, limit2)) continue;
-          uint n;
-          float half_height, y;
-          if (inside_at(i, j, b, c.radius2, n, half_height, y)) {
-            state[kY * p.stride + n] = contact_surface(y, b.y, half_height);
-            state[kVy * p.stride + n] = common_v;
-          }
+          const float w = water_weight(j, i, b.x, b.z, c.inv_radius);
+          if (!(w > 0.0)) continue;
+          const uint n = uint(i) * p.pitch + uint(j), kind = kind_at(n);
+          if (kind == kNodeFixed) continue;
+          state[kVy * p.stride + n] = water_kick(state[kVy * p.stride + n], e.cy, w);
+          if (kind != kNodeFree) continue;
+          state[kVx * p.stride + n] = water_kick(state[kVx * p.stride + n], e.cx, w);
+          state[kVz * p.stride + n] = water_kick(state[kVz * p.stride + n], e.cz, w);
         }
     }
-    // Every lane read bodies[index] and the lane sums above; the next body sees these nodes.
-    memoryBarrierBuffer();
+  memoryBarrierBuffer();
+  barrier();  // every lane has read the lane moments; the next body sees these nodes
+  if (first_lane == 0u) sb[index] = e.body;
+}
+
+// One sub-iteration's time step: dt / n (a helper of its own: glslang's `precise` propagation
+// takes exponential time over move_bodies()'s loops).
+float sub_iteration_dt(int n) {
+  precise float dt_n = p.dt * inv_exact(float(n));
+  return dt_n;
+}
+
+// Node n's (row i, column j) half chord under a sphere centred at (bx, bz) of squared radius r2,
+// from the node's actual x and z (a helper for the same reason).
+float node_half_height(uint n, int i, int j, float bx, float bz, float r2) {
+  precise float x = float(j) + texelFetch(state1, int(n)).x;                 // ux
+  precise float z = float(i) + texelFetch(state1, int(2u * p.stride + n)).x;  // uz
+  return contact_half_height(x, z, bx, bz, r2);
+}
+
+// Step 2: every body through the substep, in sub-iterations (shared/body_motion.h).
+void move_bodies(uint first, uint invocations) {
+  for (uint i = first; i < p.count; i += invocations) moves[i] = body_prepare(sb[i], sc[i], sk[i], p.max_speed, p.dt);
+  barrier();
+  float most = 0.0;
+  for (uint i = 0u; i < p.count; ++i) most = moves[i] > most ? moves[i] : most;
+  const int n = motion_iterations(most);
+  const float dt_n = sub_iteration_dt(n);
+  for (int it = 0; it < n; ++it) {
+    for (uint i = first; i < p.count; i += invocations) sb[i] = body_advance(sb[i], sc[i], sk[i], dt_n, n - it);
     barrier();
-    if (first_lane == 0u) {
-      bodies[index].x = b.x;
-      bodies[index].y = b.y;
-      bodies[index].z = b.z;
-      bodies[index].vx = b.vx;
-      bodies[index].vy = b.vy;
-      bodies[index].vz = b.vz;
+    for (int pass = 0; pass < POND_PAIR_PASSES; ++pass) {
+      if (first == 0u) pairs_touched = collide_pairs(p.count, p.bounce_speed) ? 1u : 0u;
+      barrier();
+      for (uint i = first; i < p.count; i += invocations)
+        if (sc[i].floating != 0u) collide_land(sb[i], sc[i], p);
+      barrier();
+      const bool again = pairs_touched != 0u;
+      barrier();  // every invocation has read pairs_touched before the next pass writes it
+      if (!again) break;
     }
   }
+}
+
+// Step 3 for kinematic body `index`: the nodes inside it to its surface, with its vertical velocity.
+void push_out(uint index, uint first_lane, uint invocations, float reach) {
+  const BodyState b = sb[index];
+  const BodyConstants c = sc[index];
+  const float extent = contact_extent(c.radius, reach), limit2 = contact_touch_limit2(c.radius);
+  const int i0 = footprint_first(b.z, extent), i1 = footprint_last(b.z, extent, int(p.rows) - 1);
+  const int j0 = footprint_first(b.x, extent), j1 = footprint_last(b.x, extent, int(p.cols) - 1);
+  for (uint lane = first_lane; lane < POND_CONTACT_LANES; lane += invocations) {
+    const int lane_i = int(lane) / POND_CONTACT_LANE_SIDE, lane_j = int(lane) % POND_CONTACT_LANE_SIDE;
+    for (int i = first_of_lane(i0, lane_i); i <= i1; i += POND_CONTACT_LANE_SIDE)
+      for (int j = first_of_lane(j0, lane_j); j <= j1; j += POND_CONTACT_LANE_SIDE) {
+        if (!contact_may_touch(j, i, b.x, b.z, reach, limit2)) continue;
+        const uint n = uint(i) * p.pitch + uint(j);
+        const float half_height = node_half_height(n, i, j, b.x, b.z, c.radius2);
+        if (!(half_height > 0.0) || kind_at(n) == kNodeFixed) continue;
+        const float y = state[kY * p.stride + n];
+        if (!contact_inside(y, b.y, half_height)) continue;
+        state[kY * p.stride + n] = contact_surface(y, b.y, half_height);
+        state[kVy * p.stride + n] = b.vy;
+      }
+  }
+  memoryBarrierBuffer();
+  barrier();  // the next body sees these nodes
+}
+
+void main() {
+  const uint first = gl_LocalInvocationID.x, invocations = gl_WorkGroupSize.x;
+  const float reach = uintBitsToFloat(reach_bits);  // the step shader's, for this substep
+  for (uint i = first; i < p.count; i += invocations) {
+    sb[i] = body_at(i);
+    sc[i] = constants_at(i);
+    sk[i] = sc[i].floating != 0u ? sb[i] : scheduled_at(p.schedule_first + i);
+  }
+  barrier();
+  for (uint index = 0u; index < p.count; ++index)
+    if (sc[index].floating != 0u) exchange_with_water(index, first, invocations);
+  barrier();
+  move_bodies(first, invocations);
+  for (uint index = 0u; index < p.count; ++index)
+    if (sc[index].floating == 0u) push_out(index, first, invocations, reach);
+  for (uint i = first; i < p.count; i += invocations) {
+    sb[i] = canonical_body(sb[i]);
+    bodies[i].x = sb[i].x;
+    bodies[i].y = sb[i].y;
+    bodies[i].z = sb[i].z;
+    bodies[i].vx = sb[i].vx;
+    bodies[i].vy = sb[i].vy;
+    bodies[i].vz = sb[i].vz;
+    bodies[i].flags = sb[i].flags;
+  }
   barrier();  // every invocation has read the reach: the next substep's step shader starts from 0
-  if (first_lane == 0u) reach_bits = 0u;
+  if (first == 0u) reach_bits = 0u;
 }

@@ -1,35 +1,28 @@
-// The bodies in the water (spheres), declared once for GLSL (water_contact.comp) and C++ (the CPU
-// solver's sim/contact.cpp and the GPU solver), so both run the same contact with the same bits.
+// The bodies in the water (spheres): their state, constants, the contact pass's bindings and push
+// constants, declared once for GLSL (water_contact.comp) and C++ (sim/contact.cpp, the GPU solver).
+// The laws are in the headers beside this one, each included by both sides:
+//  - body_water.h: a floating body and the water (buoyancy, drag, displacement);
+//  - body_motion.h: every body's motion through a substep, its contacts with the other bodies, the
+//    pool's floor, its rim and the land;
+//  - body_kinematic.h: a kinematic body pushing the nodes out of itself.
 //
-// The contact, after every substep, body after body in scene order (grid units throughout):
-//  1. The body moves: a floating body by its velocity (p += v * dt), a kinematic one to its
-//     path's position at the end of the substep.
-//  2. Its footprint: the nodes whose actual position (j + ux, uy, i + uz) can be inside it. The
-//     springs can pull a node sideways by several spacings (a deep dent, a fast drag), so the
-//     footprint is bounded by the reach: the largest |ux| or |uz| of any node after the substep's
-//     integration, which the step kernels track (CPU and GPU). Rows [floor(z - e) - 1,
-//     ceil(z + e) + 1] and columns alike, e = r + reach; in it, a node whose rest position is
-//     farther than r (plus a rounding margin) from the sphere's axis even when moved by the reach
-//     on both axes is skipped before it is loaded (contact_may_touch). A node that is not fixed
-//     lies inside the body when its actual position does (contact_half_height).
-//  3. A floating body and the nodes inside it collide perfectly inelastically along y: they all
-//     take the common velocity  v_c = (M vb + m sum(v_i)) / (M + N m), which conserves their
-//     momentum and is stable for any mass ratio. The sum is a reduction in one fixed order: node
-//     (i, j) belongs to lane (i % 8) * 8 + j % 8 of the kContactLanes = 64 lanes, each lane adds
-//     its nodes in row-major order, then the lanes' sums are added in lane order. The lanes hang on
-//     the grid, not on the footprint, so the bits do not depend on how far the footprint reaches
-//     (nodes outside the body add nothing). A kinematic body has infinite mass: v_c = vb.
-//  4. Every node inside moves vertically to the sphere's surface (the nearer of the upper and
-//     lower cap) and takes v_c; the body takes v_c, then gravity: vy = v_c - gravity_dt (so a body
-//     at rest on the water has vy = 0 between substeps).
+// One substep's contact, after the water's integration (grid units throughout):
+//  1. every floating body in scene order exchanges with the water under it (body_water.h); a body
+//     sees the nodes the ones before it changed;
+//  2. every body moves (floating by its velocity, kinematic along its path) in sub-iterations short
+//     enough that nothing is crossed, resolving body against body in one fixed pair order, then
+//     each floating body against the land (body_motion.h);
+//  3. every kinematic body in scene order pushes the nodes inside it to its surface
+//     (body_kinematic.h).
 #ifndef POND_BODIES_H
 #define POND_BODIES_H
 
 #include "shared/exact_math.h"
 
-#define POND_CONTACT_LANES 64  // the reduction's lanes (partial sums), whatever the invocations
+#define POND_MAX_BODIES 64        // a scene's bodies at most (the contact pass keeps them in shared memory)
+#define POND_CONTACT_LANES 64     // the reductions' lanes (partial sums), whatever the invocations
 #define POND_CONTACT_LANE_SIDE 8  // lane of node (i, j): (i % 8) * 8 + j % 8
-#define POND_CONTACT_LOCAL_X 64  // default invocations of water_contact.comp; the solver sets it (below)
+#define POND_CONTACT_LOCAL_X 64   // default invocations of water_contact.comp; the solver sets it
 #define POND_SPEC_CONTACT_LOCAL_X 0  // specialization constant: water_contact.comp's local_size_x
 
 // Bindings of water_contact.comp.
@@ -38,9 +31,34 @@
 #define POND_CONTACT_BINDING_BODIES 2     // storage buffer: BodyState[], one per body
 #define POND_CONTACT_BINDING_CONSTANTS 3  // storage buffer: BodyConstants[], one per body
 #define POND_CONTACT_BINDING_SCHEDULE 4   // storage buffer: BodyState[], kinematic bodies per substep
-#define POND_CONTACT_BINDING_REACH 5     // storage buffer: uint, the reach's float bits (water_step.comp)
+#define POND_CONTACT_BINDING_REACH 5      // storage buffer: uint, the reach's float bits (water_step.comp)
 #define POND_CONTACT_BINDING_STATE1 6     // uniform texel buffer, R32_SFLOAT view of the current state
-#define POND_CONTACT_BINDINGS 7
+#define POND_CONTACT_BINDING_LAND 7       // storage buffer: uint[], the land's row runs (below)
+#define POND_CONTACT_BINDINGS 8
+
+// The land the bodies meet (body_motion.h), as runs of land cells per row of cells, built once per
+// model on the CPU (sim/basin.h): word 0 is the number of cell rows R (rows - 1); words 1 .. R + 1
+// are where each cell row's runs start and end (row i: runs k in [land[1 + i], land[2 + i])); run k
+// is the pair (first column, last column + 1) at words R + 2 + 2k and R + 3 + 2k, in column order.
+#define POND_LAND_HEADER(rows_of_cells) (2u + (rows_of_cells))
+
+// Restitution and friction of the contacts (body_motion.h). A wet ball bounces little off sand and
+// stone, more off another ball; below a normal speed of kBounceGravitySubsteps substeps' worth of
+// gravity it does not bounce at all, so that a resting contact stays at rest.
+#define POND_RESTITUTION_LAND 0.3f
+#define POND_RESTITUTION_BODY 0.5f
+#define POND_FRICTION_LAND 0.4f
+#define POND_FRICTION_BODY 0.2f
+#define POND_BOUNCE_GRAVITY_SUBSTEPS 4.0
+// The fastest a body may move: this many grid spacings a step. Faster bodies are refused at load
+// and clamped at run time (kBodyClamped).
+#define POND_MAX_SPACINGS_PER_STEP 10.0
+// Sub-iterations of a substep's motion move no body by more than this (grid units): the smallest
+// body (radius 1) and a land cell (1) cannot be crossed.
+#define POND_MAX_MOVE_PER_ITERATION 0.5
+#define POND_MAX_ITERATIONS 64
+// Passes over the pairs of bodies in one sub-iteration at most (a pass that separates none ends it).
+#define POND_PAIR_PASSES 4
 
 #ifdef __cplusplus
 #define POND_BODY_CONST inline constexpr
@@ -49,20 +67,29 @@ namespace pond::shared {
 #define POND_BODY_CONST const
 #endif
 
+POND_BODY_CONST int kMaxBodies = POND_MAX_BODIES;
 POND_BODY_CONST int kContactLanes = POND_CONTACT_LANES;
+POND_BODY_CONST uint kBodyClamped = 1u;  // BodyState::flags: its speed was clamped at least once
 
 // A body's centre and velocity in grid units (world / spacing): the state of one body.
 struct BodyState {
   float x, y, z;
   float vx, vy, vz;
+  uint flags;  // kBodyClamped, ...: what happened to it so far (the front end says so once)
 };
 
-// What does not change while a body moves, rounded once from double on the CPU.
+// What does not change while a body moves, rounded once from double on the CPU (sim/bodies.cpp).
 struct BodyConstants {
   float radius;
   float radius2;         // radius * radius
+  float inv_radius;      // 1 / radius: the water kernel's slope (body_water.h)
+  float inv_4r3;         // 1 / (4 radius^3): the submerged fraction of a cap (body_water.h)
   float node_over_body;  // node mass / body mass (0 for a kinematic body)
+  float body_over_node;  // body mass / node mass (0 for a kinematic body)
+  float inv_mass;        // 1 / body mass (world mass units; 0 for a kinematic body)
   float gravity_dt;      // gravity * dt / spacing: the velocity gravity adds in a substep
+  float buoyancy_dt;     // gravity_dt / density: what buoyancy adds in a substep, wholly submerged
+  float drag_dt;         // the linear drag's rate * dt, wholly submerged (body_water.h)
   uint floating;         // 1: floating, 0: kinematic
 };
 
@@ -75,8 +102,12 @@ struct ContactPush {
   uint stride;          // floats between the state's component arrays
   uint schedule_first;  // the entry of body 0 for this substep in the schedule
   float dt;             // substep length
-  float rim_x;          // (cols - 1) and (rows - 1): a floating body's centre stays over the grid
+  float rim_x;          // (cols - 1) and (rows - 1): the pond's walls
   float rim_z;
+  float floor_y;        // the pool's floor (-floor_depth / spacing)
+  float land_y;         // the top of the land (land_height / spacing)
+  float max_speed;      // POND_MAX_SPACINGS_PER_STEP per step, in grid units per time
+  float bounce_speed;   // the normal speed below which a contact does not bounce
 };
 
 #ifdef __cplusplus
@@ -84,127 +115,62 @@ struct ContactPush {
 #endif
 #undef POND_BODY_CONST
 
-// Below this squared half-chord a node is on the sphere's rim and counts as outside: the rsqrt
-// seed is only exact for normal floats.
-#define POND_CONTACT_MIN_H2 1e-20
-
 #ifdef __cplusplus
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #define POND_BODY_FN inline
+#define POND_INOUT(T) T&
 namespace pond::shared {
 using std::abs;
 using std::ceil;
 using std::floor;
 #else
 #define POND_BODY_FN
+#define POND_INOUT(T) inout T
 #endif
 
-// A floating body's motion through a substep (step 1 above). Its centre stays over the grid: the
-// rim (x in [0, rim_x], z in [0, rim_z]) stops it horizontally.
-POND_BODY_FN BodyState contact_move_floating(BodyState b, float dt, float rim_x, float rim_z) {
-  POND_PRECISE float x = b.x + b.vx * dt;
-  POND_PRECISE float y = b.y + b.vy * dt;
-  POND_PRECISE float z = b.z + b.vz * dt;
-  b.x = x;
-  b.y = y;
-  b.z = z;
-  if (b.x < 0.0f) { b.x = 0.0f; b.vx = 0.0f; }
-  if (b.x > rim_x) { b.x = rim_x; b.vx = 0.0f; }
-  if (b.z < 0.0f) { b.z = 0.0f; b.vz = 0.0f; }
-  if (b.z > rim_z) { b.z = rim_z; b.vz = 0.0f; }
+// 1 / x for a normal float x > 0, from the exact reciprocal square root (no division, so every
+// backend rounds it alike).
+POND_BODY_FN float inv_exact(float x) {
+  POND_PRECISE float r = rsqrt_exact(x, kRsqrtStepsExact);
+  POND_PRECISE float inv = r * r;
+  return inv;
+}
+
+// x with a zero made +0: the sign of a zero velocity may differ between two compilers' equivalent
+// expressions, and it is part of the compared bits. On the bits, since a compiler may drop x + 0.0.
+POND_BODY_FN float plus_zero(float x) {
+#ifdef __cplusplus
+  return std::bit_cast<std::uint32_t>(x) == 0x80000000u ? 0.0f : x;
+#else
+  return floatBitsToUint(x) == 0x80000000u ? 0.0 : x;
+#endif
+}
+
+// A body's state with every zero made +0 (plus_zero).
+POND_BODY_FN BodyState canonical_body(BodyState b) {
+  b.x = plus_zero(b.x);
+  b.y = plus_zero(b.y);
+  b.z = plus_zero(b.z);
+  b.vx = plus_zero(b.vx);
+  b.vy = plus_zero(b.vy);
+  b.vz = plus_zero(b.vz);
   return b;
 }
 
-// How far from a sphere's centre (radius r) the rest position of a node that can touch it lies
-// along one axis: r + reach (step 2).
-POND_BODY_FN float contact_extent(float r, float reach) {
-  POND_PRECISE float e = r + reach;
-  return e;
-}
-
-// The first and last index of a footprint along one axis (centre c, extent e = contact_extent):
-// [floor(c - e) - 1, ceil(c + e) + 1] clipped to [0, last]; empty (first > last) off the grid,
-// and the whole axis for a non-finite centre or reach (a blown-up state; the run then stops).
-POND_BODY_FN int footprint_first(float c, float e) {
-  POND_PRECISE float f = floor(c - e) - 1.0f;
-  return f > 0.0f ? (f < 1.0e9f ? int(f) : 1000000000) : 0;
-}
-POND_BODY_FN int footprint_last(float c, float e, int last) {
-  POND_PRECISE float f = ceil(c + e) + 1.0f;
-  return f < float(last) ? (f > -1.0f ? int(f) : -1) : last;
-}
-
-// The squared distance from a sphere's axis (radius r) beyond which a node's actual position
-// cannot be inside: (r + 1/16)^2, the 1/16 spacing far above every rounding of the tests.
-POND_BODY_FN float contact_touch_limit2(float r) {
-  POND_PRECISE float l = r + 0.0625f;
-  POND_PRECISE float l2 = l * l;
-  return l2;
-}
-
-// Whether the node resting at (j, i) can lie inside the sphere centred over (bx, bz) when no node
-// moves by more than `reach` along x or z: its rest offsets shrunk by the reach, then against
-// contact_touch_limit2. Integer positions and the reach only: no load.
-POND_BODY_FN bool contact_may_touch(int j, int i, float bx, float bz, float reach, float limit2) {
-  POND_PRECISE float ax = abs(float(j) - bx) - reach;
-  POND_PRECISE float az = abs(float(i) - bz) - reach;
-  ax = ax > 0.0f ? ax : 0.0f;
-  az = az > 0.0f ? az : 0.0f;
-  POND_PRECISE float d2 = ax * ax + az * az;
-  return d2 < limit2;
-}
-
-// The reduction lane of node (i, j), both >= 0 (step 3).
+// The reduction lane of node (i, j), both >= 0.
 POND_BODY_FN int contact_lane(int i, int j) {
   return (i % POND_CONTACT_LANE_SIDE) * POND_CONTACT_LANE_SIDE + j % POND_CONTACT_LANE_SIDE;
 }
 
-// Half the vertical chord of the sphere (centre bx, bz, squared radius r2) at the horizontal
-// position (x, z), or 0 where the chord is empty: a node there with |y - by| < the result is inside.
-POND_BODY_FN float contact_half_height(float x, float z, float bx, float bz, float r2) {
-  POND_PRECISE float dx = x - bx;
-  POND_PRECISE float dz = z - bz;
-  POND_PRECISE float d2 = dx * dx + dz * dz;
-  POND_PRECISE float h2 = r2 - d2;
-  if (!(h2 > POND_CONTACT_MIN_H2)) return 0.0f;
-  POND_PRECISE float half_height = h2 * rsqrt_exact(h2, kRsqrtStepsExact);
-  return half_height;
-}
-
-// The height a node at height y inside the sphere (centre height by, half chord `half_height`)
-// moves to: the nearer cap.
-POND_BODY_FN float contact_surface(float y, float by, float half_height) {
-  POND_PRECISE float up = by + half_height;
-  POND_PRECISE float down = by - half_height;
-  return y >= by ? up : down;
-}
-
-// A floating body's vertical velocity after the contact (step 4): the common velocity, then gravity.
-POND_BODY_FN float contact_fall(float common_v, float gravity_dt) {
-  POND_PRECISE float vy = common_v - gravity_dt;
-  return vy;
-}
-
-// Whether a node at height y is strictly inside the chord.
-POND_BODY_FN bool contact_inside(float y, float by, float half_height) {
-  POND_PRECISE float dy = y - by;
-  return dy < half_height && -dy < half_height;
-}
-
-// The common velocity of a floating body (velocity vb, k = node mass / body mass) and n nodes
-// whose velocities sum to `sum`: (vb + k sum) / (1 + n k). The division is the exact rsqrt
-// squared, so every backend rounds it alike.
-POND_BODY_FN float contact_common_velocity(float vb, float sum, uint n, float k) {
-  POND_PRECISE float momentum = vb + k * sum;
-  POND_PRECISE float mass = 1.0f + float(n) * k;
-  POND_PRECISE float r = rsqrt_exact(mass, kRsqrtStepsExact);
-  POND_PRECISE float inv_mass = r * r;
-  POND_PRECISE float common_v = momentum * inv_mass;
-  return common_v;
+// A float index clipped to [0, last] as an int; a non-finite or huge value clips too (a blown-up
+// state; the run then stops).
+POND_BODY_FN int clip_index(float f, int last) {
+  return f > 0.0f ? (f < float(last) ? int(f) : last) : 0;
 }
 
 #ifdef __cplusplus
 }  // namespace pond::shared
 #endif
-#undef POND_BODY_FN
 #endif

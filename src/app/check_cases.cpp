@@ -36,8 +36,18 @@ const CheckCase kCases[] = {
          "constraints": [{"kind": "fixed", "rows": [20, 23], "cols": [30, 34]}],
          "bodies": [{"motion": "kinematic", "radius": 3.0, "path": [[0, 5, 0.5, 10], [150, 40, 0.5, 10]]},
                     {"motion": "floating", "radius": 2.0, "mass": 30, "position": [12, 3, 22], "velocity": [0, -0.2, 0]},
-                    {"motion": "floating", "radius": 2.5, "mass": 20, "position": [15, 1, 24]}]})",
-     1500, "a dragged sphere and two overlapping floating balls (the contact pass and its reduction)"},
+                    {"motion": "floating", "radius": 2.5, "mass": 20, "position": [19, 1, 25]}]})",
+     1500, "a dragged sphere and two floating balls (the contact pass and its reductions)"},
+    {"floating",
+     R"({"grid": {"rows": 41, "cols": 57}, "physics": {"substeps": 2},
+         "constraints": [{"kind": "fixed", "rows": [18, 23], "cols": [26, 31]}],
+         "perturbations": [{"step": 20, "row": 10, "col": 10, "radius": 2.5, "amplitude": 1.5}],
+         "bodies": [{"motion": "floating", "radius": 2.0, "density": 0.5, "position": [8, 0, 30], "velocity": [0.8, 0, 0]},
+                    {"motion": "floating", "radius": 2.5, "density": 0.7, "position": [44, 0, 31], "velocity": [-0.8, 0, 0]},
+                    {"motion": "floating", "radius": 1.5, "density": 0.3, "position": [28, 4, 20]},
+                    {"motion": "floating", "radius": 1.5, "density": 2.0, "position": [14, 2, 10], "velocity": [0, -2, 0]},
+                    {"motion": "floating", "radius": 2.0, "density": 0.4, "position": [50, 0, 4], "velocity": [1, 0, -1]}]})",
+     1500, "floating balls: two collide head-on, one drops onto an island, one sinks, one runs into a corner"},
 };
 
 }  // namespace

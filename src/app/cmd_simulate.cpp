@@ -73,6 +73,8 @@ int run_simulate(const SimulateOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   advance_with_progress(session, o.steps);
   const sim::WaterState state = session.finite_state();
+  if (const std::string clamped = session.clamp_notice(state.bodies); !clamped.empty())
+    std::fprintf(stderr, "pond simulate: %s\n", clamped.c_str());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const sim::WaterModel& model = session.model();
   const std::string engine = session.solver().engine();

@@ -6,6 +6,7 @@
 #include "core/errors.h"
 #include "gpu/shaders.h"
 #include "shared/bodies.h"
+#include "sim/contact.h"
 
 namespace pond::gpu {
 namespace {
@@ -15,11 +16,13 @@ using shared::BodyConstants;
 using shared::BodyState;
 using shared::ContactPush;
 
-static_assert(sizeof(BodyState) == 24 && offsetof(BodyState, vx) == 12);
-static_assert(sizeof(BodyConstants) == 20 && offsetof(BodyConstants, gravity_dt) == 12 &&
-              offsetof(BodyConstants, floating) == 16);
-static_assert(sizeof(ContactPush) == 36 && offsetof(ContactPush, schedule_first) == 20 &&
-              offsetof(ContactPush, dt) == 24 && offsetof(ContactPush, rim_z) == 32);
+static_assert(sizeof(BodyState) == 28 && offsetof(BodyState, vx) == 12 && offsetof(BodyState, flags) == 24);
+static_assert(sizeof(BodyConstants) == 44 && offsetof(BodyConstants, inv_radius) == 8 &&
+              offsetof(BodyConstants, gravity_dt) == 28 && offsetof(BodyConstants, drag_dt) == 36 &&
+              offsetof(BodyConstants, floating) == 40);
+static_assert(sizeof(ContactPush) == 52 && offsetof(ContactPush, schedule_first) == 20 &&
+              offsetof(ContactPush, dt) == 24 && offsetof(ContactPush, rim_z) == 32 &&
+              offsetof(ContactPush, floor_y) == 36 && offsetof(ContactPush, bounce_speed) == 48);
 
 constexpr std::uint32_t kSets = 2;  // one per state buffer
 
@@ -51,6 +54,9 @@ BodyContact::BodyContact(const Context& ctx, const sim::WaterModel& model, std::
   readback_ = create_buffer(ctx_, count * sizeof(BodyState), BU::eTransferDst, MemoryUse::readback, "bodies readback");
   schedule_ = create_buffer(ctx_, static_cast<vk::DeviceSize>(max_substeps_) * regions * count * sizeof(BodyState),
                             BU::eStorageBuffer, MemoryUse::upload, "kinematic body schedule");
+  land_ = create_buffer(ctx_, model_.land.size() * sizeof(std::uint32_t), BU::eStorageBuffer | BU::eTransferDst,
+                        MemoryUse::device, "land runs");
+  upload(ctx_, land_, std::as_bytes(std::span(model_.land)));
 
   const vk::DescriptorPoolSize sizes[] = {
       {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = kSets * (POND_CONTACT_BINDINGS - 2)},
@@ -73,6 +79,7 @@ BodyContact::BodyContact(const Context& ctx, const sim::WaterModel& model, std::
     infos[POND_CONTACT_BINDING_CONSTANTS] = constants_.whole();
     infos[POND_CONTACT_BINDING_SCHEDULE] = schedule_.whole();
     infos[POND_CONTACT_BINDING_REACH] = reach.whole();
+    infos[POND_CONTACT_BINDING_LAND] = land_.whole();
     std::vector<vk::WriteDescriptorSet> writes;
     for (std::uint32_t b = 0; b < POND_CONTACT_BINDINGS; ++b)
       if (bindings[b] == vk::DescriptorType::eStorageBuffer)
@@ -139,16 +146,10 @@ void BodyContact::write_schedule(std::int64_t first_step, std::int64_t steps, st
 
 void BodyContact::record(const vk::raii::CommandBuffer& cmd, int cur, std::uint32_t region,
                          std::int64_t substep_in_batch) const {
-  const auto count = static_cast<std::uint32_t>(model_.bodies.size());
-  const ContactPush push{.count = count,
-                         .rows = static_cast<std::uint32_t>(model_.rows),
-                         .cols = static_cast<std::uint32_t>(model_.cols),
-                         .pitch = static_cast<std::uint32_t>(pitch_),
-                         .stride = static_cast<std::uint32_t>(stride_),
-                         .schedule_first = static_cast<std::uint32_t>(max_substeps_ * region + substep_in_batch) * count,
-                         .dt = model_.constants.dt,
-                         .rim_x = static_cast<float>(model_.cols - 1),
-                         .rim_z = static_cast<float>(model_.rows - 1)};
+  ContactPush push = sim::contact_push(model_);
+  push.pitch = static_cast<std::uint32_t>(pitch_);
+  push.stride = static_cast<std::uint32_t>(stride_);
+  push.schedule_first = static_cast<std::uint32_t>(max_substeps_ * region + substep_in_batch) * push.count;
   cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipe_.pipeline);
   cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipe_.layout, 0, *sets_[cur], nullptr);
   cmd.pushConstants<ContactPush>(*pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);

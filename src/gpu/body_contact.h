@@ -49,7 +49,7 @@ class BodyContact {
   std::size_t pitch_, stride_;
   std::int64_t max_substeps_;
   ComputePipeline pipe_;
-  Buffer bodies_, constants_, schedule_, readback_;  // readback_: read()'s, kept (the demo reads every frame)
+  Buffer bodies_, constants_, schedule_, land_, readback_;  // readback_: read()'s, kept (the demo reads every frame)
   std::vector<shared::BodyConstants> uploaded_;       // what constants_ holds
   vk::raii::DescriptorPool pool_ = nullptr;
   std::vector<vk::raii::DescriptorSet> sets_;  // sets_[c]: state buffer c

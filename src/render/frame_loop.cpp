@@ -67,7 +67,7 @@ struct FrameLoop::Impl {
       : ctx(c), scene(s), session(drawn), color_format(format), pipes(create_water_pipelines(c, format, kDepthFormat)),
         nearest_sampler(create_reflection_sampler(c)), shadow_sampler(create_shadow_sampler(c)),
         frames(c, *pipes.set_layout), water(c, drawn, gpu),
-        geometry(c, drawn.model(), s.view.floor_depth, s.view.land_height), caustics(c, drawn.model(), kFramesInFlight),
+        geometry(c, drawn.model()), caustics(c, drawn.model(), kFramesInFlight),
         generation(drawn.solver_generation()) {}
 
   FrameInfo info(const vk::raii::CommandBuffer& cmd, const Prepared& f) const {
@@ -95,8 +95,8 @@ struct FrameLoop::Impl {
     for (PassDrawable* p : drawables) p->prepare(base);
     std::vector<view::ShadowCaster> casters;
     for (const PassDrawable* p : drawables) p->add_shadow_casters(casters);
-    f.plan = view::plan_frame({f.view.effects, casters, f.view_proj, w, h, f.lighting.sun, scene.view.floor_depth,
-                               scene.view.land_height});
+    f.plan = view::plan_frame({f.view.effects, casters, f.view_proj, w, h, f.lighting.sun,
+                               session.model().basin.floor_depth, session.model().basin.land_height});
     ensure_shadow_map(ctx, d.shadow, f.plan.shadow ? f.plan.shadow->size : 0);  // made even when off: the set is whole
     const vk::Extent2D mirror = d.reflection.color.extent;
     geometry.cull_land(f.slot, f.view_proj, w, h, f.plan.shadow_rects,
@@ -104,12 +104,12 @@ struct FrameLoop::Impl {
     write_frame_set(ctx, d, *f.water.state, *f.water.normals, *caustics.map(f.slot).view, *nearest_sampler,
                     *shadow_sampler);
     caustics.bind(f.slot, *f.water.state, *f.water.normals);
-    const WaterFrame u = view::frame_uniforms({session.model(), scene.view, f.lighting, f.camera, f.view_proj,
+    const WaterFrame u = view::frame_uniforms({session.model(), f.lighting, f.camera, f.view_proj,
                                                f.water.stride, f.water.pitch, f.plan.shadow ? &*f.plan.shadow : nullptr});
     std::memcpy(d.uniforms.mapped, &u, sizeof u);
     d.uniforms.flush(ctx);
     record_early_passes(cmd, context(f, base), caustics,
-                        view::caustics_push(session.model(), view::unit(f.lighting.sun), scene.view.floor_depth,
+                        view::caustics_push(session.model(), view::unit(f.lighting.sun), session.model().basin.floor_depth,
                                             f.water.stride, f.water.pitch));
   }
 

@@ -106,7 +106,7 @@ struct TreeDrawable::Impl {
     }
     grow();
     const sim::WaterModel& model = loop.model();
-    const double land = loop.scene().view.land_height;
+    const double land = model.basin.land_height;
     for (std::size_t k = 0; k < spec.positions.size(); ++k) {
       Instance inst;
       const auto& rc = spec.positions[k];

@@ -48,10 +48,9 @@ VisibleGeometry::CullSource VisibleGeometry::cull_source(const std::vector<view:
   return c;
 }
 
-VisibleGeometry::VisibleGeometry(const gpu::Context& ctx, const sim::WaterModel& model, double floor_depth,
-                                 double land_height)
+VisibleGeometry::VisibleGeometry(const gpu::Context& ctx, const sim::WaterModel& model)
     : ctx_(ctx), lod_(model.rows, model.cols) {
-  const std::vector<view::LandVertex> mesh = view::build_land_mesh(model, floor_depth, land_height);
+  const std::vector<view::LandVertex> mesh = view::build_land_mesh(model);
   land_source_ = cull_source(mesh, 1.0f);
   land_ = device_buffer(ctx, std::as_bytes(std::span(mesh)), BU::eVertexBuffer, "land vertices");
   const std::vector<view::LandVertex> above = view::mirrored_walls(mesh);

@@ -34,8 +34,8 @@ void draw_range(const vk::raii::CommandBuffer& cmd, const view::IndexRange& rang
 
 class VisibleGeometry {
  public:
-  // The land of `model`'s node kinds around a floor `floor_depth` deep, `land_height` high.
-  VisibleGeometry(const gpu::Context& ctx, const sim::WaterModel& model, double floor_depth, double land_height);
+  // The land of `model`'s node kinds and basin.
+  VisibleGeometry(const gpu::Context& ctx, const sim::WaterModel& model);
 
   // The land's triangles for the view (and its shadow rectangles), and with `mirror` (the
   // reflection's size; 0 x 0: none) the mirrored walls', into slot's index buffers (finished).

@@ -8,6 +8,7 @@
 #include "core/output_file.h"
 #include "scene/body_fields.h"
 #include "scene/json_fields.h"
+#include "sim/model.h"
 #include "sim/stability.h"
 
 namespace pond::scene {
@@ -70,6 +71,8 @@ void parse_physics(JsonFields f, Physics& p) {
   p.substeps = static_cast<int>(f.integer("substeps", p.substeps, 1, kMaxSubsteps));
   p.rest_ratio = f.number("rest_ratio", p.rest_ratio);
   p.gravity = f.number("gravity", p.gravity);
+  p.water_density = f.number("water_density", p.water_density);
+  p.body_drag = f.number("body_drag", p.body_drag);
   if (const std::optional<Problem> problem = physics_problem(p)) f.fail(problem->key.c_str(), problem->what);
   f.finish();
 }
@@ -125,14 +128,37 @@ CameraSpec parse_camera(JsonFields f) {
   return c;
 }
 
-void parse_view(JsonFields f, ViewSpec& v) {
+// "basin": the floor and the land (sim::BasinSpec). Its keys were "view.floor_depth" and
+// "view.land_height", which still work (parse_view) but not beside the new ones. Returns how many
+// of the two keys it gave (bit 0: floor_depth, bit 1: land_height).
+constexpr const char* kBasinKeys[2] = {"floor_depth", "land_height"};
+
+double& basin_value(sim::BasinSpec& b, int k) { return k == 0 ? b.floor_depth : b.land_height; }
+
+int parse_basin(JsonFields f, sim::BasinSpec& b) {
+  int given = 0;
+  for (int k = 0; k < 2; ++k) {
+    if (!f.has(kBasinKeys[k])) continue;
+    basin_value(b, k) = f.number(kBasinKeys[k], basin_value(b, k));
+    if (!(basin_value(b, k) > 0.0)) f.fail(kBasinKeys[k], "must be positive");
+    given |= 1 << k;
+  }
+  f.finish();
+  return given;
+}
+
+void parse_view(JsonFields f, ViewSpec& v, sim::BasinSpec& basin, int basin_given) {
   v.steps_per_frame = f.integer("steps_per_frame", v.steps_per_frame, 0, 1000000);
   v.lod_tolerance_px = f.number("lod_tolerance", v.lod_tolerance_px);
   if (v.lod_tolerance_px < 0.0) f.fail("lod_tolerance", "must not be negative (0 = the full mesh)");
-  v.floor_depth = f.number("floor_depth", v.floor_depth);
-  if (!(v.floor_depth > 0.0)) f.fail("floor_depth", "must be positive");
-  v.land_height = f.number("land_height", v.land_height);
-  if (!(v.land_height > 0.0)) f.fail("land_height", "must be positive");
+  for (int k = 0; k < 2; ++k) {
+    const char* key = kBasinKeys[k];
+    if (!f.has(key)) continue;
+    if (basin_given & (1 << k))
+      f.fail(key, std::string("is given twice: it is basin.") + key + " now; remove view." + key);
+    basin_value(basin, k) = f.number(key, basin_value(basin, k));
+    if (!(basin_value(basin, k) > 0.0)) f.fail(key, std::string("must be positive (it is basin.") + key + " now)");
+  }
   v.effects.reflections = f.boolean("reflections", v.effects.reflections);
   v.effects.caustics = f.boolean("caustics", v.effects.caustics);
   v.effects.shadows = f.boolean("shadows", v.effects.shadows);
@@ -193,6 +219,26 @@ void parse_wind(JsonFields f, WindSpec& w) {
   f.finish();
 }
 
+// "bodies": each checked against the water (body_problem), then against each other.
+void parse_bodies(JsonFields& f, Scene& s, const std::string& source) {
+  const auto& bs = f.array("bodies");
+  if (bs.size() > kMaxBodies) f.fail("bodies", "holds more than " + std::to_string(kMaxBodies) + " bodies");
+  if (bs.empty()) return;
+  const std::vector<std::uint8_t> kinds = sim::node_kinds(s);
+  std::vector<std::array<double, 3>> starts;
+  for (std::size_t i = 0; i < bs.size(); ++i) {
+    JsonFields body(bs[i], "bodies[" + std::to_string(i) + "]", source);
+    s.bodies.push_back(parse_body(body));
+    if (const std::optional<Problem> p = body_problem(s.bodies.back(), s, kinds)) body.fail(p->key.c_str(), p->what);
+    starts.push_back(start_position(s.bodies.back()));
+  }
+  if (const std::optional<Overlap> o = first_overlap(s.bodies, starts)) {
+    const bool floating = s.bodies[o->index].motion == sim::BodyMotion::floating;
+    JsonFields(bs[o->index], "bodies[" + std::to_string(o->index) + "]", source)
+        .fail(floating ? "position" : "path[0]", o->what);
+  }
+}
+
 }  // namespace
 
 std::optional<Problem> physics_problem(const Physics& p) {
@@ -204,6 +250,9 @@ std::optional<Problem> physics_problem(const Physics& p) {
     return Problem{"substeps", "must be in [1, " + std::to_string(kMaxSubsteps) + "]"};
   if (!(p.rest_ratio > 0.0)) return Problem{"rest_ratio", "must be positive"};
   if (!(p.gravity >= 0.0 && std::isfinite(p.gravity))) return Problem{"gravity", "must be finite and not negative"};
+  if (!(p.water_density > 0.0 && std::isfinite(p.water_density))) return Problem{"water_density", "must be positive"};
+  if (!(p.body_drag >= 0.0 && std::isfinite(p.body_drag)))
+    return Problem{"body_drag", "must be finite and not negative"};
   const double bound = sim::stability_bound(p.mass, p.stiffness, p.damping);
   const double sub_dt = p.dt / p.substeps;
   if (!(sub_dt < bound)) {
@@ -261,12 +310,10 @@ Scene parse_scene(std::string_view json_text, const std::string& source) {
   for (std::size_t i = 0; i < ps.size(); ++i)
     s.perturbations.push_back(parse_perturbation(
         JsonFields(ps[i], "perturbations[" + std::to_string(i) + "]", source), s.grid));
-  const auto& bs = f.array("bodies");
-  if (bs.size() > kMaxBodies) f.fail("bodies", "holds more than " + std::to_string(kMaxBodies) + " bodies");
-  for (std::size_t i = 0; i < bs.size(); ++i)
-    s.bodies.push_back(parse_body(JsonFields(bs[i], "bodies[" + std::to_string(i) + "]", source), s.grid));
+  const int basin_given = parse_basin(JsonFields(f.object("basin"), "basin", source), s.basin);
+  parse_view(JsonFields(f.object("view"), "view", source), s.view, s.basin, basin_given);
+  parse_bodies(f, s, source);
   if (f.has("camera")) s.camera = parse_camera(JsonFields(f.object("camera"), "camera", source));
-  parse_view(JsonFields(f.object("view"), "view", source), s.view);
   parse_lighting(JsonFields(f.object("lighting"), "lighting", source), s.lighting);
   if (f.has("tree")) s.tree = parse_tree(JsonFields(f.object("tree"), "tree", source), s);
   parse_wind(JsonFields(f.object("wind"), "wind", source), s.wind);

@@ -1,6 +1,18 @@
 #include "sim/bodies.h"
 
+#include <numbers>
+
 namespace pond::sim {
+
+double sphere_volume(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
+
+double body_density(const BodySpec& b, const Physics& p) {
+  return b.density > 0.0 ? b.density : b.mass / (p.water_density * sphere_volume(b.radius));
+}
+
+double body_mass(const BodySpec& b, const Physics& p) {
+  return b.density > 0.0 ? b.density * p.water_density * sphere_volume(b.radius) : b.mass;
+}
 
 std::vector<BodyModel> build_bodies(const std::vector<BodySpec>& bodies, const Physics& physics,
                                     double h) {
@@ -8,16 +20,26 @@ std::vector<BodyModel> build_bodies(const std::vector<BodySpec>& bodies, const P
   std::vector<BodyModel> out;
   for (const BodySpec& b : bodies) {
     BodyModel m;
+    shared::BodyConstants& c = m.constants;
     const double r = b.radius / h;
-    m.constants.radius = static_cast<float>(r);
-    m.constants.radius2 = static_cast<float>(r * r);
-    m.constants.floating = b.motion == BodyMotion::floating ? 1u : 0u;
+    c.radius = static_cast<float>(r);
+    c.radius2 = static_cast<float>(r * r);
+    c.inv_radius = static_cast<float>(1.0 / r);
+    c.inv_4r3 = static_cast<float>(1.0 / (4.0 * r * r * r));
+    c.floating = b.motion == BodyMotion::floating ? 1u : 0u;
     if (m.floating()) {
-      m.constants.node_over_body = static_cast<float>(physics.mass / b.mass);
-      m.constants.gravity_dt = static_cast<float>(physics.gravity * sub_dt / h);
+      const double mass = body_mass(b, physics), density = body_density(b, physics);
+      const double gravity_dt = physics.gravity * sub_dt / h;
+      c.node_over_body = static_cast<float>(physics.mass / mass);
+      c.body_over_node = static_cast<float>(mass / physics.mass);
+      c.inv_mass = static_cast<float>(1.0 / mass);
+      c.gravity_dt = static_cast<float>(gravity_dt);
+      c.buoyancy_dt = static_cast<float>(gravity_dt / density);
+      // rho_w C A / M with A = pi r^2 and M = density rho_w 4/3 pi r^3, in grid units (C / h).
+      c.drag_dt = static_cast<float>(physics.body_drag / h * 3.0 / (4.0 * density * r) * sub_dt);
       m.initial = {static_cast<float>(b.position[0] / h), static_cast<float>(b.position[1] / h),
                    static_cast<float>(b.position[2] / h), static_cast<float>(b.velocity[0] / h),
-                   static_cast<float>(b.velocity[1] / h), static_cast<float>(b.velocity[2] / h)};
+                   static_cast<float>(b.velocity[1] / h), static_cast<float>(b.velocity[2] / h), 0u};
     } else {
       for (const PathKey& k : b.path)
         m.path.push_back({static_cast<double>(k.step), k.position[0] / h, k.position[1] / h,
@@ -48,7 +70,7 @@ BodyState kinematic_state(const BodyModel& body, std::int64_t step, int substep,
     }
   }
   return {static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]),
-          static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+          static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]), 0u};
 }
 
 std::vector<float> bodies_to_world(const std::vector<BodyState>& bodies, float h) {

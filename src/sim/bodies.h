@@ -1,7 +1,8 @@
 #pragma once
 // The bodies of a model (sim::BodySpec, built in grid units) and their motion that does not depend
 // on the water: a kinematic body's position along its path at any substep, and the bodies' state
-// in world units for output. The contact itself is in contact.h (CPU) and water_contact.comp (GPU).
+// in world units for output. The laws are in shaders/shared/body_*.h; sim/contact.h runs them on
+// the CPU, water_contact.comp on the GPU.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -20,6 +21,13 @@ struct BodyModel {
   BodyState initial{};  // at step 0
   bool floating() const { return constants.floating != 0u; }
 };
+
+// A sphere's volume (world units).
+double sphere_volume(double radius);
+// A floating body's density relative to water and its mass: from whichever of the two its spec
+// gives (BodySpec::density > 0: the density).
+double body_density(const BodySpec& body, const Physics& physics);
+double body_mass(const BodySpec& body, const Physics& physics);
 
 // The models of `bodies` under `physics` on a grid of spacing h. The specs are valid (src/scene
 // checked them).

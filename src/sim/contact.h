@@ -1,6 +1,6 @@
 #pragma once
-// The contact between the water and the bodies after a substep, on the CPU: the algorithm of
-// shared/bodies.h, in the same order and with the same roundings as water_contact.comp.
+// The bodies' contact after a substep, on the CPU: the laws of shaders/shared/body_*.h in the same
+// order and with the same roundings as water_contact.comp (shared/bodies.h gives the order).
 #include <cstdint>
 
 #include "sim/model.h"
@@ -8,10 +8,15 @@
 
 namespace pond::sim {
 
-// Moves the bodies through substep `substep` of step `step` and resolves their contact with the
-// water of `state` (the state after that substep's integration). `reach` bounds every node's
-// |ux| and |uz| (the step kernel's; horizontal_reach() computes it from a state).
+// Moves the bodies through substep `substep` of step `step` and resolves their contacts with the
+// water of `state` (the state after that substep's integration), each other and the land. `reach`
+// bounds every node's |ux| and |uz| (the step kernel's; horizontal_reach() computes it from a
+// state).
 void resolve_contacts(WaterState& state, const WaterModel& model, std::int64_t step, int substep, float reach);
+
+// The contact's constants of a model that do not depend on the GPU's layout (the GPU solver adds
+// pitch, stride and the schedule's entry).
+shared::ContactPush contact_push(const WaterModel& model);
 
 // The largest |ux| or |uz| of any node of `state` (what the step kernels track while they step).
 float horizontal_reach(const WaterState& state);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 #include "core/errors.h"
@@ -67,15 +68,44 @@ std::optional<std::size_t> first_blown_up_body(const WaterState& s) {
   return std::nullopt;
 }
 
+namespace {
+
+// "body B (floating, radius r)" in world units.
+std::string body_name(const WaterModel& m, std::size_t b) {
+  char text[96];
+  std::snprintf(text, sizeof text, "body %zu (%s, radius %g)", b, m.bodies[b].floating() ? "floating" : "kinematic",
+                static_cast<double>(m.bodies[b].constants.radius) * m.spacing);
+  return text;
+}
+
+// The first body whose reach (its radius plus a spacing) covers node n, if any.
+std::optional<std::size_t> body_over_node(const WaterState& s, const WaterModel& m, std::size_t n) {
+  const double i = static_cast<double>(n / static_cast<std::size_t>(m.cols)), j = static_cast<double>(n % static_cast<std::size_t>(m.cols));
+  for (std::size_t b = 0; b < s.bodies.size() && b < m.bodies.size(); ++b) {
+    const double dx = j - s.bodies[b].x, dz = i - s.bodies[b].z, r = m.bodies[b].constants.radius + 1.0;
+    if (dx * dx + dz * dz <= r * r) return b;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 void throw_blow_up(const WaterState& state, const WaterModel& model, const std::string& prefix) {
   if (!first_blown_up_node(state))
-    if (const std::optional<std::size_t> b = first_blown_up_body(state))
-      throw InputError(prefix + "body " + std::to_string(*b) +
-                       " blew up (non-finite position or velocity); lower physics.dt or raise physics.substeps");
+    if (const std::optional<std::size_t> b = first_blown_up_body(state)) {
+      const bool clamped = (state.bodies[*b].flags & shared::kBodyClamped) != 0u;
+      throw InputError(prefix + body_name(model, *b) + " blew up (non-finite position or velocity) " +
+                       (clamped ? "after its speed was clamped: it was thrown or pushed too hard; "
+                                : "though the water around it is finite; ") +
+                       "check its density or mass against the stable range in docs/bodies.md, or raise physics.substeps");
+    }
   const std::size_t n = first_blown_up_node(state).value_or(state.nodes() - 1);
   const auto cols = static_cast<std::size_t>(model.cols);
+  const std::optional<std::size_t> under = body_over_node(state, model, n);
   throw InputError(prefix + "the water blew up (non-finite velocity at node row " + std::to_string(n / cols) +
                    ", col " + std::to_string(n % cols) +
+                   (under ? ", under " + body_name(model, *under) + ": its pushes were too strong for the springs"
+                          : std::string()) +
                    "); lower physics.dt, raise physics.substeps or soften the perturbations");
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "shared/exact_math.h"
+#include "sim/basin.h"
 #include "sim/exact_exp.h"
 
 namespace pond::sim {
@@ -50,6 +51,23 @@ PerturbationTable tabulate(const Perturbation& p, const WaterModel& m) {
   return t;
 }
 
+std::vector<std::uint8_t> node_kinds(const WaterSpec& s) {
+  const int rows = s.grid.rows, cols = s.grid.cols;
+  std::vector<std::uint8_t> kinds(static_cast<std::size_t>(rows) * cols, static_cast<std::uint8_t>(NodeKind::free));
+  auto constrain = [&](int i, int j, NodeKind kind) {
+    auto& n = kinds[static_cast<std::size_t>(i) * cols + j];
+    n = std::max(n, static_cast<std::uint8_t>(kind));
+  };
+  if (s.border != NodeKind::free)
+    for (int i = 0; i < rows; ++i)
+      for (int j = 0; j < cols; ++j)
+        if (i == 0 || j == 0 || i == rows - 1 || j == cols - 1) constrain(i, j, s.border);
+  for (const ConstraintRect& c : s.constraints)
+    for (int i = c.row0; i <= c.row1; ++i)
+      for (int j = c.col0; j <= c.col1; ++j) constrain(i, j, c.kind);
+  return kinds;
+}
+
 WaterModel build_model(const WaterSpec& s, MathMode math) {
   WaterModel m;
   m.rows = s.grid.rows;
@@ -72,19 +90,9 @@ WaterModel build_model(const WaterSpec& s, MathMode math) {
   k.rest_edge = ratio == 1.0f ? calibrated_rest_length(edge, 1.0f, k.rsqrt_steps) : edge;
   k.rest_diag = ratio == 1.0f ? calibrated_rest_length(diag, 2.0f, k.rsqrt_steps) : diag;
 
-  // Constraints: the border kind on every border node, then the rectangles; fixed wins over vertical.
-  m.kinds.assign(m.nodes(), static_cast<std::uint8_t>(NodeKind::free));
-  auto constrain = [&](int i, int j, NodeKind kind) {
-    auto& n = m.kinds[static_cast<std::size_t>(i) * m.cols + j];
-    n = std::max(n, static_cast<std::uint8_t>(kind));
-  };
-  if (s.border != NodeKind::free)
-    for (int i = 0; i < m.rows; ++i)
-      for (int j = 0; j < m.cols; ++j)
-        if (i == 0 || j == 0 || i == m.rows - 1 || j == m.cols - 1) constrain(i, j, s.border);
-  for (const ConstraintRect& c : s.constraints)
-    for (int i = c.row0; i <= c.row1; ++i)
-      for (int j = c.col0; j <= c.col1; ++j) constrain(i, j, c.kind);
+  m.basin = s.basin;
+  m.kinds = node_kinds(s);
+  m.land = land_runs(m.kinds, m.rows, m.cols);
 
   for (const Perturbation& q : s.perturbations) m.perturbations.push_back(tabulate(q, m));
   m.bodies = build_bodies(s.bodies, s.physics, s.grid.spacing);

@@ -43,7 +43,9 @@ struct WaterModel {
   MathMode math = MathMode::exact;
   StepConstants constants;
   Physics physics;                      // the scene's values, for diagnostics
+  BasinSpec basin;                      // the floor and the land's height (world units)
   std::vector<std::uint8_t> kinds;      // NodeKind per node, row-major
+  std::vector<std::uint32_t> land;      // the land cells' runs (sim/basin.h), for the bodies
   std::vector<PerturbationTable> perturbations;  // sorted by step, scene order within a step
   std::vector<BodyModel> bodies;                 // scene order: the contact's order
 
@@ -51,6 +53,10 @@ struct WaterModel {
 };
 
 WaterModel build_model(const WaterSpec& water, MathMode math = MathMode::exact);
+
+// The node kinds of a scene's water, row-major: the border kind on every border node, then the
+// constraint rectangles; fixed wins over vertical.
+std::vector<std::uint8_t> node_kinds(const WaterSpec& water);
 
 // A rest length L such that 1 - L * rsqrt(l2) is exactly 0 for the rest squared length l2, so that
 // a grid at rest stays at rest bit for bit (the approximate rsqrt is not exactly 1/sqrt).

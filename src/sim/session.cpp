@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdio>
 
 #include "core/errors.h"
 #include "sim/cpu_solver.h"
@@ -80,7 +82,7 @@ void Session::splash(const Perturbation& splash) {
 }
 
 void Session::set_physics(const Physics& physics) {
-  if (rules_.physics) rules_.physics(physics);
+  if (rules_.physics) rules_.physics(physics, water_);
   const WaterState state = solver_->read_state();
   const std::int64_t steps = solver_->steps_done();
   water_.physics = physics;
@@ -116,8 +118,11 @@ void Session::set_solver(SolverChoice choice) {
 }
 
 void Session::add_body(const BodySpec& body) {
-  if (rules_.body) rules_.body(body, water_.grid, water_.bodies.size());
   WaterState state = solver_->read_state();
+  std::vector<std::array<double, 3>> at;  // where the bodies are now, not where the scene started them
+  const double h = water_.grid.spacing;
+  for (const BodyState& b : state.bodies) at.push_back({b.x * h, b.y * h, b.z * h});
+  if (rules_.body) rules_.body(body, water_, model().kinds, at);
   const std::int64_t steps = solver_->steps_done();
   water_.bodies.push_back(body);
   held_.resize(water_.bodies.size());
@@ -134,6 +139,8 @@ void Session::remove_body(std::size_t index) {
   state.bodies.erase(state.bodies.begin() + static_cast<std::ptrdiff_t>(index));
   held_.resize(water_.bodies.size() + 1);
   held_.erase(held_.begin() + static_cast<std::ptrdiff_t>(index));
+  const std::uint64_t below = (std::uint64_t{1} << index) - 1;  // index < 64
+  clamp_reported_ = (clamp_reported_ & below) | ((clamp_reported_ >> 1) & ~below);
   replace_solver(build(), state, steps);
 }
 
@@ -147,8 +154,12 @@ void Session::drag_body(std::size_t index, const std::array<double, 3>& target, 
   const std::array<double, 3> to{std::clamp(target[0], 0.0, (water_.grid.cols - 1) * h), target[1],
                                  std::clamp(target[2], 0.0, (water_.grid.rows - 1) * h)};
   const std::int64_t from = solver_->steps_done();
+  // No faster than a body may move (shared/bodies.h): a quick drag takes more steps.
+  const std::array<double, 3> d{to[0] - now.x * h, to[1] - now.y * h, to[2] - now.z * h};
+  const double spacings = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / h;
+  steps = std::max({steps, std::int64_t{1}, static_cast<std::int64_t>(std::ceil(spacings / POND_MAX_SPACINGS_PER_STEP))});
   spec.motion = BodyMotion::kinematic;
-  spec.path = {PathKey{from, {now.x * h, now.y * h, now.z * h}}, PathKey{from + std::max<std::int64_t>(1, steps), to}};
+  spec.path = {PathKey{from, {now.x * h, now.y * h, now.z * h}}, PathKey{from + steps, to}};
   solver_->set_body_models(build_bodies(water_.bodies, water_.physics, h));
 }
 
@@ -160,11 +171,16 @@ void Session::release_body(std::size_t index, const std::array<double, 3>& veloc
   BodySpec spec = *held_[index];
   held_[index].reset();
   if (spec.motion == BodyMotion::floating) {
+    // A throw faster than a body may move is clamped (and flagged, so the front end says so).
+    const double fastest = POND_MAX_SPACINGS_PER_STEP * h / water_.physics.dt;
+    const double speed = std::sqrt(velocity[0] * velocity[0] + velocity[1] * velocity[1] + velocity[2] * velocity[2]);
+    const double scale = speed > fastest ? fastest / speed : 1.0;
+    if (speed > fastest) now.flags |= shared::kBodyClamped;
     spec.position = {now.x * h, now.y * h, now.z * h};
-    spec.velocity = velocity;
-    now.vx = static_cast<float>(velocity[0] / h);
-    now.vy = static_cast<float>(velocity[1] / h);
-    now.vz = static_cast<float>(velocity[2] / h);
+    spec.velocity = {velocity[0] * scale, velocity[1] * scale, velocity[2] * scale};
+    now.vx = static_cast<float>(spec.velocity[0] / h);
+    now.vy = static_cast<float>(spec.velocity[1] / h);
+    now.vz = static_cast<float>(spec.velocity[2] / h);
   } else {
     spec.path = {PathKey{solver_->steps_done(), {now.x * h, now.y * h, now.z * h}}};
     now.vx = now.vy = now.vz = 0.0f;
@@ -176,6 +192,7 @@ void Session::release_body(std::size_t index, const std::array<double, 3>& veloc
 }
 
 void Session::reset() {
+  clamp_reported_ = 0;
   for (std::size_t b = 0; b < held_.size(); ++b)  // held bodies go back to their own motion
     if (held_[b]) water_.bodies[b] = *held_[b];
   held_.assign(water_.bodies.size(), std::nullopt);
@@ -195,6 +212,19 @@ WaterState Session::finite_state() const {
   WaterState state = solver_->read_state();
   if (first_blown_up_node(state) || first_blown_up_body(state)) throw_blow_up(state, model(), "");
   return state;
+}
+
+std::string Session::clamp_notice(const std::vector<BodyState>& bodies) {
+  std::string list;
+  for (std::size_t b = 0; b < bodies.size() && b < 64; ++b)
+    if ((bodies[b].flags & shared::kBodyClamped) != 0u && !(clamp_reported_ >> b & 1u)) {
+      clamp_reported_ |= std::uint64_t{1} << b;
+      list += (list.empty() ? "" : ", ") + std::to_string(b);
+    }
+  if (list.empty()) return {};
+  char limit[32];
+  std::snprintf(limit, sizeof limit, "%g", POND_MAX_SPACINGS_PER_STEP);
+  return "body " + list + " moved faster than " + limit + " grid spacings a step; its speed was clamped";
 }
 
 }  // namespace pond::sim

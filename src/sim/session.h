@@ -11,6 +11,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "sim/model.h"
@@ -24,9 +25,13 @@ namespace pond::sim {
 // The rules run-time edits must pass, each throwing InputError naming what is wrong: the scene
 // file's own checks (scene::session_spec fills them in). Empty: nothing is checked.
 struct EditRules {
-  std::function<void(const Physics&)> physics;
-  // A body that would be the scene's body number `index` on `grid` (its count included).
-  std::function<void(const BodySpec&, const GridSpec& grid, std::size_t index)> body;
+  // `physics` for `water` (whose floating bodies' densities it must keep stable).
+  std::function<void(const Physics& physics, const WaterSpec& water)> physics;
+  // A body that would join `water` as its body number water.bodies.size(), beside the bodies there
+  // (now at `positions`, world units), on nodes of `kinds`.
+  std::function<void(const BodySpec& body, const WaterSpec& water, const std::vector<std::uint8_t>& kinds,
+                     const std::vector<std::array<double, 3>>& positions)>
+      body;
 };
 
 // What a session simulates: the water, the wind over it and its trees, the sun.
@@ -80,6 +85,9 @@ class Session {
   // a kinematic one stays there.
   void release_body(std::size_t index, const std::array<double, 3>& velocity);
   bool held(std::size_t index) const { return index < held_.size() && held_[index].has_value(); }
+  // One line naming the bodies of `bodies` (this session's, as bodies() gave them) whose speed was
+  // clamped (shared::kBodyClamped) and not yet named by an earlier call; "" when there are none.
+  std::string clamp_notice(const std::vector<BodyState>& bodies);
   void reset();                          // rest, step 0: the scene's perturbations replay
   // Replaces the state and the step count (same grid; InternalError otherwise).
   void set_state(const WaterState& state, std::int64_t steps);
@@ -122,6 +130,7 @@ class Session {
   GpuSolverFactory gpu_;
   std::int64_t ripples_until_ = 0;  // the model holds the wind ripples of steps below this
   std::vector<std::optional<BodySpec>> held_;  // per body: its spec before drag_body() took it
+  std::uint64_t clamp_reported_ = 0;           // bit b: clamp_notice() named body b
   std::unique_ptr<Solver> solver_;
   tree::Wind wind_;
   std::array<double, 3> sun_;

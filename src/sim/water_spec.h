@@ -27,6 +27,16 @@ struct Physics {
   int substeps = 1;
   double rest_ratio = 1.0;
   double gravity = 0.05;  // world units / time^2, on the floating bodies only (not the membrane)
+  double water_density = 1.0;  // mass per unit volume: a floating body's density is relative to it
+  double body_drag = 0.05;     // C of the bodies' linear drag, rho_w C A v (world units / time)
+};
+
+// The solid the water lies in (world units), for the picture and for the bodies alike: a flat
+// floor floor_depth below the rest plane; land land_height above it wherever all four corner nodes
+// of a grid cell are fixed (islands) and all around the grid (the rim and the land beyond it).
+struct BasinSpec {
+  double floor_depth = 3.0;
+  double land_height = 1.0;
 };
 
 struct ConstraintRect {
@@ -56,7 +66,8 @@ struct BodySpec {
   BodyShape shape = BodyShape::sphere;
   BodyMotion motion = BodyMotion::floating;
   double radius = 1.0;
-  double mass = 1.0;                      // floating only
+  double mass = 1.0;                      // floating only: mass = density * water_density * volume
+  double density = 0.0;                   // floating only, relative to water (0: from the mass)
   std::array<double, 3> position{};       // floating: at step 0
   std::array<double, 3> velocity{};       // floating: at step 0
   std::vector<PathKey> path;              // kinematic: steps strictly increasing, held after the last
@@ -65,6 +76,7 @@ struct BodySpec {
 struct WaterSpec {
   GridSpec grid;
   Physics physics;
+  BasinSpec basin;
   NodeKind border = NodeKind::fixed;
   std::vector<ConstraintRect> constraints;
   std::vector<Perturbation> perturbations;

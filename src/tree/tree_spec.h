@@ -15,7 +15,7 @@ struct TreeSpec {
   std::uint64_t seed = 1;         // the skeleton's and the twig jitter's random streams
   double height = 6.0;            // world units from the base to the highest rest vertex
   // [row, col] grid indices (fractional allowed) of each instance's base; its foot is at
-  // view.land_height. Default: the centre of the first fixed constraint (the island).
+  // basin.land_height. Default: the centre of the first fixed constraint (the island).
   std::vector<std::array<double, 2>> positions;
   TreeBend bend = TreeBend::article;
   TreeDraw draw = TreeDraw::tubes;

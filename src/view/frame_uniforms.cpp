@@ -35,14 +35,14 @@ wr::WaterFrame frame_uniforms(const FrameUniformsInput& in) {
   f.sky = v4(l.sky);
   f.water = v4(l.water);
   f.ground = v4(l.ground);
-  POND_FRAME_FLOOR_DEPTH(f) = static_cast<float>(in.view.floor_depth);
-  POND_FRAME_LAND_HEIGHT(f) = static_cast<float>(in.view.land_height);
+  POND_FRAME_FLOOR_DEPTH(f) = static_cast<float>(model.basin.floor_depth);
+  POND_FRAME_LAND_HEIGHT(f) = static_cast<float>(model.basin.land_height);
   f.wire = {0.02f, 0.05f, 0.08f, 0.55f};
   POND_FRAME_ROWS(f) = static_cast<std::uint32_t>(model.rows);
   POND_FRAME_COLS(f) = static_cast<std::uint32_t>(model.cols);
   POND_FRAME_STATE_STRIDE(f) = in.stride;
   POND_FRAME_STATE_PITCH(f) = in.pitch;
-  const SkyBox sky = sky_box(model, in.view.land_height);
+  const SkyBox sky = sky_box(model);
   f.sky_lo = v4(sky.lo);
   f.sky_hi = v4(sky.hi);
   f.screen = {1.0f / static_cast<float>(in.camera.width), 1.0f / static_cast<float>(in.camera.height), kReflectionShift,

@@ -23,7 +23,6 @@ inline constexpr float kReflectionShift = 0.05f;
 // arrays, nodes between its rows).
 struct FrameUniformsInput {
   const sim::WaterModel& model;
-  const ViewSpec& view;
   const LightingSpec& lighting;
   const lod::Camera& camera;
   const std::array<float, 16>& view_proj;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "sim/basin.h"
+
 namespace pond::view {
 namespace {
 
@@ -34,18 +36,15 @@ void wall(std::vector<LandVertex>& out, P a, P b, double top, double bottom, P n
 
 }  // namespace
 
-std::vector<LandVertex> build_land_mesh(const sim::WaterModel& model, double floor_depth, double land_height) {
+std::vector<LandVertex> build_land_mesh(const sim::WaterModel& model) {
   const int rows = model.rows, cols = model.cols;
-  const double h = model.spacing, top = land_height, bottom = -floor_depth;
-  auto fixed = [&](int i, int j) {
-    return model.kinds[static_cast<std::size_t>(i) * cols + j] == static_cast<std::uint8_t>(sim::NodeKind::fixed);
-  };
+  const double h = model.spacing, top = model.basin.land_height, bottom = -model.basin.floor_depth;
   // land[i][j]: cell (i, j) spans nodes i..i+1, j..j+1.
   const int cr = rows - 1, cc = cols - 1;
   std::vector<std::uint8_t> land(static_cast<std::size_t>(cr) * cc);
   for (int i = 0; i < cr; ++i)
     for (int j = 0; j < cc; ++j)
-      land[static_cast<std::size_t>(i) * cc + j] = fixed(i, j) && fixed(i, j + 1) && fixed(i + 1, j) && fixed(i + 1, j + 1);
+      land[static_cast<std::size_t>(i) * cc + j] = sim::land_cell(model.kinds, cols, i, j);
   auto is_land = [&](int i, int j) { return land[static_cast<std::size_t>(i) * cc + j] != 0; };
 
   std::vector<LandVertex> out;
@@ -82,8 +81,8 @@ std::vector<LandVertex> build_land_mesh(const sim::WaterModel& model, double flo
   return out;
 }
 
-SkyBox sky_box(const sim::WaterModel& model, double land_height) {
-  const double h = model.spacing, w = (model.cols - 1) * h, d = (model.rows - 1) * h, m = 4.0 * std::max(w, d);
+SkyBox sky_box(const sim::WaterModel& model) {
+  const double land_height = model.basin.land_height, h = model.spacing, w = (model.cols - 1) * h, d = (model.rows - 1) * h, m = 4.0 * std::max(w, d);
   return {{-m, land_height, -m}, {w + m, land_height + 1.5 * std::max(w, d), d + m}};
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// The land around and inside the pond, from the node kinds: what the water is held by.
+// The land around and inside the pond (sim/basin.h: the model's basin over its node kinds), drawn.
 //  - islands: every grid cell whose four corner nodes are fixed is land, its top at land_height;
 //    where land meets water a wall goes down to the floor (so the shoreline is where the water
 //    surface cuts the wall);
@@ -17,14 +17,14 @@ namespace pond::view {
 
 using LandVertex = shared::water_render::LandVertex;  // static_asserts: render/render_layout.h
 
-std::vector<LandVertex> build_land_mesh(const sim::WaterModel& model, double floor_depth, double land_height);
+std::vector<LandVertex> build_land_mesh(const sim::WaterModel& model);
 
 // The box the sky is drawn on (shaders/sky.vert): walls standing on the land's outer edge, from
 // land_height up to a lid 1.5 pond sizes higher, so it covers exactly what lies past the land.
 struct SkyBox {
   std::array<double, 3> lo, hi;
 };
-SkyBox sky_box(const sim::WaterModel& model, double land_height);
+SkyBox sky_box(const sim::WaterModel& model);
 
 // What of a build_land_mesh() mesh the planar reflection mirrors (render/reflection_pass.h): the
 // walls' triangles at or above the water's rest plane y = 0 (the walls are cut there, so nothing

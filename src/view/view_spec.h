@@ -21,12 +21,11 @@ struct Effects {
   bool shadows = true;      // the sun's shadows of the trees and the bodies on the land and the water
 };
 
-// "view": what a rendered frame advances and how the pond around the water is shaped.
+// "view": what a rendered frame advances and which effects it draws (the floor and the land are
+// the water's: sim::BasinSpec, the scene's "basin").
 struct ViewSpec {
   std::int64_t steps_per_frame = 1;  // simulation steps per rendered frame
   double lod_tolerance_px = 1.0;     // LOD screen-space error bound; 0 = the full mesh
-  double floor_depth = 3.0;          // the pool floor lies this far below the rest surface
-  double land_height = 1.0;          // shore, islands and pool rim rise this far above it
   Effects effects;                   // "reflections", "caustics", "shadows": true | false
 };
 

@@ -77,5 +77,22 @@ TEST(CheckCases, TheBodiesCaseTouchesTheWater) {
   EXPECT_FALSE(sim::first_blown_up_body(solver.state()));
 }
 
+// The floating case: the balls float apart after their collision, one rests on the island, the
+// dense one on the floor.
+TEST(CheckCases, TheFloatingCaseCollidesFloatsAndSinks) {
+  const CheckCase& c = find("floating");
+  const sim::WaterModel model = model_of(c);
+  sim::CpuSolver solver(model, sim::Backend::scalar, 1);
+  solver.advance(c.steps);
+  const auto& b = solver.state().bodies;
+  ASSERT_EQ(b.size(), 5u);
+  const float dx = b[1].x - b[0].x, dy = b[1].y - b[0].y, dz = b[1].z - b[0].z;
+  EXPECT_GT(std::sqrt(dx * dx + dy * dy + dz * dz), 4.5f - 0.02f) << "no more than 1 % overlap";
+  EXPECT_LT(b[0].x, 26.0f) << "the head-on pair bounced";
+  EXPECT_NEAR(b[2].y, 1.0f + 1.5f, 0.05f) << "on the island";
+  EXPECT_NEAR(b[3].y, -3.0f + 1.5f, 0.05f) << "on the floor";
+  EXPECT_FALSE(sim::first_blown_up_body(solver.state()));
+}
+
 }  // namespace
 }  // namespace pond::app

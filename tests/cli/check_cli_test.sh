@@ -14,7 +14,7 @@ for c in paper_pond vertical_border_islands denormal_decay every_perturbation_ki
 done
 echo "$out" | grep -q "^float controls, 32-bit: shaderDenormPreserveFloat32 " || fail "no float controls line"
 echo "$out" | grep -q "^bit-identity with the CPU: " || fail "no identity line"
-echo "$out" | grep -q "^all 6 cases bit-identical$" || fail "no summary line"
+echo "$out" | grep -q "^all 7 cases bit-identical$" || fail "no summary line"
 [ "$(echo "$out" | head -n 1)" = "$("$pond" --version)" ] || fail "the report does not start with the version line"
 for bad in "--steps 0" "--steps x" "--device no-such-device-anywhere" "--frobnicate"; do
   "$pond" check $bad > /dev/null 2> /tmp/check_err.$$

@@ -44,7 +44,7 @@ VK_INSTANCE_LAYERS="${validation_dir:+VK_LAYER_KHRONOS_validation:}VK_LAYER_POND
   "$pond" check --steps 20 > out 2> err || fail "check under the installed layer: exit $?: $(cat out err)"
 [ "$(head -n 1 out)" = "$version" ] || fail "check's report does not start with the version: $(head -n 1 out)"
 grep -q "^device: .*(DiscreteGpu)" out || fail "check did not run under the layer: $(grep '^device' out)"
-grep -q "^all 6 cases bit-identical$" out || fail "check under the layer: $(cat out)"
+grep -q "^all 7 cases bit-identical$" out || fail "check under the layer: $(cat out)"
 grep -qi "validation error\|VUID" out err && fail "validation messages: $(head -c 2000 out)"
 
 [ $failures -eq 0 ] && echo "install: all checks passed ($version)"

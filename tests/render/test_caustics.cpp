@@ -81,7 +81,7 @@ class CausticsTest : public GpuTest {
     render::CausticsPass pass(ctx(), session.model(), 1);
     pass.bind(0, *b.state, *b.normals);
     const std::array<double, 3> sun = unit(scene.lighting.sun);
-    const render::CausticsPush push = view::caustics_push(session.model(), sun, scene.view.floor_depth, b.stride, b.pitch);
+    const render::CausticsPush push = view::caustics_push(session.model(), sun, scene.basin.floor_depth, b.stride, b.pitch);
     ctx().submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
       using S = vk::PipelineStageFlagBits2;
       using A = vk::AccessFlagBits2;

@@ -56,7 +56,7 @@ TEST_F(ReflectionTest, TrunkIsMirroredAboutTheWaterlineAndGoneWithoutReflections
   lod::Camera camera = view::scene_camera(scene.camera, model, kWidth, kHeight);
   const std::array<float, 16> vp = view::view_projection(camera, model);
   const double x = scene.tree->positions[0][1] * model.spacing, z = scene.tree->positions[0][0] * model.spacing;
-  const double land = scene.view.land_height;
+  const double land = scene.basin.land_height;
   // The trunk from 0.6 above its foot up: its points mirrored to -y. Lower ones are hidden behind
   // the island's own mirror image (its near wall, 2.5 units in front of the trunk), as they would be
   // in a real mirror; these project below it, on water in front of the island.

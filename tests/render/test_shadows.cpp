@@ -73,7 +73,7 @@ TEST_F(ShadowTest, TrunkShadowFallsAwayFromTheSunAndGoesWithShadowsOff) {
   const std::array<float, 16> vp = view_proj(kCalmIsland);
   const double h = sim::build_model(scene).spacing;
   const double x = scene.tree->positions[0][1] * h, z = scene.tree->positions[0][0] * h;
-  const double land = scene.view.land_height;
+  const double land = scene.basin.land_height;
   const auto step = shadow_step(scene.lighting.sun);
   // Trunk points 0.15 .. 0.9 above its foot: their shadows on the island's top (which ends 2.5
   // units from the trunk toward +z), and, mirrored through the foot, the points as far toward the
@@ -121,7 +121,7 @@ TEST_F(ShadowTest, SphereShadowsTheFloorThroughCalmWater) {
   // by a tenth of a unit).
   const double sx = c[0] + step[0] * c[1], sz = c[2] + step[1] * c[1];
   const std::array<float, 3> t = view::sunlight_in_water(sun);
-  const double depth = scene.view.floor_depth, run = depth / -t[1];
+  const double depth = scene.basin.floor_depth, run = depth / -t[1];
   const double fx = sx + t[0] * run, fz = sz + t[2] * run;
   int checked = 0, darker = 0, sun_side_changed = 0;
   for (double dx = -0.6; dx <= 0.6; dx += 0.3)

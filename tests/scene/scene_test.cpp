@@ -168,8 +168,8 @@ TEST(Scene, RenderKeysParse) {
   EXPECT_EQ(s.camera->fovy_degrees, 50);
   EXPECT_EQ(s.view.steps_per_frame, 3);
   EXPECT_EQ(s.view.lod_tolerance_px, 0);
-  EXPECT_EQ(s.view.floor_depth, 2.5);
-  EXPECT_EQ(s.view.land_height, 1);
+  EXPECT_EQ(s.basin.floor_depth, 2.5);  // the keys' old place still works
+  EXPECT_EQ(s.basin.land_height, 1);
   EXPECT_FALSE(s.view.effects.reflections);
   EXPECT_FALSE(s.view.effects.caustics);
   EXPECT_FALSE(s.view.effects.shadows);
@@ -203,8 +203,12 @@ TEST(Scene, RenderKeyErrorsNameThePath) {
   EXPECT_TRUE(has(R"({"view": {"steps_per_frame": 1.5}})", "view.steps_per_frame must be an integer"));
   EXPECT_TRUE(has(R"({"view": {"lod_tolerance": -1}})", "view.lod_tolerance must not be negative"));
   EXPECT_TRUE(has(R"({"view": {"lod_tolerance": "1"}})", "view.lod_tolerance must be a number, not a string"));
-  EXPECT_TRUE(has(R"({"view": {"floor_depth": 0}})", "view.floor_depth must be positive"));
-  EXPECT_TRUE(has(R"({"view": {"land_height": -1}})", "view.land_height must be positive"));
+  EXPECT_TRUE(has(R"({"view": {"floor_depth": 0}})", "view.floor_depth must be positive (it is basin.floor_depth now)"));
+  EXPECT_TRUE(has(R"({"view": {"land_height": -1}})", "view.land_height must be positive (it is basin.land_height now)"));
+  EXPECT_TRUE(has(R"({"basin": {"floor_depth": 0}})", "basin.floor_depth must be positive"));
+  EXPECT_TRUE(has(R"({"basin": {"land_height": 2}, "view": {"land_height": 2}})",
+                  "view.land_height is given twice: it is basin.land_height now"));
+  EXPECT_TRUE(has(R"({"basin": {"depth": 2}})", "basin.depth is not a known key"));
   EXPECT_TRUE(has(R"({"view": {"wireframe": true}})", "view.wireframe is not a known key"));
   EXPECT_TRUE(has(R"({"view": {"reflections": 1}})", "view.reflections must be true or false, not a number"));
   EXPECT_TRUE(has(R"({"view": {"reflections": "on"}})", "view.reflections must be true or false, not a string"));

@@ -1,7 +1,7 @@
 #pragma once
 // A state that today's membrane reaches only with a deep dent or a fast drag, made directly: every
 // node of a free 41x41 pool moved 6.5 spacings along -x (so no spring is stretched and nothing
-// moves in a step) and 0.2 down, under a floating ball of radius 3 at (20, 0.5, 20). The nodes
+// moves in a step) and 0.2 down, under a kinematic ball of radius 3 held at (20, 0.5, 20). The nodes
 // inside the ball rest at columns 24..29, up to 5 columns past a footprint of radius + 1 spacing
 // around the ball (columns 16..24): the contact must find them by their actual positions.
 #include "scene/scene.h"
@@ -23,10 +23,9 @@ inline ShiftedPool shifted_pool() {
   s.grid.rows = s.grid.cols = ShiftedPool::kSize;
   s.border = sim::NodeKind::free;
   sim::BodySpec ball;
-  ball.motion = sim::BodyMotion::floating;
+  ball.motion = sim::BodyMotion::kinematic;
   ball.radius = 3.0;
-  ball.mass = 30.0;
-  ball.position = {20.0, 0.5, 20.0};
+  ball.path = {sim::PathKey{0, {20.0, 0.5, 20.0}}};
   s.bodies.push_back(ball);
   ShiftedPool p{sim::build_model(s), {}};
   p.state = sim::rest_state(p.model);

@@ -242,7 +242,7 @@ struct DemoView {
     longest_leaf = mesh.longest_leaf;
     scale = static_cast<float>(spec.height) / mesh.rest_height;
     const auto& rc = spec.positions.at(0);  // row, col (the loader's default: the island's centre)
-    foot = {static_cast<float>(rc[1] * model.spacing), static_cast<float>(scene.view.land_height),
+    foot = {static_cast<float>(rc[1] * model.spacing), static_cast<float>(scene.basin.land_height),
             static_cast<float>(rc[0] * model.spacing)};
   }
 

@@ -27,7 +27,7 @@ struct Frame {
 
   FramePlan plan(const Effects& effects, const std::vector<ShadowCaster>& casters) const {
     return plan_frame({effects, casters, view_proj, camera.width, camera.height, scene.lighting.sun,
-                       scene.view.floor_depth, scene.view.land_height});
+                       scene.basin.floor_depth, scene.basin.land_height});
   }
 };
 
@@ -59,8 +59,8 @@ TEST(FramePlan, ShadowRectanglesHoldTheCastersShadowAndDoNotOverlap) {
   ASSERT_FALSE(p.shadow_rects.empty());
   // Each caster's own rectangle lies inside a merged one.
   for (const ShadowCaster& c : casters) {
-    const auto r = shadow_pixels(*p.shadow, c, f.view_proj, f.camera.width, f.camera.height, -f.scene.view.floor_depth,
-                                 f.scene.view.land_height + kShadowWaveMargin);
+    const auto r = shadow_pixels(*p.shadow, c, f.view_proj, f.camera.width, f.camera.height, -f.scene.basin.floor_depth,
+                                 f.scene.basin.land_height + kShadowWaveMargin);
     ASSERT_TRUE(r.has_value());
     bool held = false;
     for (const PixelRect& m : p.shadow_rects) held = held || (m.x0 <= r->x0 && m.y0 <= r->y0 && r->x1 <= m.x1 && r->y1 <= m.y1);
@@ -90,15 +90,15 @@ TEST(FrameUniforms, CarryTheCameraLightPondAndStateLayout) {
   const Frame f;
   view::LightingSpec lighting = f.scene.lighting;
   lighting.sun = {0.0, 2.0, 0.0};  // any length: the uniforms carry it normalized
-  const auto u = frame_uniforms({f.model, f.scene.view, lighting, f.camera, f.view_proj, 2608, 52, nullptr});
+  const auto u = frame_uniforms({f.model, lighting, f.camera, f.view_proj, 2608, 52, nullptr});
   EXPECT_EQ(std::memcmp(u.view_proj.m, f.view_proj.data(), sizeof u.view_proj.m), 0);
   EXPECT_FLOAT_EQ(u.eye.x, static_cast<float>(f.camera.eye[0]));
   EXPECT_FLOAT_EQ(u.eye.z, static_cast<float>(f.camera.eye[2]));
   EXPECT_FLOAT_EQ(POND_FRAME_GRID_SPACING(u), f.model.spacing);
   EXPECT_FLOAT_EQ(u.sun.y, 1.0f);
   EXPECT_FLOAT_EQ(u.sun.x, 0.0f);
-  EXPECT_FLOAT_EQ(POND_FRAME_FLOOR_DEPTH(u), static_cast<float>(f.scene.view.floor_depth));
-  EXPECT_FLOAT_EQ(POND_FRAME_LAND_HEIGHT(u), static_cast<float>(f.scene.view.land_height));
+  EXPECT_FLOAT_EQ(POND_FRAME_FLOOR_DEPTH(u), static_cast<float>(f.scene.basin.floor_depth));
+  EXPECT_FLOAT_EQ(POND_FRAME_LAND_HEIGHT(u), static_cast<float>(f.scene.basin.land_height));
   EXPECT_EQ(POND_FRAME_ROWS(u), static_cast<std::uint32_t>(f.model.rows));
   EXPECT_EQ(POND_FRAME_COLS(u), static_cast<std::uint32_t>(f.model.cols));
   EXPECT_EQ(POND_FRAME_STATE_STRIDE(u), 2608u);
@@ -115,7 +115,7 @@ TEST(FrameUniforms, CarryTheCameraLightPondAndStateLayout) {
   for (float m : u.shadow.m) EXPECT_EQ(m, 0.0f);
   const FramePlan p = f.plan({}, {sphere_caster({25, 1, 25}, 2)});
   ASSERT_TRUE(p.shadow.has_value());
-  const auto with = frame_uniforms({f.model, f.scene.view, lighting, f.camera, f.view_proj, 2608, 52, &*p.shadow});
+  const auto with = frame_uniforms({f.model, lighting, f.camera, f.view_proj, 2608, 52, &*p.shadow});
   EXPECT_EQ(std::memcmp(with.shadow.m, p.shadow->texture.data(), sizeof with.shadow.m), 0);
 }
 
@@ -125,9 +125,9 @@ TEST(CausticsGrid, LookupUndoesTheCalmOffsetAndTheGridFitsItsLimits) {
   const Frame f;
   const std::array<double, 3> sun = unit(f.scene.lighting.sun);
   const std::array<float, 4> c = caustics_lookup(f.model, sun);
-  const shared::caustics::CausticsPush push = caustics_push(f.model, sun, f.scene.view.floor_depth, 2608, 52);
+  const shared::caustics::CausticsPush push = caustics_push(f.model, sun, f.scene.basin.floor_depth, 2608, 52);
   // The floor point calm water's ray through the rest point (x, 0, z) reaches.
-  const double x = 10.0, z = 20.0, depth = f.scene.view.floor_depth, h = f.model.spacing;
+  const double x = 10.0, z = 20.0, depth = f.scene.basin.floor_depth, h = f.model.spacing;
   const double fx = x + push.light.x * h, fz = z + push.light.y * h;
   EXPECT_NEAR(fx * c[0] + -depth * c[2], x / (h * (f.model.cols - 1)), 1e-6);
   EXPECT_NEAR(fz * c[1] + -depth * c[3], z / (h * (f.model.rows - 1)), 1e-6);

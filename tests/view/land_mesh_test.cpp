@@ -14,10 +14,11 @@
 namespace pond::view {
 namespace {
 
-sim::WaterModel island_model() {
+sim::WaterModel island_model(double floor_depth = 2.0, double land_height = 1.5) {
   scene::Scene scene = scene::parse_scene(R"({"grid": {"rows": 24, "cols": 31},
       "constraints": [{"kind": "fixed", "rows": [8, 14], "cols": [10, 20]}]})",
                                         "test");
+  scene.basin = {floor_depth, land_height};
   return sim::build_model(scene, sim::MathMode::exact);
 }
 
@@ -28,10 +29,10 @@ std::array<double, 2> wetness_kinks(double land_height) {
 }
 
 TEST(LandMesh, NoTriangleSpansABendOfTheWetness) {
-  const sim::WaterModel model = island_model();
   for (const double land_height : {0.6, 1.5}) {
     const double floor_depth = 2.0;
-    const std::vector<LandVertex> mesh = build_land_mesh(model, floor_depth, land_height);
+    const sim::WaterModel model = island_model(floor_depth, land_height);
+    const std::vector<LandVertex> mesh = build_land_mesh(model);
     ASSERT_EQ(mesh.size() % 3, 0u);
     int walls = 0, cut = 0;
     for (std::size_t t = 0; t < mesh.size(); t += 3) {
@@ -52,7 +53,7 @@ TEST(LandMesh, NoTriangleSpansABendOfTheWetness) {
 
 TEST(LandMesh, WallsReachFromTheLandDownToTheFloorWithFlatFaces) {
   const sim::WaterModel model = island_model();
-  const std::vector<LandVertex> mesh = build_land_mesh(model, 2.0, 1.5);
+  const std::vector<LandVertex> mesh = build_land_mesh(model);
   float top = -1e9f, bottom = 1e9f;
   for (std::size_t t = 0; t < mesh.size(); t += 3) {
     for (int k = 0; k < 3; ++k) {
@@ -72,7 +73,7 @@ TEST(LandMesh, WallsReachFromTheLandDownToTheFloorWithFlatFaces) {
 // triangles; the reflection keeps those of the walls, no top.
 TEST(LandMesh, MirroredWallsAreTheWallsAboveTheRestPlane) {
   const sim::WaterModel model = island_model();
-  const std::vector<LandVertex> mesh = build_land_mesh(model, 2.0, 1.5);
+  const std::vector<LandVertex> mesh = build_land_mesh(model);
   std::size_t walls_above = 0, below = 0;
   for (std::size_t t = 0; t < mesh.size(); t += 3) {
     const float y[3] = {mesh[t].position.y, mesh[t + 1].position.y, mesh[t + 2].position.y};
@@ -94,13 +95,13 @@ TEST(LandMesh, MirroredWallsAreTheWallsAboveTheRestPlane) {
 // The sky's box stands on the land's outer edge: the sky starts exactly where the land ends.
 TEST(LandMesh, SkyBoxStandsOnTheLandsOuterEdge) {
   const sim::WaterModel model = island_model();
-  const std::vector<LandVertex> mesh = build_land_mesh(model, 2.0, 1.5);
+  const std::vector<LandVertex> mesh = build_land_mesh(model);
   float x0 = 1e9f, x1 = -1e9f, z0 = 1e9f, z1 = -1e9f;
   for (const LandVertex& v : mesh) {
     x0 = std::min(x0, v.position.x), x1 = std::max(x1, v.position.x);
     z0 = std::min(z0, v.position.z), z1 = std::max(z1, v.position.z);
   }
-  const SkyBox box = sky_box(model, 1.5);
+  const SkyBox box = sky_box(model);
   EXPECT_FLOAT_EQ(static_cast<float>(box.lo[0]), x0);
   EXPECT_FLOAT_EQ(static_cast<float>(box.hi[0]), x1);
   EXPECT_FLOAT_EQ(static_cast<float>(box.lo[2]), z0);
