@@ -103,5 +103,25 @@ grep -q "holding body" "$work/orbit.stdout" && fail "a drag off every body grabb
 s=$("$probe" "$work/orbit.png" "$work/still6.png" "$SPHERE_X" "$SPHERE_Y" 4 40)
 awk -v s="$s" 'BEGIN { exit !(s > 0.3) }' || fail "a left drag off the bodies did not orbit the camera ($s changed)"
 
+# O on a calm pond (issue 25): the ball splashes, bobs and settles at its waterline, floating: it
+# is drawn where it was dropped, and the water around it (from 2.7 radii out) looks as calm as
+# without it: no pit, no rings left.
+printf 'frame 0 key F2\nframe 2 drop %s %s\nframe 400 screenshot float.png\n' "$DROP_X" "$DROP_Y" > "$work/float.script"
+printf 'frame 0 key F2\nframe 400 screenshot calm.png\n' > "$work/calm.script"
+for run in float calm; do
+  (cd "$work" && POND_VALIDATION=1 xvfb-run -a -s "-screen 0 1024x768x24" "$pond" demo --scene "$src/float_scene.json" \
+     --size 640x400 --no-vsync --frames 402 --script "$run.script" > "$run.stdout" 2> "$run.stderr") ||
+    fail "$run run: $(head -c 2000 "$work/$run.stderr")"
+  grep -qi "validation\|VUID" "$work/$run.stderr" && fail "$run run: validation messages: $(head -c 2000 "$work/$run.stderr")"
+done
+grep -q "body 0: a ball dropped" "$work/float.stdout" || fail "O dropped no ball on the calm pond"
+floated() { "$probe" "$work/float.png" "$work/calm.png" "$1" "$2" "$3" 40; }
+s=$(floated "$DROP_X" "$DROP_Y" 3)
+awk -v s="$s" 'BEGIN { exit !(s > 0.3) }' || fail "the dropped ball is not where it was dropped ($s changed)"
+for dx in -40 40; do
+  s=$(floated $((DROP_X + dx)) "$DROP_Y" 6)
+  awk -v s="$s" 'BEGIN { exit !(s < 0.05) }' || fail "the water $dx pixels beside the floating ball is not calm ($s changed): a pit or rings"
+done
+
 [ $failures -eq 0 ] && echo "demo bodies: all checks passed"
 exit $failures

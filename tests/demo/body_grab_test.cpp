@@ -58,6 +58,27 @@ TEST(BodyGrab, DragsAFloatingBallAndLetsItGoWithTheDragsVelocity) {
   EXPECT_GT(session.bodies()[0].x, held.x);  // it glides on
 }
 
+// The wheel raises the held ball: let go while rising, it is thrown upward (the vertical drag's
+// velocity), and falls back to float.
+TEST(BodyGrab, ALiftedBallIsThrownWithTheVerticalVelocity) {
+  sim::Session session(scene::session_spec(scene::parse_scene(kBall, "test")), sim::SolverChoice{.gpu = false});
+  const lod::Camera camera = above();
+  BodyGrab grab;
+  ASSERT_TRUE(grab.grab(session, pixel_ray(camera, 200, 200)).has_value());
+  const double y0 = session.bodies()[0].y;
+  for (int f = 1; f <= 10; ++f) {
+    grab.lift(0.5);  // a wheel step of half a spacing a frame
+    grab.drag(session, camera, 1);
+    session.advance(1);
+  }
+  EXPECT_GT(session.bodies()[0].y - y0, 3.0);
+  const std::array<double, 3> v = grab.release(session);
+  const double per_step = 0.5 / session.water().physics.dt;
+  EXPECT_NEAR(v[1], per_step, 0.25 * per_step);
+  session.advance(1);
+  EXPECT_GT(session.bodies()[0].vy, 0.0f) << "thrown upward";
+}
+
 // Removing bodies keeps the hold on the same body, or ends it when that body goes.
 TEST(BodyGrab, FollowsRemovedBodies) {
   sim::Session session(scene::session_spec(scene::parse_scene(kBall, "test")), sim::SolverChoice{.gpu = false});

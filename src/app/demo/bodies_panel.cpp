@@ -2,9 +2,11 @@
 
 #include <imgui.h>
 
+#include "sim/bodies.h"
+
 namespace pond::app::demo {
 
-BodyRequests draw_bodies_panel(const sim::Session& session, float width) {
+BodyRequests draw_bodies_panel(const sim::Session& session, float width, double& ball_density) {
   BodyRequests req;
   constexpr float kWidth = 300;
   ImGui::SetNextWindowPos(ImVec2(width - kWidth - 10, 10), ImGuiCond_FirstUseEver);
@@ -23,13 +25,19 @@ BodyRequests draw_bodies_panel(const sim::Session& session, float width) {
     if (session.held(b))
       ImGui::Text("%zu  held (dragged)  r %.2f", b, spec.radius);
     else if (spec.motion == sim::BodyMotion::floating)
-      ImGui::Text("%zu  floating  mass %.1f  r %.2f", b, spec.mass, spec.radius);
+      ImGui::Text("%zu  floating  density %.2f  mass %.1f  r %.2f", b,
+                  sim::body_density(spec, session.water().physics), sim::body_mass(spec, session.water().physics),
+                  spec.radius);
     else
       ImGui::Text("%zu  kinematic  r %.2f", b, spec.radius);
     ImGui::SameLine(kWidth - 75);
     if (ImGui::SmallButton("remove")) req.remove = b;
     ImGui::PopID();
   }
+  float density = static_cast<float>(ball_density);
+  ImGui::SetNextItemWidth(120);
+  if (ImGui::SliderFloat("ball density", &density, 0.1f, 3.0f, "%.2f", ImGuiSliderFlags_Logarithmic))
+    ball_density = density;
   if (ImGui::Button("add ball")) req.add_ball = true;
   ImGui::SameLine();
   ImGui::TextDisabled("left drag a body to move it");

@@ -1,6 +1,7 @@
 #pragma once
-// The demo's window of the bodies in the water (issue 16): one line per body (its index, motion,
-// mass, radius; "held" while dragged) with a remove button, and an "add ball" button. A window of
+// The demo's window of the bodies in the water (issues 16, 25): one line per body (its index,
+// motion, density and mass, radius; "held" while dragged) with a remove button, the density of the
+// balls O and "add ball" drop, and an "add ball" button. A window of
 // its own beside the control panel (shown and hidden with it, F2), so the two stay separate files.
 #include <cstddef>
 #include <optional>
@@ -17,6 +18,7 @@ struct BodyRequests {
 
 // Builds the window (between ImGui::NewFrame and ImGui::Render) at the top right of a display
 // `width` pixels wide.
-BodyRequests draw_bodies_panel(const sim::Session& session, float width);
+// `ball_density`: the density of the balls to drop, edited here.
+BodyRequests draw_bodies_panel(const sim::Session& session, float width, double& ball_density);
 
 }  // namespace pond::app::demo

@@ -36,7 +36,8 @@ void BodyGrab::drag(sim::Session& session, const lod::Camera& camera, std::int64
   if (!index_) return;
   const std::optional<std::array<double, 3>> under = intersect_height(pixel_ray(camera, cursor_[0], cursor_[1]), height_);
   const std::array<double, 3> target =
-      under ? std::array<double, 3>{(*under)[0] + offset_[0], height_, (*under)[2] + offset_[2]} : *last_target_;
+      under ? std::array<double, 3>{(*under)[0] + offset_[0], height_, (*under)[2] + offset_[2]}
+            : std::array<double, 3>{(*last_target_)[0], height_, (*last_target_)[2]};
   if (steps > 0) {
     const double seconds = static_cast<double>(steps) * session.water().physics.dt;
     for (int k = 0; k < 3; ++k)
@@ -48,7 +49,7 @@ void BodyGrab::drag(sim::Session& session, const lod::Camera& camera, std::int64
 
 std::array<double, 3> BodyGrab::release(sim::Session& session) {
   if (!index_) return {};
-  const std::array<double, 3> v{velocity_[0], 0.0, velocity_[2]};  // the drag is horizontal
+  const std::array<double, 3> v = velocity_;
   session.release_body(*index_, v);
   index_.reset();
   return v;

@@ -2,8 +2,9 @@
 // The demo's hold on a body (issue 16): a left press on a sphere grabs it; while the button is
 // down the body is dragged, kinematic, toward the point under the cursor on the horizontal plane
 // at the height it was grabbed at (keeping the offset between that point and its centre at the
-// press, so it does not jump), over the frame's steps; the release lets it go with the drag's
-// velocity (a floating body floats on with it, sim::Session::release_body).
+// press, so it does not jump), over the frame's steps; the wheel raises or lowers that plane; the
+// release lets it go with the drag's velocity, vertical included (a floating body floats on with
+// it, sim::Session::release_body).
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -22,6 +23,8 @@ class BodyGrab {
   bool active() const { return index_.has_value(); }
   std::size_t index() const { return *index_; }
   void move_cursor(double x, double y) { cursor_ = {x, y}; }
+  // Raises (dy > 0) or lowers the plane the held body moves in by dy (world units): the wheel.
+  void lift(double dy) { height_ += dy; }
   // Once a frame, before the frame's steps: the held body toward the point under the cursor, over
   // `steps` steps (0 = paused: it waits there, and the drag's velocity is kept).
   void drag(sim::Session& session, const lod::Camera& camera, std::int64_t steps);

@@ -112,7 +112,8 @@ void InputDispatch::dispatch(const InputEvent& e, bool ui_mouse, bool ui_keyboar
       return;
     }
     case InputEvent::Kind::scroll:
-      if (!ui_mouse) target.on_zoom(e.y);
+      if (grabbing_) target.on_grab_lift(e.y);  // a held body rises or sinks; the throw keeps it
+      else if (!ui_mouse) target.on_zoom(e.y);
       return;
     case InputEvent::Kind::resize:
     case InputEvent::Kind::screenshot:

@@ -49,6 +49,7 @@ class ControlTarget {
   // drops a floating ball where the cursor is.
   virtual bool on_grab(double /*x*/, double /*y*/) { return false; }
   virtual void on_grab_move(double /*x*/, double /*y*/) {}
+  virtual void on_grab_lift(double /*wheel_steps*/) {}
   virtual void on_grab_release(double /*x*/, double /*y*/) {}
   virtual void on_drop_ball(double /*x*/, double /*y*/) {}
 };

@@ -94,7 +94,7 @@ void DemoApp::draw_ui() {
   PanelRequests req;
   if (settings_.show_panel) req = draw_panel(settings_, stats_, tree_ ? &*tree_ : nullptr, *session_);
   BodyRequests bodies;
-  if (settings_.show_panel) bodies = draw_bodies_panel(*session_, io.DisplaySize.x);
+  if (settings_.show_panel) bodies = draw_bodies_panel(*session_, io.DisplaySize.x, settings_.ball_density);
   if (settings_.show_help) draw_help_overlay(settings_.show_help);
   ImGui::Render();
   apply_requests(req);

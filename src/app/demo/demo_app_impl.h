@@ -53,6 +53,7 @@ class DemoApp final : public ControlTarget {
   // The bodies in the water: left drag on one, the drop key, the bodies window, script events.
   bool on_grab(double x, double y) override;
   void on_grab_move(double x, double y) override { grab_.move_cursor(x, y); }
+  void on_grab_lift(double wheel_steps) override { grab_.lift(wheel_steps * session_->model().spacing); }
   void on_grab_release(double x, double y) override;
   void on_drop_ball(double x, double y) override;
 

@@ -128,9 +128,10 @@ void DemoApp::on_grab_release(double x, double y) {
   std::snprintf(text, sizeof text, "released body %zu at (%.2f, %.2f, %.2f) with velocity (%.3f, %.3f, %.3f)", b,
                 s.x * h, s.y * h, s.z * h, v[0], v[1], v[2]);
   notice(text);
+  if (const std::string clamped = session_->clamp_notice(session_->bodies()); !clamped.empty()) notice(clamped);
 }
 
-// A floating ball of radius 2 h and mass 30 (the scenes' balls), its bottom one spacing above the
+// A floating ball of radius 2 h and the bodies panel's density, its bottom one spacing above the
 // water where the cursor points.
 void DemoApp::on_drop_ball(double x, double y) {
   const sim::WaterModel& model = session_->model();
@@ -147,7 +148,8 @@ void DemoApp::on_drop_ball(double x, double y) {
 void DemoApp::add_ball(const std::array<double, 3>& position) {
   const double h = session_->model().spacing;
   const sim::BodySpec ball{.shape = sim::BodyShape::sphere, .motion = sim::BodyMotion::floating, .radius = 2.0 * h,
-                           .mass = 30.0, .position = position, .velocity = {}, .path = {}};
+                           .mass = 0.0, .density = settings_.ball_density, .position = position, .velocity = {},
+                           .path = {}};
   try {
     session_->add_body(ball);
   } catch (const InputError& e) {

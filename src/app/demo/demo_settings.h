@@ -44,6 +44,7 @@ struct DemoSettings {
   std::array<double, 3> sun{};  // toward the sun; edited in the panel, applied with sim::Session::set_sun
   SplashSettings splash;
   RainSettings rain;
+  double ball_density = 0.5;  // of the balls O and "add ball" drop, relative to water (bodies panel)
   std::string message;  // the last notice (screenshot saved, unstable parameters refused, …)
 };
 

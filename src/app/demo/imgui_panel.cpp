@@ -177,7 +177,7 @@ void draw_help_overlay(bool& open) {
     row("left drag", "orbit the camera");
     row("left drag on a body", "move it through the water");
     row("middle drag", "pan");
-    row("wheel", "zoom");
+    row("wheel", "zoom; holding a body: raise or lower it");
     row("left click", "splash (velocity kick)");
     row("Shift+click", "splash (position bump)");
     row("Ctrl+click", "explosion (folds the surface)");
