@@ -1,7 +1,8 @@
-// What 8 bodies cost a step of the 257x257 pond: the same scene with and without them, alternated
+// What 8 and 64 floating bodies (and two dragged spheres) cost a step of the 257x257 pond, every
+// contact included (water, each other, the land): the same scene with and without them, alternated
 // within every iteration (so a shared machine's load falls on both alike), on the CPU's best
 // backend (all cores) and on the GPU solver (the device pond chooses, validation off). Counter
-// "cost": time with bodies / time without - 1 (the target is at most 0.15); "cpu cost": the same
+// "cost": time with bodies / time without - 1 (the targets: at most 0.2 for 8, 0.5 for 64); "cpu cost": the same
 // with the process's CPU time (all its threads: on a CPU device such as lavapipe, the "GPU"'s
 // work too). And the CPU's contact pass alone.
 #include <benchmark/benchmark.h>
@@ -22,30 +23,32 @@ namespace {
 
 using namespace pond;
 
-// The demo's grid: an island, a splash, and (with_bodies) 8 bodies of radius 2 to 4: two dragged
-// across, six floating balls (two of them dropped in), spread over the pond.
-sim::WaterModel pond_257(bool with_bodies) {
+// The demo's grid: an island, a splash, and `count` floating balls of radius 2 to 3 and densities
+// 0.3 to 0.9 in rows of 8 across the pond, neighbours heading at each other (they collide within
+// some 50 steps, then drift on the waves), plus two spheres dragged across when count > 0.
+sim::WaterModel pond_257(int count) {
   scene::Scene s;
   s.grid.rows = s.grid.cols = 257;
   s.physics.rest_ratio = 0.95;
   s.constraints.push_back({sim::NodeKind::fixed, 60, 80, 150, 175});
   s.perturbations.push_back({.step = 0, .row = 128, .col = 90, .radius = 4, .amplitude = 1,
                              .target = sim::PerturbTarget::velocity, .mode = sim::PerturbMode::add});
-  if (with_bodies) {
-    for (int k = 0; k < 2; ++k) {
-      sim::BodySpec b;
-      b.motion = sim::BodyMotion::kinematic;
-      b.radius = 3.0 + k;
-      b.path = {{0, {20.0, 0.5, 40.0 + 150 * k}}, {4000, {236.0, 0.5, 60.0 + 150 * k}}};
-      s.bodies.push_back(b);
-    }
-    for (int k = 0; k < 6; ++k) {
-      sim::BodySpec b;
-      b.radius = 2.0 + 0.4 * k;
-      b.mass = 20.0 + 5 * k;
-      b.position = {40.0 + 30 * k, k < 2 ? 4.0 : 0.5, 110.0 + 20 * (k % 3)};
-      s.bodies.push_back(b);
-    }
+  if (count == 0) return sim::build_model(s);
+  for (int k = 0; k < 2; ++k) {
+    sim::BodySpec b;
+    b.motion = sim::BodyMotion::kinematic;
+    b.radius = 3.0;
+    b.path = {{0, {20.0, 0.5, 30.0 + 50 * k}}, {4000, {236.0, 0.5, 40.0 + 50 * k}}};
+    s.bodies.push_back(b);
+  }
+  for (int k = 0; k < count; ++k) {
+    const int col = k % 8, row = k / 8;
+    sim::BodySpec b;
+    b.radius = 2.0 + 0.125 * (k % 9);
+    b.density = 0.3 + 0.075 * (k % 9);
+    b.position = {24.0 + 26 * col, col % 3 == 0 ? 3.5 : 0.0, 100.0 + 18 * row};
+    b.velocity = {col % 2 == 0 ? 0.5 : -0.5, 0.0, 0.05 * (row % 3 - 1)};
+    s.bodies.push_back(b);
   }
   return sim::build_model(s);
 }
@@ -101,16 +104,17 @@ void alternate(benchmark::State& state, Solver& plain, Solver& bodies, std::int6
 }
 
 void BM_BodiesCostCpu(benchmark::State& state) {
-  sim::CpuSolver plain(pond_257(false), sim::best_backend(), 0), bodies(pond_257(true), sim::best_backend(), 0);
+  const int count = static_cast<int>(state.range(0));
+  sim::CpuSolver plain(pond_257(0), sim::best_backend(), 0), bodies(pond_257(count), sim::best_backend(), 0);
   alternate(state, plain, bodies, 8);
   state.SetLabel(plain.engine());
 }
-BENCHMARK(BM_BodiesCostCpu)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
+BENCHMARK(BM_BodiesCostCpu)->Arg(8)->Arg(64)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
 
-// The contact pass alone (8 bodies, all touching the water after 300 steps), one thread: what it
+// The contact pass alone (all the bodies in the water after 300 steps), one thread: what it
 // adds to each substep of the CPU solver, next to BM_BodiesCostCpu's step time.
 void BM_ContactPassCpu(benchmark::State& state) {
-  const sim::WaterModel model = pond_257(true);
+  const sim::WaterModel model = pond_257(static_cast<int>(state.range(0)));
   sim::CpuSolver solver(model, sim::best_backend(), 0);
   solver.advance(300);
   sim::WaterState water = solver.state();
@@ -118,14 +122,14 @@ void BM_ContactPassCpu(benchmark::State& state) {
   const float reach = sim::horizontal_reach(water);
   for (auto _ : state) sim::resolve_contacts(water, model, step++, 0, reach);
 }
-BENCHMARK(BM_ContactPassCpu)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(BM_ContactPassCpu)->Arg(8)->Arg(64)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 void BM_BodiesCostGpu(benchmark::State& state) {
-  gpu::GpuSolver plain(context(), pond_257(false)), bodies(context(), pond_257(true));
+  gpu::GpuSolver plain(context(), pond_257(0)), bodies(context(), pond_257(static_cast<int>(state.range(0))));
   alternate(state, plain, bodies, 16);
   state.SetLabel(context().device_name());
 }
-BENCHMARK(BM_BodiesCostGpu)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
+BENCHMARK(BM_BodiesCostGpu)->Arg(8)->Arg(64)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
 
 }  // namespace
 
