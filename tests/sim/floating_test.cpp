@@ -29,15 +29,7 @@ using sim::PathKey;
 using sim::WaterModel;
 using sim::WaterState;
 
-BodySpec ball(std::array<double, 3> position, double radius, double density, std::array<double, 3> velocity = {}) {
-  BodySpec b;
-  b.motion = BodyMotion::floating;
-  b.position = position;
-  b.velocity = velocity;
-  b.radius = radius;
-  b.density = density;
-  return b;
-}
+using test::ball;
 
 // The submerged volume fraction of a ball whose centre is at height y, against the calm level 0.
 double calm_fraction(double y, double r) {

@@ -1,5 +1,6 @@
 #pragma once
 // Helpers for the solver tests: scenes built in code and runs of the CPU solver.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -46,6 +47,18 @@ inline sim::WaterState run(const scene::Scene& scene, std::int64_t steps,
   sim::CpuSolver solver(sim::build_model(scene, math), backend, threads);
   solver.advance(steps);
   return solver.state();
+}
+
+// A floating ball at `position` (world units) of `density` relative to water.
+inline sim::BodySpec ball(std::array<double, 3> position, double radius, double density,
+                          std::array<double, 3> velocity = {}) {
+  sim::BodySpec b;
+  b.motion = sim::BodyMotion::floating;
+  b.position = position;
+  b.velocity = velocity;
+  b.radius = radius;
+  b.density = density;
+  return b;
 }
 
 inline std::size_t node(const scene::Scene& s, int i, int j) {
