@@ -46,7 +46,7 @@ layout(std430, set = 0, binding = POND_CONTACT_BINDING_LAND) restrict readonly b
 layout(push_constant) uniform Push { ContactPush p; };
 
 // The bodies (sb), their constants (sc) and the kinematic ones' positions at the substep's end
-// (sk): the arrays shared/body_motion.h works on.
+// (sk): the arrays shared/body_motion.h and body_pairs.h work on.
 shared BodyState sb[POND_MAX_BODIES];
 shared BodyConstants sc[POND_MAX_BODIES];
 shared BodyState sk[POND_MAX_BODIES];
@@ -55,6 +55,7 @@ shared uint pairs_touched;
 
 #include "shared/body_kinematic.h"
 #include "shared/body_motion.h"
+#include "shared/body_pairs.h"
 #include "shared/body_water.h"
 
 shared WaterMoments lane_moments[POND_CONTACT_LANES];

@@ -2,8 +2,9 @@
 // constants, declared once for GLSL (water_contact.comp) and C++ (sim/contact.cpp, the GPU solver).
 // The laws are in the headers beside this one, each included by both sides:
 //  - body_water.h: a floating body and the water (buoyancy, drag, displacement);
-//  - body_motion.h: every body's motion through a substep, its contacts with the other bodies, the
-//    pool's floor, its rim and the land;
+//  - body_motion.h: every body's motion through a substep, in sub-iterations;
+//  - body_pairs.h: body against body; body_land.h: a floating body against the walls, the floor
+//    and the land;
 //  - body_kinematic.h: a kinematic body pushing the nodes out of itself.
 //
 // One substep's contact, after the water's integration (grid units throughout):
@@ -11,7 +12,7 @@
 //     sees the nodes the ones before it changed;
 //  2. every body moves (floating by its velocity, kinematic along its path) in sub-iterations short
 //     enough that nothing is crossed, resolving body against body in one fixed pair order, then
-//     each floating body against the land (body_motion.h);
+//     each floating body against the land (body_pairs.h, body_land.h);
 //  3. every kinematic body in scene order pushes the nodes inside it to its surface
 //     (body_kinematic.h).
 #ifndef POND_BODIES_H
@@ -36,15 +37,15 @@
 #define POND_CONTACT_BINDING_LAND 7       // storage buffer: uint[], the land's row runs (below)
 #define POND_CONTACT_BINDINGS 8
 
-// The land the bodies meet (body_motion.h), as runs of land cells per row of cells, built once per
+// The land the bodies meet (body_land.h), as runs of land cells per row of cells, built once per
 // model on the CPU (sim/basin.h): word 0 is the number of cell rows R (rows - 1); words 1 .. R + 1
 // are where each cell row's runs start and end (row i: runs k in [land[1 + i], land[2 + i])); run k
 // is the pair (first column, last column + 1) at words R + 2 + 2k and R + 3 + 2k, in column order.
 #define POND_LAND_HEADER(rows_of_cells) (2u + (rows_of_cells))
 
-// Restitution and friction of the contacts (body_motion.h). A wet ball bounces little off sand and
-// stone, more off another ball; below a normal speed of kBounceGravitySubsteps substeps' worth of
-// gravity it does not bounce at all, so that a resting contact stays at rest.
+// Restitution and friction of the contacts (body_land.h, body_pairs.h). A wet ball bounces little
+// off sand and stone, more off another ball; below a normal speed of POND_BOUNCE_GRAVITY_SUBSTEPS
+// substeps' worth of gravity it does not bounce at all, so that a resting contact stays at rest.
 #define POND_RESTITUTION_LAND 0.3f
 #define POND_RESTITUTION_BODY 0.5f
 #define POND_FRICTION_LAND 0.4f

@@ -5,6 +5,7 @@
 
 #include "shared/body_kinematic.h"
 #include "shared/body_motion.h"
+#include "shared/body_pairs.h"
 #include "shared/body_water.h"
 
 namespace pond::sim {
