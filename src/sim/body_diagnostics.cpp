@@ -8,7 +8,10 @@
 #include "sim/bodies.h"
 
 namespace pond::sim {
+namespace {
 
+// The water level under body b (world y): the tent kernel's weighted mean height of the nodes that
+// are not fixed (shared/body_water.h, in double); NaN where there is no water under it.
 double water_level(const WaterState& s, const WaterModel& m, std::size_t b) {
   const BodyState& body = s.bodies[b];
   const double r = m.bodies[b].constants.radius;
@@ -24,11 +27,7 @@ double water_level(const WaterState& s, const WaterModel& m, std::size_t b) {
   return sw > 0.0 ? sy / sw * m.spacing : std::numeric_limits<double>::quiet_NaN();
 }
 
-double submerged_fraction(const WaterState& s, const WaterModel& m, std::size_t b, double level) {
-  const double r = m.bodies[b].constants.radius * m.spacing;
-  const double hs = std::clamp(level - s.bodies[b].y * m.spacing + r, 0.0, 2.0 * r);
-  return hs * hs * (3.0 * r - hs) / (4.0 * r * r * r);
-}
+}  // namespace
 
 double body_energy(const WaterState& s, const WaterModel& m) {
   const double h = m.spacing, g = m.physics.gravity, rho = m.physics.water_density, pi = std::numbers::pi;
