@@ -1,6 +1,9 @@
 #include "sim/bodies.h"
 
 #include <numbers>
+#include <string>
+
+#include "core/errors.h"
 
 namespace pond::sim {
 
@@ -16,6 +19,11 @@ double body_mass(const BodySpec& b, const Physics& p) {
 
 std::vector<BodyModel> build_bodies(const std::vector<BodySpec>& bodies, const Physics& physics,
                                     double h) {
+  // The contact pass holds the bodies in fixed arrays (shared memory on the GPU); a scene is
+  // checked at load, so more is a caller's bug.
+  if (bodies.size() > static_cast<std::size_t>(shared::kMaxBodies))
+    throw InternalError("build_bodies: " + std::to_string(bodies.size()) + " bodies, at most " +
+                        std::to_string(shared::kMaxBodies));
   const double sub_dt = physics.dt / physics.substeps;
   std::vector<BodyModel> out;
   for (const BodySpec& b : bodies) {
