@@ -1,17 +1,17 @@
 #version 460
 // The bodies' contact after one substep (the order: shared/bodies.h; the laws: shared/body_*.h),
 // in one workgroup that holds the bodies in shared memory:
-//  1. floating bodies one after the other: lane l = (i % 8) * 8 + j % 8 of the POND_CONTACT_LANES
-//     lanes sums the water moments of its kernel nodes (i, j) in row-major order; every invocation
-//     adds the lanes in lane order and computes the exchange; the lanes kick their nodes;
-//  2. the motion: the bodies' moves in parallel, the pairs on invocation 0 (their order is the
-//     law), the land in parallel (each body alone against it);
+//  1. the floating bodies' exchanges with the water, each by one invocation, in rounds: a body
+//     waits for the bodies before it whose kernels overlap its own, so every node sees the bodies
+//     over it in scene order; the moments are summed in the CPU's lane order (body_water.h);
+//  2. the motion: the bodies' moves in parallel; each pass's candidate pairs found in parallel and
+//     resolved on invocation 0 in index order (the order is the law); the land in parallel (each
+//     body alone against it);
 //  3. kinematic bodies one after the other: the lanes push the nodes inside to the surface.
-// Barriers separate the bodies, so each sees the nodes the ones before it changed. Every float
-// operation is `precise` (the CPU's bits). The workgroup has local_size_x invocations (a
-// specialization constant dividing the 64 lanes: the device's subgroup size, so that llvmpipe runs
-// it as one SIMD batch); invocation t takes lanes t, t + local_size_x, ...: the same lanes, and so
-// the same bits, for any size.
+// Every float operation is `precise` (the CPU's bits). The workgroup has local_size_x invocations
+// (a specialization constant dividing the 64 lanes: the device's subgroup size, so that llvmpipe
+// runs it as one SIMD batch); in step 3 invocation t takes lanes t, t + local_size_x, ...: the same
+// lanes, and so the same bits, for any size.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_spirv_intrinsics : require
 
@@ -52,21 +52,29 @@ shared BodyConstants sc[POND_MAX_BODIES];
 shared BodyState sk[POND_MAX_BODIES];
 shared float moves[POND_MAX_BODIES];
 shared uint pairs_touched;
+shared PairMask pairs[POND_MAX_BODIES];  // this pass's pairs that may touch (body_pairs.h)
 
 #include "shared/body_kinematic.h"
 #include "shared/body_motion.h"
 #include "shared/body_pairs.h"
 #include "shared/body_water.h"
 
-shared WaterMoments lane_moments[POND_CONTACT_LANES];
+// Step 1's schedule: each body's kernel (rows x..y, columns z..w), the bodies it waits for (bit a:
+// body a), whether it has exchanged, and whether it does in this round.
+shared ivec4 boxes[POND_MAX_BODIES];
+shared uvec2 waits[POND_MAX_BODIES];
+shared uint exchanged[POND_MAX_BODIES];
+shared uint ready[POND_MAX_BODIES];
 
 const uint kY = 1u, kVx = 3u, kVy = 4u, kVz = 5u;  // component arrays of the state (water_gpu.h)
 
 uint kind_at(uint n) { return texelFetch(kinds4, int(n >> 2u))[n & 3u]; }
 
-// The first index from `first` on that is congruent to `residue` modulo the lane side.
+// The first index from `first` on that is congruent to `residue` modulo the lane side (a
+// power of two: a mask, not an integer division, which a CPU device runs lane by lane).
 int first_of_lane(int first, int residue) {
-  return first + ((residue - (first % POND_CONTACT_LANE_SIDE) + POND_CONTACT_LANE_SIDE) % POND_CONTACT_LANE_SIDE);
+  const int mask = POND_CONTACT_LANE_SIDE - 1;
+  return first + ((residue - first) & mask);
 }
 
 // Buffer structs copied member by member (a whole-struct copy between layouts is not valid SPIR-V).
@@ -85,49 +93,113 @@ BodyConstants constants_at(uint index) {
                        constants[index].drag_dt, constants[index].floating);
 }
 
-// Step 1 for floating body `index`: the moments lane by lane, the exchange, the nodes' kicks.
-void exchange_with_water(uint index, uint first_lane, uint invocations) {
+// Step 1's kernel of body `index`: its first and last row (x, y) and column (z, w).
+ivec4 kernel_box(uint index) {
   const BodyState b = sb[index];
-  const BodyConstants c = sc[index];
+  const float r = sc[index].radius;
   const int last_i = int(p.rows) - 1, last_j = int(p.cols) - 1;
-  const int i0 = water_first(b.z, c.radius, last_i), i1 = water_last(b.z, c.radius, last_i);
-  const int j0 = water_first(b.x, c.radius, last_j), j1 = water_last(b.x, c.radius, last_j);
-  for (uint lane = first_lane; lane < POND_CONTACT_LANES; lane += invocations) {
-    WaterMoments m = moments_zero();
-    const int lane_i = int(lane) / POND_CONTACT_LANE_SIDE, lane_j = int(lane) % POND_CONTACT_LANE_SIDE;
-    for (int i = first_of_lane(i0, lane_i); i <= i1; i += POND_CONTACT_LANE_SIDE)
-      for (int j = first_of_lane(j0, lane_j); j <= j1; j += POND_CONTACT_LANE_SIDE) {
-        const float w = water_weight(j, i, b.x, b.z, c.inv_radius);
-        if (!(w > 0.0)) continue;
-        const uint n = uint(i) * p.pitch + uint(j), kind = kind_at(n);
-        if (kind == kNodeFixed) continue;
-        m = moments_add_node(m, w, j, i, b.x, b.z, state[kY * p.stride + n], state[kVx * p.stride + n],
-                             state[kVy * p.stride + n], state[kVz * p.stride + n], kind == kNodeFree);
-      }
-    lane_moments[lane] = m;
-  }
-  barrier();  // also orders the shared-memory writes (compute shaders)
+  return ivec4(water_first(b.z, r, last_i), water_last(b.z, r, last_i), water_first(b.x, r, last_j),
+               water_last(b.x, r, last_j));
+}
+
+bool boxes_overlap(ivec4 a, ivec4 b) { return a.x <= b.y && b.x <= a.y && a.z <= b.w && b.z <= a.w; }
+
+// The index, among `count` consecutive ones from `first`, where the t-th residue class modulo the
+// lane side present among them starts, in ascending residue order.
+int lane_start(int first, int count, int t) {
+  const int mask = POND_CONTACT_LANE_SIDE - 1;
+  if (count >= POND_CONTACT_LANE_SIDE) return first + ((t - first) & mask);
+  const int wrap = (-first) & mask, u = t + wrap;  // residue 0 is at first + wrap, if present
+  return first + (u < count ? u : (wrap < count ? u - count : t));
+}
+
+// The moments of the water under body b (constants c, kernel box k), reduced as the CPU does: lane
+// by lane in lane order, each lane's nodes row-major. Only the lanes the box covers are visited: an
+// empty lane would add +0, which changes no sum (a sum of these moments is never -0).
+WaterMoments kernel_moments(BodyState b, BodyConstants c, ivec4 k) {
   WaterMoments total = moments_zero();
-  for (uint l = 0u; l < POND_CONTACT_LANES; ++l) total = moments_add(total, lane_moments[l]);
-  const WaterExchange e = water_exchange(total, b, c);
-  if (e.wet != 0u)
-    for (uint lane = first_lane; lane < POND_CONTACT_LANES; lane += invocations) {
-      const int lane_i = int(lane) / POND_CONTACT_LANE_SIDE, lane_j = int(lane) % POND_CONTACT_LANE_SIDE;
-      for (int i = first_of_lane(i0, lane_i); i <= i1; i += POND_CONTACT_LANE_SIDE)
-        for (int j = first_of_lane(j0, lane_j); j <= j1; j += POND_CONTACT_LANE_SIDE) {
+  const int rows = k.y - k.x + 1, cols = k.w - k.z + 1;
+  const int row_lanes = min(rows, POND_CONTACT_LANE_SIDE), col_lanes = min(cols, POND_CONTACT_LANE_SIDE);
+  for (int lane_i = 0; lane_i < row_lanes; ++lane_i) {
+    const int first_i = lane_start(k.x, rows, lane_i);
+    for (int lane_j = 0; lane_j < col_lanes; ++lane_j) {
+      const int first_j = lane_start(k.z, cols, lane_j);
+      WaterMoments m = moments_zero();
+      for (int i = first_i; i <= k.y; i += POND_CONTACT_LANE_SIDE)
+        for (int j = first_j; j <= k.w; j += POND_CONTACT_LANE_SIDE) {
           const float w = water_weight(j, i, b.x, b.z, c.inv_radius);
           if (!(w > 0.0)) continue;
           const uint n = uint(i) * p.pitch + uint(j), kind = kind_at(n);
           if (kind == kNodeFixed) continue;
-          state[kVy * p.stride + n] = water_kick(state[kVy * p.stride + n], e.cy, w);
-          if (kind != kNodeFree) continue;
-          state[kVx * p.stride + n] = water_kick(state[kVx * p.stride + n], e.cx, w);
-          state[kVz * p.stride + n] = water_kick(state[kVz * p.stride + n], e.cz, w);
+          m = moments_add_node(m, w, j, i, b.x, b.z, state[kY * p.stride + n], state[kVx * p.stride + n],
+                               state[kVy * p.stride + n], state[kVz * p.stride + n], kind == kNodeFree);
         }
+      total = moments_add(total, m);
     }
-  memoryBarrierBuffer();
-  barrier();  // every lane has read the lane moments; the next body sees these nodes
-  if (first_lane == 0u) sb[index] = e.body;
+  }
+  return total;
+}
+
+// The nodes under body b take the exchange's kicks (each node once: any order).
+void kick_kernel(BodyState b, BodyConstants c, ivec4 k, WaterExchange e) {
+  for (int i = k.x; i <= k.y; ++i)
+    for (int j = k.z; j <= k.w; ++j) {
+      const float w = water_weight(j, i, b.x, b.z, c.inv_radius);
+      if (!(w > 0.0)) continue;
+      const uint n = uint(i) * p.pitch + uint(j), kind = kind_at(n);
+      if (kind == kNodeFixed) continue;
+      state[kVy * p.stride + n] = water_kick(state[kVy * p.stride + n], e.cy, w);
+      if (kind != kNodeFree) continue;
+      state[kVx * p.stride + n] = water_kick(state[kVx * p.stride + n], e.cx, w);
+      state[kVz * p.stride + n] = water_kick(state[kVz * p.stride + n], e.cz, w);
+    }
+}
+
+// Whether every body in `bodies` (bit a: body a) has exchanged.
+bool all_exchanged(uvec2 bodies) {
+  for (uint word = 0u; word < 2u; ++word)
+    for (uint bits = bodies[word]; bits != 0u; bits &= bits - 1u)
+      if (exchanged[32u * word + uint(findLSB(bits))] == 0u) return false;
+  return true;
+}
+
+// Step 1: the floating bodies' exchanges, each by one invocation, in rounds. Body b waits for the
+// floating bodies before it whose kernels overlap its own; bodies with disjoint kernels read and
+// write disjoint nodes, so any order that keeps the waits gives the bits of scene order.
+void exchange_with_water(uint first, uint invocations) {
+  uint floating = 0u;
+  for (uint i = 0u; i < p.count; ++i) floating += sc[i].floating;
+  for (uint i = first; i < p.count; i += invocations) {
+    boxes[i] = kernel_box(i);
+    exchanged[i] = 0u;
+  }
+  barrier();
+  for (uint i = first; i < p.count; i += invocations) {
+    uvec2 before = uvec2(0u);
+    for (uint a = 0u; a < i; ++a)
+      if (sc[a].floating != 0u && boxes_overlap(boxes[a], boxes[i])) before[a >> 5u] |= 1u << (a & 31u);
+    waits[i] = before;
+  }
+  barrier();
+  for (uint done = 0u; done < floating;) {
+    for (uint i = first; i < p.count; i += invocations) {
+      ready[i] = sc[i].floating != 0u && exchanged[i] == 0u && all_exchanged(waits[i]) ? 1u : 0u;
+      if (ready[i] == 0u) continue;
+      const BodyState b = sb[i];
+      const BodyConstants c = sc[i];
+      const WaterExchange e = water_exchange(kernel_moments(b, c, boxes[i]), b, c);
+      if (e.wet != 0u) kick_kernel(b, c, boxes[i], e);
+      sb[i] = e.body;
+    }
+    memoryBarrierBuffer();
+    barrier();  // the next round sees these nodes
+    for (uint i = first; i < p.count; i += invocations)
+      if (ready[i] != 0u) exchanged[i] = 1u;
+    barrier();
+    done = 0u;
+    for (uint i = 0u; i < p.count; ++i) done += exchanged[i];
+    barrier();  // every invocation has counted before the next round marks
+  }
 }
 
 // One sub-iteration's time step: dt / n (a helper of its own: glslang's `precise` propagation
@@ -157,7 +229,9 @@ void move_bodies(uint first, uint invocations) {
     for (uint i = first; i < p.count; i += invocations) sb[i] = body_advance(sb[i], sc[i], sk[i], dt_n, n - it);
     barrier();
     for (int pass = 0; pass < POND_PAIR_PASSES; ++pass) {
-      if (first == 0u) pairs_touched = collide_pairs(p.count, p.bounce_speed) ? 1u : 0u;
+      for (uint a = first; a < p.count; a += invocations) pairs[a] = pair_candidates(a, p.count);
+      barrier();
+      if (first == 0u) pairs_touched = resolve_pairs(p.count, p.bounce_speed) ? 1u : 0u;
       barrier();
       for (uint i = first; i < p.count; i += invocations)
         if (sc[i].floating != 0u) collide_land(sb[i], sc[i], p);
@@ -203,9 +277,7 @@ void main() {
     sk[i] = sc[i].floating != 0u ? sb[i] : scheduled_at(p.schedule_first + i);
   }
   barrier();
-  for (uint index = 0u; index < p.count; ++index)
-    if (sc[index].floating != 0u) exchange_with_water(index, first, invocations);
-  barrier();
+  exchange_with_water(first, invocations);
   move_bodies(first, invocations);
   for (uint index = 0u; index < p.count; ++index)
     if (sc[index].floating == 0u) push_out(index, first, invocations, reach);

@@ -58,7 +58,8 @@
 // body (radius 1) and a land cell (1) cannot be crossed.
 #define POND_MAX_MOVE_PER_ITERATION 0.5
 #define POND_MAX_ITERATIONS 64
-// Passes over the pairs of bodies in one sub-iteration at most (a pass that separates none ends it).
+// Passes over the pairs of bodies in one sub-iteration at most (a pass in which no pair overlapped
+// by more than POND_PAIR_SLOP, body_pairs.h, ends it).
 #define POND_PAIR_PASSES 4
 
 #ifdef __cplusplus
@@ -92,6 +93,12 @@ struct BodyConstants {
   float buoyancy_dt;     // gravity_dt / density: what buoyancy adds in a substep, wholly submerged
   float drag_dt;         // the linear drag's rate * dt, wholly submerged (body_water.h)
   uint floating;         // 1: floating, 0: kinematic
+};
+
+// The bodies b > a that body a may touch in a pass of the pairs (body_pairs.h): bit b % 32 of
+// words[b / 32].
+struct PairMask {
+  uint words[2];
 };
 
 // Push constants of water_contact.comp: one substep's contact.
@@ -163,6 +170,15 @@ POND_BODY_FN BodyState canonical_body(BodyState b) {
 // The reduction lane of node (i, j), both >= 0.
 POND_BODY_FN int contact_lane(int i, int j) {
   return (i % POND_CONTACT_LANE_SIDE) * POND_CONTACT_LANE_SIDE + j % POND_CONTACT_LANE_SIDE;
+}
+
+// The index of the lowest set bit of bits != 0.
+POND_BODY_FN uint lowest_bit(uint bits) {
+#ifdef __cplusplus
+  return static_cast<uint>(std::countr_zero(bits));
+#else
+  return uint(findLSB(bits));
+#endif
 }
 
 // A float index clipped to [0, last] as an int; a non-finite or huge value clips too (a blown-up

@@ -6,9 +6,9 @@
 //    spacing in one: the smallest body (radius 1) and a land cell cannot be crossed, whatever the
 //    speed (no tunnelling).
 //  - In each: every body moves (a floating one by v dt / n, a kinematic one a share of the way to
-//    its scheduled position); then, up to POND_PAIR_PASSES times while a pair touched, the pairs
-//    (shared/body_pairs.h), then every floating body against the land (shared/body_land.h). The
-//    land comes last: where it and another body disagree, the land wins.
+//    its scheduled position); then, up to POND_PAIR_PASSES times while a pair overlapped by more
+//    than POND_PAIR_SLOP, the pairs (shared/body_pairs.h), then every floating body against the
+//    land (shared/body_land.h). The land comes last: where it and another body disagree, it wins.
 #ifndef POND_BODY_MOTION_H
 #define POND_BODY_MOTION_H
 

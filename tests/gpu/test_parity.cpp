@@ -115,8 +115,10 @@ const ParityCase kCases[] = {
          "physics": {"mass": 4.0, "stiffness": 7.0, "damping": 0.05, "dt": 0.4, "substeps": 2},
          "perturbations": [)" POND_SPLASHES(2, 4, 1.5, 3.75) R"(]})",
      10000},
-    {"bodies_41x67_mixed_islands",  // bodies: a width that is not a multiple of 4, substeps
+    {"bodies_41x67_mixed_islands",  // bodies: a width that is not a multiple of 4, substeps, a kernel
+                                    // wider than the 8 lanes
      R"({"grid": {"rows": 41, "cols": 67}, "physics": {"substeps": 2, "gravity": 0.05},
+         "basin": {"floor_depth": 6.0},
          "constraints": [{"kind": "fixed", "rows": [24, 27], "cols": [33, 38]}],
          "perturbations": [{"step": 5, "row": 13, "col": 22, "radius": 2.0, "amplitude": 1.0}],
          "bodies": [{"motion": "kinematic", "radius": 3.0,
@@ -124,7 +126,9 @@ const ParityCase kCases[] = {
                     {"motion": "floating", "radius": 2.0, "mass": 30, "position": [16, 3, 10],
                      "velocity": [0, -0.3, 0]},
                     {"motion": "floating", "radius": 2.5, "mass": 20, "position": [47, 2, 30],
-                     "velocity": [0.05, 0, -0.02]}]})",
+                     "velocity": [0.05, 0, -0.02]},
+                    {"motion": "floating", "radius": 4.6, "density": 0.5, "position": [30.3, 1, 11.6],
+                     "velocity": [0.1, 0, 0.05]}]})",
      3000},
     {"bodies_48x64_colliding",  // bodies: a multiple of 4; floating balls that collide, one into the rim
      R"({"grid": {"rows": 48, "cols": 64, "spacing": 0.5}, "border": "vertical",
