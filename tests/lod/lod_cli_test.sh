@@ -55,6 +55,8 @@ expect_bad "size" --state "$work/state.npy" --eye 24,30,-20 --target 24,0,24 --f
 expect_bad "size" --state "$work/state.npy" --eye 24,30,-20 --target 24,0,24 --fovy 60 --size big --tolerance 1
 expect_bad "differ" --state "$work/state.npy" --eye 1,2,3 --target 1,2,3 --fovy 60 --size 640x480 --tolerance 1
 expect_bad "eye" --state "$work/state.npy" --eye 1,2 --target 1,2,3 --fovy 60 --size 640x480 --tolerance 1
+expect_bad "repeat" --state "$work/state.npy" $good --repeat 0
+expect_bad "repeat" --state "$work/state.npy" $good --repeat many
 expect_bad "state" --eye 24,30,-20 --target 24,0,24 --fovy 60 --size 640x480 --tolerance 1
 }
 
@@ -63,6 +65,13 @@ expect_bad "state" --eye 24,30,-20 --target 24,0,24 --fovy 60 --size 640x480 --t
   { echo "FAIL: good run: $(cat "$work/stderr")"; failures=$((failures + 1)); }
 grep -q "triangles" "$work/stdout" || { echo "FAIL: no summary line"; failures=$((failures + 1)); }
 head -c 128 "$work/tris.npy" | grep -q "'<u4'.*, 3)" || { echo "FAIL: TRIS.npy header"; failures=$((failures + 1)); }
+
+# --repeat N reports the median of the N - 1 warm builds in the same line.
+"$pond" lod --state "$work/state.npy" $good --repeat 3 --out "$work/tris3.npy" > "$work/stdout" 2> "$work/stderr" ||
+  { echo "FAIL: --repeat run: $(cat "$work/stderr")"; failures=$((failures + 1)); }
+grep -q "built in [0-9.]* ms (median of 2 warm builds" "$work/stdout" ||
+  { echo "FAIL: --repeat line: $(cat "$work/stdout")"; failures=$((failures + 1)); }
+cmp -s "$work/tris.npy" "$work/tris3.npy" || { echo "FAIL: --repeat changed TRIS.npy"; failures=$((failures + 1)); }
 
 [ $failures -eq 0 ] && echo "all pond lod bad-input cases passed"
 exit $failures
