@@ -17,6 +17,15 @@ if [ $code -ne 0 ] || ! grep -q "ms per frame (median of 2)" "$work/stdout" || !
   echo "FAIL (good run): exit $code, stdout: $(cat "$work/stdout"), stderr: $(cat "$work/stderr")"
   failures=$((failures + 1))
 fi
+# The 1025² scene (issue 30) renders end to end under the validation layer.
+scenes=$(dirname "$0")/../../scenes
+"$pond" render --scene "$scenes/rain_1025.json" --steps 5 --frames 2 --size 320x180 --out "$work/big.png" --validation \
+  > "$work/stdout" 2> "$work/stderr"
+code=$?
+if [ $code -ne 0 ] || ! grep -q "of a 1025 x 1025 grid" "$work/stdout" || [ "$(head -c 4 "$work/big.png" | tail -c 3)" != PNG ]; then
+  echo "FAIL (rain_1025): exit $code, stdout: $(cat "$work/stdout"), stderr: $(cat "$work/stderr")"
+  failures=$((failures + 1))
+fi
 # --profile adds each effect's cost, timed on frozen frames after the picture.
 "$pond" render --steps 10 --frames 2 --size 96x64 --out "$work/profiled.png" --profile > "$work/stdout" 2> "$work/stderr"
 code=$?
