@@ -126,7 +126,8 @@ vec3 term_exact(vec3 ua, vec3 ub, int dj, int di, float rest) {
 // Fast mode: the hardware inversesqrt refined by one Newton step, contraction allowed. Vulkan only
 // bounds inversesqrt to 2 ulp; one step squares that relative error (to ~1e-13), so the result is
 // within rounding of 1/sqrt on any device and fast mode's distance from exact, which the parity
-// suite measures, is the same everywhere.
+// suite measures, is the same everywhere. The rest lengths are calibrated for such an accurate
+// rsqrt (sim::gpu_rest_lengths), so a spring at rest has no tension.
 vec3 term_fast(vec3 ua, vec3 ub, int dj, int di, float rest) {
   vec3 d = (ub - ua) + vec3(float(dj), 0.0, float(di));
   const float l2 = dot(d, d);

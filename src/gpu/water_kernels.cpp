@@ -168,10 +168,11 @@ void WaterKernels::record_barrier(const vk::raii::CommandBuffer& cmd) {
 
 void WaterKernels::record_substep(const vk::raii::CommandBuffer& cmd, int c) const {
   const sim::StepConstants& k = model_.constants;
+  const auto [rest_edge, rest_diag] = sim::gpu_rest_lengths(model_);
   const auto rows = static_cast<std::uint32_t>(model_.rows);
   const StepPush push{.rows = rows, .cols = static_cast<std::uint32_t>(model_.cols),
                       .stride = static_cast<std::uint32_t>(stride_), .pitch = static_cast<std::uint32_t>(pitch_),
-                      .kc = k.kc, .kd = k.kd, .dt = k.dt, .rest_edge = k.rest_edge, .rest_diag = k.rest_diag};
+                      .kc = k.kc, .kd = k.kd, .dt = k.dt, .rest_edge = rest_edge, .rest_diag = rest_diag};
   cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *step_pipe_.pipeline);
   cmd.pushConstants<StepPush>(*step_pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
   cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *step_pipe_.layout, 0, *step_sets_[c], nullptr);

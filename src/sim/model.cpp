@@ -25,6 +25,25 @@ float calibrated_rest_length(float nominal, float rest_l2, int rsqrt_steps) {
   return nominal;  // not reached for the rest lengths pond uses (tested)
 }
 
+float calibrated_rest_length_accurate(float nominal, float rest_l2) {
+  const float y = static_cast<float>(1.0 / std::sqrt(static_cast<double>(rest_l2)));
+  float up = nominal, down = nominal;
+  for (int k = 0; k < 64; ++k) {
+    if (1.0f - up * y == 0.0f) return up;
+    if (1.0f - down * y == 0.0f) return down;
+    up = std::nextafter(up, 2 * nominal);
+    down = std::nextafter(down, 0.0f);
+  }
+  return nominal;
+}
+
+std::pair<float, float> gpu_rest_lengths(const WaterModel& m) {
+  const StepConstants& k = m.constants;
+  if (m.math != MathMode::fast || static_cast<float>(m.physics.rest_ratio) != 1.0f) return {k.rest_edge, k.rest_diag};
+  return {calibrated_rest_length_accurate(1.0f, 1.0f),
+          calibrated_rest_length_accurate(static_cast<float>(std::sqrt(2.0)), 2.0f)};
+}
+
 PerturbationTable tabulate(const Perturbation& p, const WaterModel& m) {
   PerturbationTable t;
   t.step = p.step;

@@ -4,6 +4,7 @@
 // edge spring's rest length is 1. Hooke's law is homogeneous of degree one in length, so the motion
 // in grid units is the world motion divided by h; the state is scaled back on output.
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "sim/bodies.h"
@@ -61,6 +62,13 @@ std::vector<std::uint8_t> node_kinds(const WaterSpec& water);
 // A rest length L such that 1 - L * rsqrt(l2) is exactly 0 for the rest squared length l2, so that
 // a grid at rest stays at rest bit for bit (the approximate rsqrt is not exactly 1/sqrt).
 float calibrated_rest_length(float nominal, float rest_l2, int rsqrt_steps);
+// The same for a reciprocal square root accurate to rounding: the GPU's fast mode, the device's
+// inversesqrt refined by a Newton step. (Rest lengths calibrated for the CPU's fast rsqrt, which
+// errs by up to 4.7e-6, would leave every spring of the GPU's that much tension at rest.)
+float calibrated_rest_length_accurate(float nominal, float rest_l2);
+// The rest lengths (edge, diagonal) the GPU's step uses for `model`: its constants in exact mode,
+// calibrated for the accurate rsqrt in fast mode.
+std::pair<float, float> gpu_rest_lengths(const WaterModel& model);
 
 PerturbationTable tabulate(const Perturbation& p, const WaterModel& model);
 

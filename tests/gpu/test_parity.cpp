@@ -402,9 +402,8 @@ TEST_F(GpuTest, EverySubmissionLeavesDisplacementsNormalsAndSplashes) {
 // bound is stated, the measured value printed: on the default scene after 1,000 steps the
 // largest deviation of any displacement or velocity component, relative to the largest
 // magnitude of that component over the grid, must stay below 5e-3 (measured on lavapipe: 1.9e-3,
-// about 26,000 float ulps of that magnitude). The fast rsqrt differs by ~1e-7 per spring
-// evaluation, also at rest (the rest lengths are calibrated for the exact rsqrt), and the waves
-// carry and accumulate the differences over the 1,000 steps.
+// about 24,000 float ulps of that magnitude). The fast rsqrt differs by ~1e-7 per spring
+// evaluation, and the waves carry and accumulate the differences over the 1,000 steps.
 TEST_F(GoldenTest, FastMathStaysWithinTheStatedBoundOfExact) {
   const sim::WaterModel exact = sim::build_model(scene::load_scene(""), sim::MathMode::exact);
   sim::WaterModel fast = exact;
@@ -462,6 +461,44 @@ TEST_F(GoldenTest, FastMathStaysWithinHalfAPercentOfTheWaveHeight) {
     std::printf("fast vs exact, %s, 400 steps: %.3f %% of the wave height\n", name, 100 * deviation / height);
     EXPECT_LT(deviation / height, 5e-3) << name;
   }
+}
+
+
+// The same on pools this suite has not tuned for: sixteen all-vertical Table-1 pools, each with
+// two splashes (radius 2, amplitude 1 to 1.5) at seeded random places. Fast mode's rest lengths
+// are calibrated for an rsqrt accurate to rounding (sim::gpu_rest_lengths); with the CPU's fast
+// calibration every spring kept 4.7e-6 of tension at rest and three of these pools drifted
+// 1.2-3.4 % (docs/perf.md).
+TEST_F(GoldenTest, FastMathStaysWellUnderHalfAPercentOnUnseenPools) {
+  std::uint32_t seed = 12345;
+  const auto uniform = [&seed](double lo, double hi) {
+    seed = seed * 1664525u + 1013904223u;
+    return lo + (hi - lo) * static_cast<double>(seed >> 8) / static_cast<double>(1u << 24);
+  };
+  double worst = 0;
+  for (int k = 0; k < 16; ++k) {
+    char json[512];
+    std::snprintf(json, sizeof json,
+                  R"({"border": "vertical", "constraints": [{"kind": "vertical", "rows": [0, 49], "cols": [0, 49]}],
+                      "perturbations": [{"step": 0, "row": %.2f, "col": %.2f, "radius": 2.0, "amplitude": %.2f},
+                                        {"step": 0, "row": %.2f, "col": %.2f, "radius": 2.0, "amplitude": %.2f}]})",
+                  uniform(8, 41), uniform(8, 41), uniform(1, 1.5), uniform(8, 41), uniform(8, 41), uniform(1, 1.5));
+    const scene::Scene s = scene::parse_scene(json, "pool " + std::to_string(k));
+    sim::CpuSolver cpu(sim::build_model(s, sim::MathMode::exact), sim::Backend::scalar, 1);
+    gpu::GpuSolver gpu(ctx(), sim::build_model(s, sim::MathMode::fast));
+    cpu.advance(400);
+    gpu.advance(400);
+    const sim::WaterState a = cpu.state(), b = gpu.read_state();
+    double height = 0, deviation = 0;
+    for (std::size_t n = 0; n < a.nodes(); ++n) {
+      height = std::max(height, std::fabs(double(a.uy[n])));
+      deviation = std::max(deviation, std::fabs(double(a.uy[n]) - double(b.uy[n])));
+    }
+    worst = std::max(worst, deviation / height);
+    EXPECT_LT(deviation / height, 2.5e-3) << json;
+  }
+  std::printf("fast vs exact, 16 unseen all-vertical pools, 400 steps: at most %.3f %% of the wave height\n",
+              100 * worst);
 }
 
 }  // namespace

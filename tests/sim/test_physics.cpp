@@ -62,6 +62,21 @@ TEST(Physics, CalibratedRestLengthsMakeTheRestForceExactlyZero) {
   }
 }
 
+// The GPU's fast mode computes an rsqrt accurate to rounding, so its rest lengths are calibrated
+// for that, not for the CPU's two-step rsqrt (whose 4.7e-6 would be tension at rest on the GPU);
+// exact mode keeps the model's constants, and so its bits.
+TEST(Physics, GpuFastRestLengthsLeaveNoTensionForAnAccurateRsqrt) {
+  Scene s = grid_scene(9, 9, NodeKind::vertical);
+  const WaterModel fast = build_model(s, MathMode::fast), exact = build_model(s, MathMode::exact);
+  const auto [edge, diag] = gpu_rest_lengths(fast);
+  EXPECT_EQ(1.0f - edge * 1.0f, 0.0f);
+  EXPECT_EQ(1.0f - diag * static_cast<float>(1.0 / std::sqrt(2.0)), 0.0f);
+  EXPECT_NE(diag, fast.constants.rest_diag);  // the CPU's fast calibration is 4.7e-6 away
+  const auto [exact_edge, exact_diag] = gpu_rest_lengths(exact);
+  EXPECT_EQ(exact_edge, exact.constants.rest_edge);
+  EXPECT_EQ(exact_diag, exact.constants.rest_diag);
+}
+
 TEST(Physics, FixedNodesNeverMoveAndVerticalNodesKeepXZ) {
   Scene s = grid_scene(30, 30, NodeKind::vertical);
   s.constraints.push_back({NodeKind::fixed, 10, 14, 16, 20});
