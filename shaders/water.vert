@@ -55,7 +55,7 @@ void main() {
   const float floor_sun = (1.0 - kFloorAmbient) * max(f.sun.y, 0.0);  // the floor's light: sky, then sun
   out_ground = vec4(f.ground.rgb * (kFloorAmbient + floor_sun), f.caustics.z);
   out_horizon = vec4(sky_horizon(f.sky.rgb), f.caustics.w);
-  out_absorb = (vec3(1.0) - f.water.rgb) * (0.45 / POND_FRAME_GRID_SPACING(f));
+  out_absorb = f.absorption.rgb;  // per world unit, whatever the grid's spacing
   out_pool = vec4(float(cols - 1u), float(POND_FRAME_ROWS(f) - 1u), vec2(f.caustics_size.xy));
   out_screen = f.screen.xyz;
   out_shadow = (f.shadow * vec4(world, 1.0)).xyz;

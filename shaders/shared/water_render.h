@@ -118,6 +118,7 @@ struct WaterFrame {
   uvec4 caustics_size;  // xy: the caustics map's size (texels); zw: 0
   vec4 caustics;  // a world point p's place in the caustics map: uv = p.xz * xy + p.y * zw
                   // (render/caustics_pass.h caustics_lookup)
+  vec4 absorption;  // rgb: the water's Beer-Lambert absorption per world unit of path; w: 0
 };
 
 // The packed lanes of a WaterFrame by name. Macros, so that one spelling serves both languages

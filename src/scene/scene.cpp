@@ -169,6 +169,9 @@ void parse_lighting(JsonFields f, LightingSpec& l) {
   l.sun = f.vec3("sun", l.sun);
   if (const std::optional<Problem> problem = sun_problem(l.sun)) f.fail(problem->key.c_str(), problem->what);
   l.water = color(f, "water", l.water);
+  l.absorption = f.vec3("absorption", l.absorption);
+  for (double a : l.absorption)
+    if (!(a >= 0.0 && a <= 100.0)) f.fail("absorption", "must be three coefficients per world unit in [0, 100]");
   l.sky = color(f, "sky", l.sky);
   l.ground = color(f, "ground", l.ground);
   f.finish();

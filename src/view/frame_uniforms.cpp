@@ -34,6 +34,7 @@ wr::WaterFrame frame_uniforms(const FrameUniformsInput& in) {
   f.sun = v4(sun);
   f.sky = v4(l.sky);
   f.water = v4(l.water);
+  f.absorption = v4(l.absorption);
   f.ground = v4(l.ground);
   POND_FRAME_FLOOR_DEPTH(f) = static_cast<float>(model.basin.floor_depth);
   POND_FRAME_LAND_HEIGHT(f) = static_cast<float>(model.basin.land_height);

@@ -32,7 +32,10 @@ struct ViewSpec {
 // "lighting": the sun and the colours the water shader mixes (linear RGB in [0, 1]).
 struct LightingSpec {
   std::array<double, 3> sun{-0.3, 0.38, -0.87};   // direction toward the sun (normalized on use)
-  std::array<double, 3> water{0.015, 0.11, 0.13};  // deep water (what light through it tends to)
+  std::array<double, 3> water{0.015, 0.11, 0.13};  // the light deep water scatters back (its colour)
+  // Beer-Lambert absorption per world unit of path (a world unit taken as a metre): pure water's
+  // absorption coefficients near 640, 550 and 465 nm (Pope and Fry 1997), a clear pool.
+  std::array<double, 3> absorption{0.30, 0.057, 0.0094};
   std::array<double, 3> sky{0.28, 0.52, 0.9};      // sky at the zenith (the horizon is lighter)
   std::array<double, 3> ground{0.55, 0.47, 0.33};  // pool floor, shore and islands
 };

@@ -65,6 +65,21 @@ class ShadowTest : public GpuTest {
 // The horizontal step along the ground, per unit of height, from a point to its shadow.
 std::array<double, 2> shadow_step(const std::array<double, 3>& sun) { return {-sun[0] / sun[1], -sun[2] / sun[1]}; }
 
+// Where, on calm water, the eye sees the floor point (fx, -depth, fz): the surface point whose view
+// ray refracts (air to water, 1.33) onto it, found by bisection along the line between the eye's
+// foot and the floor point.
+std::array<double, 2> surface_point_seeing(const std::array<double, 3>& eye, double fx, double fz, double depth) {
+  const double dx = fx - eye[0], dz = fz - eye[2], run = std::hypot(dx, dz), h = eye[1];
+  double lo = 0, hi = run;  // the surface point's distance from the eye's foot
+  for (int k = 0; k < 60; ++k) {
+    const double r = 0.5 * (lo + hi), rest = run - r;
+    const double sin_air = r / std::hypot(r, h), sin_water = rest / std::hypot(rest, depth);
+    (sin_air > 1.33 * sin_water ? hi : lo) = r;
+  }
+  const double f = run > 0 ? lo / run : 0;
+  return {eye[0] + dx * f, eye[2] + dz * f};
+}
+
 TEST_F(ShadowTest, TrunkShadowFallsAwayFromTheSunAndGoesWithShadowsOff) {
   const scene::Scene scene = scene::parse_scene(kCalmIsland, "test");
   const Rgba on = render(kCalmIsland, true), off = render(kCalmIsland, false);
@@ -89,16 +104,24 @@ TEST_F(ShadowTest, TrunkShadowFallsAwayFromTheSunAndGoesWithShadowsOff) {
   }
   EXPECT_GE(darker, checked * 3 / 4) << darker << " of " << checked << " land points in the trunk's shadow are darker";
   EXPECT_EQ(sun_side_changed, 0) << "the land toward the sun changed";
-  // Higher up the trunk's shadow reaches past the island onto the water (y = 0): the floor seen
-  // through it loses the sun there. Points on the line of the shadow from 2 to 3 units up.
+  // Higher up the trunk's shadow reaches past the island onto the water and, down the refracted
+  // sunlight, the floor, which the clear water shows where the view ray refracted at the surface
+  // meets it. Points on the line of the shadow from 1 to 3 units up whose sunlight enters the
+  // water past the island and whose floor point is in the picture.
+  const std::array<float, 3> t = view::sunlight_in_water(scene.lighting.sun);
+  const double depth = scene.basin.floor_depth;
   int water_checked = 0, water_darker = 0;
-  for (double up = 2.0; up <= 3.0; up += 0.1) {
+  for (double up = 1.0; up <= 3.0; up += 0.1) {
     const double height = land + up;  // above the water's rest plane
-    const auto p = project(vp, x + step[0] * height, 0.0, z + step[1] * height);
-    ASSERT_TRUE(on_image(p));
+    const double sx = x + step[0] * height, sz = z + step[1] * height;
+    if (sx >= 30 * h && sx <= 36 * h && sz >= 30 * h && sz <= 35 * h) continue;  // on the island
+    const auto seen = surface_point_seeing(scene.camera->eye, sx + t[0] * depth / -t[1], sz + t[2] * depth / -t[1], depth);
+    const auto p = project(vp, seen[0], 0.0, seen[1]);
+    if (!on_image(p)) continue;
     ++water_checked;
     if (brightness(on, p) + 15 < brightness(off, p)) ++water_darker;
   }
+  EXPECT_GE(water_checked, 4);
   EXPECT_GE(water_darker, water_checked / 2) << water_darker << " of " << water_checked << " water points darker";
   // With shadows off nothing of the kind: the picture equals a frame of a scene without the key's
   // effect (the default on, set off by FrameView) -- checked by the golden above; and the tree's

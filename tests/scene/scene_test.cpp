@@ -175,6 +175,7 @@ TEST(Scene, RenderKeysParse) {
   EXPECT_FALSE(s.view.effects.shadows);
   EXPECT_EQ(s.lighting.sun, (std::array<double, 3>{0, 1, 0}));
   EXPECT_EQ(s.lighting.sky, (std::array<double, 3>{1, 1, 1}));
+  EXPECT_EQ(s.lighting.absorption, (view::LightingSpec{}.absorption));  // not given: pure water's
   // Absent: no camera (the renderer frames the pond), defaults elsewhere.
   const Scene d = parse_scene("{}", "x");
   EXPECT_FALSE(d.camera.has_value());
@@ -219,6 +220,8 @@ TEST(Scene, RenderKeyErrorsNameThePath) {
   EXPECT_TRUE(has(R"({"lighting": {"sun": [0, 0, 0]}})", "lighting.sun must not be zero"));
   EXPECT_TRUE(has(R"({"lighting": {"water": [0, 2, 0]}})", "lighting.water must be an RGB colour"));
   EXPECT_TRUE(has(R"({"lighting": {"sky": "blue"}})", "lighting.sky must be an array"));
+  EXPECT_TRUE(has(R"({"lighting": {"absorption": [0.3, -0.1, 0]}})", "lighting.absorption must be three coefficients"));
+  EXPECT_TRUE(has(R"({"lighting": {"absorption": [0.3, 1000, 0]}})", "lighting.absorption must be three coefficients"));
   EXPECT_TRUE(has(R"({"lighting": {"moon": [0, 1, 0]}})", "lighting.moon is not a known key"));
 }
 
