@@ -60,13 +60,16 @@ struct CausticsPush {
 // Water's index of refraction (air -> water: 1 / kWaterIor), as water.frag's view ray uses.
 POND_CAUSTICS_CONST float kWaterIor = 1.33f;
 // The floor's light is kFloorAmbient of the sky's plus (1 - kFloorAmbient) * sun.y of the sun's
-// (water.vert's POND_WATER_FLAT_GROUND): the caustics scale the second part.
-POND_CAUSTICS_CONST float kFloorAmbient = 0.45f;
+// (water.vert's POND_WATER_FLAT_GROUND): the caustics scale the second part. A clear sky gives
+// about 28 % of the light on a level surface when the sun is 22 degrees up (the default sun) and
+// less higher up, so the sky's part is 0.13 and the sun's 0.87 sun.y (a direct share of 0.72 at
+// the default sun; docs/picture.md).
+POND_CAUSTICS_CONST float kFloorAmbient = 0.13f;
 // The map holds light * kCausticsUnit in an R8G8B8A8_UNORM image (a storage format every device
-// has, and a fast one for llvmpipe to sample): light 1 is level 64 exactly, the brightest 255/64,
-// steps of 1/64.
-POND_CAUSTICS_CONST float kCausticsUnit = 64.0f / 255.0f;
-POND_CAUSTICS_CONST float kCausticsDecode = 255.0f / 64.0f;
+// has, and a fast one for llvmpipe to sample): light 1 is level 32 exactly, the brightest 255/32
+// (a focus of kMaxFocus with the direct share at 1 is 8), steps of 1/32.
+POND_CAUSTICS_CONST float kCausticsUnit = 32.0f / 255.0f;
+POND_CAUSTICS_CONST float kCausticsDecode = 255.0f / 32.0f;
 // The rays' grid has at most kCausticsRays cells across, and the map whole texels per cell of it,
 // as many as fit in kCausticsTexels (at least one): the pass's cost grows with both (docs/perf.md).
 // A 257 x 257 grid: rays on every fourth node, 64 x 64 texels; 50 x 50: every node, 49 x 49.

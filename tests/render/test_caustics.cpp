@@ -158,6 +158,60 @@ TEST_F(CausticsTest, CpuSolverGivesTheGpuSolversMap) {
   EXPECT_EQ(gpu.light, cpu.light);
 }
 
+// Issue 27's splash: amplitude 1, radius 2, in a pool 3 units deep on a 129² grid, seen from
+// straight above.
+const char* kCrestPool = R"({"grid": {"rows": 129, "cols": 129}, "border": "vertical", "basin": {"floor_depth": 3.0},
+  "camera": {"eye": [64, 48, 64.5], "target": [64, 0, 64], "fovy": 40},
+  "perturbations": [{"step": 0, "row": 64, "col": 64, "radius": 2.0, "amplitude": 1.0}]})";
+
+double linear_luminance(const Rgba& image, int x, int y) {
+  const std::uint8_t* p = &image.pixels[4 * (static_cast<std::size_t>(y) * image.width + x)];
+  const auto lin = [](std::uint8_t c) {
+    const double v = c / 255.0;
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+  };
+  return 0.2126 * lin(p[0]) + 0.7152 * lin(p[1]) + 0.0722 * lin(p[2]);
+}
+
+// Under the splash's crest (25 steps on) the map's bright ring is at least 1.3 times calm water's
+// light on the floor and its dark band at most 0.8; the rendered floor, in linear light against the
+// same frame without caustics, at least 1.2 and at most 0.85 (the 99.5th and 0.5th percentiles of
+// the pixels' ratios, so that no single pixel decides).
+TEST_F(CausticsTest, ASplashsRingIsBrightAndItsBandDark) {
+  const Map m = map(kCrestPool, 25);
+  const auto [lo, hi] = std::minmax_element(m.light.begin(), m.light.end());
+  const Rgba on = render(kCrestPool, 25, true), off = render(kCrestPool, 25, false);
+  std::vector<double> ratio;
+  for (int y = 0; y < on.height; ++y)
+    for (int x = 0; x < on.width; ++x)
+      ratio.push_back(linear_luminance(on, x, y) / std::max(linear_luminance(off, x, y), 1e-6));
+  std::sort(ratio.begin(), ratio.end());
+  const double dark = ratio[ratio.size() / 200], bright = ratio[ratio.size() - 1 - ratio.size() / 200];
+  std::printf("a splash's caustics: the map %.2f .. %.2f of calm water's light; the rendered floor %.2f .. %.2f\n", *lo,
+              *hi, dark, bright);
+  EXPECT_GE(*hi, 1.3f);
+  EXPECT_LE(*lo, 0.8f);
+  EXPECT_GE(bright, 1.2);
+  EXPECT_LE(dark, 0.85);
+}
+
+// Waves seen from 30 to 60 degrees above: switching the caustics off changes at least 1 % of the
+// pixels by more than 8 levels (through clear water the floor's light is plain to see).
+TEST_F(CausticsTest, SwitchingThemOffVisiblyChangesAPondWithWaves) {
+  for (const double degrees : {30.0, 45.0, 60.0}) {
+    const double rad = degrees * 3.14159265358979 / 180, back = 40 * std::cos(rad), up = 40 * std::sin(rad);
+    const std::string json = R"({"grid": {"rows": 97, "cols": 97}, "border": "vertical",
+      "camera": {"eye": [48, )" + std::to_string(up) + ", " + std::to_string(48 + back) + R"(], "target": [48, 0, 48]},
+      "perturbations": [{"step": 0, "row": 40, "col": 36, "radius": 2.0, "amplitude": 0.8},
+                        {"step": 10, "row": 60, "col": 58, "radius": 1.5, "amplitude": 0.6},
+                        {"step": 20, "row": 45, "col": 62, "radius": 2.5, "amplitude": -0.5}]})";
+    const ImageDiff d = compare(render(json, 40, false), render(json, 40, true), 8);
+    std::printf("caustics on vs off, waves seen from %.0f degrees: %.1f %% of the pixels differ by more than 8 levels\n",
+                degrees, 100 * d.share);
+    EXPECT_GE(d.share, 0.01) << degrees << " degrees";
+  }
+}
+
 TEST_F(CausticsTest, SplashGoldensAndTheFloorChanged) {
   const Rgba on = render(kSplashPool, 40, true), off = render(kSplashPool, 40, false);
   expect_golden("caustics_splash_on", on);
