@@ -43,7 +43,8 @@ void write_storage(const Context& ctx, const vk::raii::DescriptorSet& set, std::
 
 WaterKernels::WaterKernels(const Context& ctx, const sim::WaterModel& model, std::size_t pitch, std::size_t stride,
                            const WaterBuffers& buffers, std::uint32_t splash_tables)
-    : ctx_(ctx), model_(model), pitch_(pitch), stride_(stride), state_{&buffers.state[0], &buffers.state[1]} {
+    : ctx_(ctx), model_(model), rest_(sim::gpu_rest_lengths(model)), pitch_(pitch), stride_(stride),
+      state_{&buffers.state[0], &buffers.state[1]} {
   create_pipelines(model);
   for (int c = 0; c < 2; ++c) {
     state_r32_[c] = create_texel_view(ctx_, buffers.state[c], vk::Format::eR32Sfloat, "the GPU solver's state");
@@ -168,11 +169,10 @@ void WaterKernels::record_barrier(const vk::raii::CommandBuffer& cmd) {
 
 void WaterKernels::record_substep(const vk::raii::CommandBuffer& cmd, int c) const {
   const sim::StepConstants& k = model_.constants;
-  const auto [rest_edge, rest_diag] = sim::gpu_rest_lengths(model_);
   const auto rows = static_cast<std::uint32_t>(model_.rows);
   const StepPush push{.rows = rows, .cols = static_cast<std::uint32_t>(model_.cols),
                       .stride = static_cast<std::uint32_t>(stride_), .pitch = static_cast<std::uint32_t>(pitch_),
-                      .kc = k.kc, .kd = k.kd, .dt = k.dt, .rest_edge = rest_edge, .rest_diag = rest_diag};
+                      .kc = k.kc, .kd = k.kd, .dt = k.dt, .rest_edge = rest_.first, .rest_diag = rest_.second};
   cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *step_pipe_.pipeline);
   cmd.pushConstants<StepPush>(*step_pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
   cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *step_pipe_.layout, 0, *step_sets_[c], nullptr);

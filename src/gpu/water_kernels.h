@@ -6,6 +6,7 @@
 // record_*() functions only record.
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "gpu/buffer.h"
@@ -56,6 +57,7 @@ class WaterKernels {
 
   const Context& ctx_;
   const sim::WaterModel& model_;
+  std::pair<float, float> rest_;  // the step's rest lengths, edge and diagonal (sim::gpu_rest_lengths)
   std::size_t pitch_, stride_;
   ComputePipeline step_pipe_, perturb_pipe_, normals_pipe_;
   // Texel-buffer views the shaders read and write the state through (water_gpu.h,

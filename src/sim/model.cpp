@@ -13,28 +13,33 @@ static_assert(static_cast<unsigned>(NodeKind::free) == shared::kNodeFree &&
               static_cast<unsigned>(NodeKind::vertical) == shared::kNodeVertical &&
               static_cast<unsigned>(NodeKind::fixed) == shared::kNodeFixed);
 
-float calibrated_rest_length(float nominal, float rest_l2, int rsqrt_steps) {
-  // Search the floats nearest `nominal` for one whose product with rsqrt(rest_l2) rounds to 1.
-  float up = nominal, down = nominal;
-  for (int k = 0; k < 64; ++k) {
-    if (shared::spring_factor(rest_l2, up, rsqrt_steps) == 0.0f) return up;
-    if (shared::spring_factor(rest_l2, down, rsqrt_steps) == 0.0f) return down;
-    up = std::nextafter(up, 2 * nominal);
-    down = std::nextafter(down, 0.0f);
-  }
-  return nominal;  // not reached for the rest lengths pond uses (tested)
-}
+namespace {
 
-float calibrated_rest_length_accurate(float nominal, float rest_l2) {
-  const float y = static_cast<float>(1.0 / std::sqrt(static_cast<double>(rest_l2)));
+// The float nearest `nominal` for which at_rest(L) holds, searching outward; `nominal` when none
+// within 64 ulps does (not reached for the rest lengths pond uses: tested).
+template <class AtRest>
+float nearest_rest_length(float nominal, AtRest at_rest) {
   float up = nominal, down = nominal;
   for (int k = 0; k < 64; ++k) {
-    if (1.0f - up * y == 0.0f) return up;
-    if (1.0f - down * y == 0.0f) return down;
+    if (at_rest(up)) return up;
+    if (at_rest(down)) return down;
     up = std::nextafter(up, 2 * nominal);
     down = std::nextafter(down, 0.0f);
   }
   return nominal;
+}
+
+}  // namespace
+
+float calibrated_rest_length(float nominal, float rest_l2, int rsqrt_steps) {
+  // A length whose product with the approximate rsqrt(rest_l2) rounds to 1.
+  return nearest_rest_length(nominal,
+                             [&](float l) { return shared::spring_factor(rest_l2, l, rsqrt_steps) == 0.0f; });
+}
+
+float calibrated_rest_length_accurate(float nominal, float rest_l2) {
+  const float y = static_cast<float>(1.0 / std::sqrt(static_cast<double>(rest_l2)));
+  return nearest_rest_length(nominal, [y](float l) { return 1.0f - l * y == 0.0f; });
 }
 
 std::pair<float, float> gpu_rest_lengths(const WaterModel& m) {

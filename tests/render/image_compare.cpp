@@ -1,6 +1,7 @@
 #include "image_compare.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -42,6 +43,16 @@ ImageDiff compare(const Rgba& expected, const Rgba& actual, int levels) {
   }
   d.share = pixels ? static_cast<double>(differing) / static_cast<double>(pixels) : 1.0;
   return d;
+}
+
+double linear_luminance(const Rgba& image, int x, int y) {
+  const std::uint8_t* p = &image.pixels[4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
+                                             static_cast<std::size_t>(x))];
+  const auto linear = [](std::uint8_t c) {
+    const double v = c / 255.0;
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+  };
+  return 0.2126 * linear(p[0]) + 0.7152 * linear(p[1]) + 0.0722 * linear(p[2]);
 }
 
 }  // namespace pond::test

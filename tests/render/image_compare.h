@@ -23,4 +23,7 @@ struct ImageDiff {
 
 ImageDiff compare(const Rgba& expected, const Rgba& actual, int levels);
 
+// The luminance of pixel (x, y) in linear light (its sRGB channels decoded; Rec. 709 weights).
+double linear_luminance(const Rgba& image, int x, int y);
+
 }  // namespace pond::test

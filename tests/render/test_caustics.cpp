@@ -164,15 +164,6 @@ const char* kCrestPool = R"({"grid": {"rows": 129, "cols": 129}, "border": "vert
   "camera": {"eye": [64, 48, 64.5], "target": [64, 0, 64], "fovy": 40},
   "perturbations": [{"step": 0, "row": 64, "col": 64, "radius": 2.0, "amplitude": 1.0}]})";
 
-double linear_luminance(const Rgba& image, int x, int y) {
-  const std::uint8_t* p = &image.pixels[4 * (static_cast<std::size_t>(y) * image.width + x)];
-  const auto lin = [](std::uint8_t c) {
-    const double v = c / 255.0;
-    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
-  };
-  return 0.2126 * lin(p[0]) + 0.7152 * lin(p[1]) + 0.0722 * lin(p[2]);
-}
-
 // Under the splash's crest (25 steps on) the map's bright ring is at least 1.3 times calm water's
 // light on the floor and its dark band at most 0.8; the rendered floor, in linear light against the
 // same frame without caustics, at least 1.2 and at most 0.85 (the 99.5th and 0.5th percentiles of

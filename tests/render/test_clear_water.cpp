@@ -24,19 +24,13 @@ std::string calm_pool(double spacing, const std::string& lighting) {
     "lighting": {)" + lighting + "}}";
 }
 
-double linear(std::uint8_t srgb) {
-  const double c = srgb / 255.0;
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-
 // The standard deviation of the linear luminance over the middle half of the picture (all water).
 double contrast(const Rgba& image) {
   double sum = 0, sum2 = 0;
   int n = 0;
   for (int y = image.height / 4; y < 3 * image.height / 4; ++y)
     for (int x = image.width / 4; x < 3 * image.width / 4; ++x) {
-      const std::uint8_t* p = &image.pixels[4 * (static_cast<std::size_t>(y) * image.width + x)];
-      const double l = 0.2126 * linear(p[0]) + 0.7152 * linear(p[1]) + 0.0722 * linear(p[2]);
+      const double l = linear_luminance(image, x, y);
       sum += l, sum2 += l * l, ++n;
     }
   const double mean = sum / n;
