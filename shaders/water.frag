@@ -9,7 +9,7 @@
 //  - a sharp specular highlight of the sun.
 // The floor is analytic (not a second pass reading a depth buffer): one opaque pass, no sorting.
 // POND_WATER_REFLECTIONS (water_reflect.frag): what the surface reflects is the planar reflection
-// (render/reflection_pass.h: the land and the tree mirrored about y = 0, at half resolution)
+// (render/reflection_pass.h: the land and the tree mirrored about y = 0, at the frame's resolution)
 // where it holds something, shifted by the normal's tilt, and the sky where it is transparent.
 #extension GL_GOOGLE_include_directive : require
 

@@ -1,8 +1,8 @@
 #pragma once
 // The planar reflection of everything above the water (frame_loop.h draws it first each frame when
 // FrameView::effects.reflections is on): the land and the pass drawables (the tree) mirrored about
-// the water's rest plane y = 0, only what lies above that plane (view::mirrored_walls), into a colour target at half
-// the frame's resolution per axis, cleared to transparent. water_reflect.frag samples it at the
+// the water's rest plane y = 0, only what lies above that plane (view::mirrored_walls), into a colour target at
+// the frame's resolution, cleared to transparent. water_reflect.frag samples it at the
 // pixel's screen position shifted by the surface normal and falls back to the sky where it is
 // transparent (alpha 0: nothing above the water there), so nothing below the water and nothing
 // in front of it is reflected.
@@ -22,7 +22,9 @@ namespace pond::render {
 
 inline constexpr vk::Format kReflectionFormat = vk::Format::eR8G8B8A8Unorm;
 inline constexpr vk::Format kReflectionDepthFormat = kDepthFormat;
-inline constexpr std::uint32_t kReflectionDivisor = 2;  // per axis: a quarter of the pixels
+// Per axis. At 2, read nearest, thin casters (twigs, a trunk a few pixels wide) broke into blocks at
+// grazing angles, and a bilinear read smoothed the blocks without joining them (docs/perf.md).
+inline constexpr std::uint32_t kReflectionDivisor = 1;
 
 // The reflection's size for a frame of `frame` pixels (at least 1 x 1).
 vk::Extent2D reflection_extent(vk::Extent2D frame);
