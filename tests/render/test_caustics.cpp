@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -200,6 +202,48 @@ TEST_F(CausticsTest, SwitchingThemOffVisiblyChangesAPondWithWaves) {
     std::printf("caustics on vs off, waves seen from %.0f degrees: %.1f %% of the pixels differ by more than 8 levels\n",
                 degrees, 100 * d.share);
     EXPECT_GE(d.share, 0.01) << degrees << " degrees";
+  }
+}
+
+// Ponds made up from a seed (grid, spacing, depth, an island with a tree, splashes, a camera from
+// 20 to 70 degrees above and any side), every effect on: switching the caustics off still changes
+// at least 1 % of the pixels by more than 8 levels.
+std::string made_up_pond(std::mt19937& rng) {
+  const auto pick = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  const auto pick_int = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  const int n = pick_int(65, 129);
+  const double spacing = pick_int(0, 1) ? 0.5 : 1.0, depth = pick(1.5, 4.0);
+  const int r0 = pick_int(n / 4, n / 2), c0 = pick_int(n / 4, n / 2), side = pick_int(4, 8);
+  std::string splashes;
+  for (int k = 0, count = pick_int(2, 4); k < count; ++k)
+    splashes += std::string(k ? ", " : "") + R"({"step": )" + std::to_string(8 * k) + R"(, "row": )" +
+                std::to_string(pick_int(8, n - 9)) + R"(, "col": )" + std::to_string(pick_int(8, n - 9)) +
+                R"(, "radius": )" + std::to_string(pick(1.5, 3.0)) + R"(, "amplitude": )" + std::to_string(pick(0.5, 1.0)) + "}";
+  const double elevation = pick(20, 70) * 3.14159265358979 / 180, azimuth = pick(0, 2 * 3.14159265358979);
+  const double centre = (n - 1) * spacing / 2, reach = 0.9 * (n - 1) * spacing;
+  const double eye_x = centre + reach * std::cos(elevation) * std::cos(azimuth);
+  const double eye_z = centre + reach * std::cos(elevation) * std::sin(azimuth);
+  return R"({"grid": {"rows": )" + std::to_string(n) + R"(, "cols": )" + std::to_string(n) + R"(, "spacing": )" +
+         std::to_string(spacing) + R"(}, "border": "vertical", "basin": {"floor_depth": )" + std::to_string(depth) +
+         R"(}, "constraints": [{"kind": "fixed", "rows": [)" + std::to_string(r0) + ", " + std::to_string(r0 + side) +
+         R"(], "cols": [)" + std::to_string(c0) + ", " + std::to_string(c0 + side) + R"(]}],
+    "tree": {"depth": 6, "draw": "tubes", "positions": [[)" + std::to_string(r0 + side / 2.0) + ", " +
+         std::to_string(c0 + side / 2.0) + R"(]]},
+    "perturbations": [)" + splashes + R"(],
+    "camera": {"eye": [)" + std::to_string(eye_x) + ", " + std::to_string(reach * std::sin(elevation)) + ", " +
+         std::to_string(eye_z) + R"(], "target": [)" + std::to_string(centre) + ", 0, " + std::to_string(centre) + "]}}";
+}
+
+TEST_F(CausticsTest, SwitchingThemOffVisiblyChangesPondsMadeUpFromASeed) {
+  std::mt19937 rng(20261203);
+  for (int k = 0; k < 6; ++k) {
+    const std::string json = made_up_pond(rng);
+    const auto frame = [&](bool caustics) {
+      return render_scene_frame(ctx(), json, view::Effects{.caustics = caustics}, kWidth, kHeight, 30);
+    };
+    const ImageDiff d = compare(frame(false), frame(true), 8);
+    std::printf("made-up pond %d: caustics on vs off, %.1f %% of the pixels differ by more than 8 levels\n", k, 100 * d.share);
+    EXPECT_GE(d.share, 0.01) << json;
   }
 }
 
