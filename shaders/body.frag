@@ -3,7 +3,8 @@
 // toward the zenith), with a small sun highlight, since the balls are smooth (painted plastic, not
 // bark), and a rim of sky light at grazing angles. A held body (albedo.a = 1) is lightened, so the
 // person dragging it sees which one it is. POND_BODY_MIRROR (body_mirror.frag): the reflection
-// shows only what is above the water.
+// shows only what is above the water; POND_BODY_SUBMERGED (body_submerged.frag): the submerged
+// layer (render/submerged_pass.h) only what is below it, with its view depths in and out.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/body_render.h"
@@ -12,11 +13,15 @@
 
 layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;
-layout(location = kBodyFlatEye) flat in vec3 in_eye;
+layout(location = kBodyFlatEye) flat in vec4 in_eye;  // w: the radius (world)
 layout(location = kBodyFlatSun) flat in vec3 in_sun;
 layout(location = kBodyFlatSky) flat in vec3 in_sky;
 layout(location = kBodyFlatAlbedo) flat in vec4 in_albedo;
+#ifdef POND_BODY_SUBMERGED
+layout(location = 0) out uvec4 out_layer;  // render/submerged_pass.h
+#else
 layout(location = 0) out vec4 out_color;
+#endif
 
 const vec3 kSunColor = vec3(1.0, 0.96, 0.9);
 
@@ -24,8 +29,11 @@ void main() {
 #ifdef POND_BODY_MIRROR
   if (in_world.y < 0.0) discard;  // (its mirror image is lit as the mirrored eye sees the body)
 #endif
+#ifdef POND_BODY_SUBMERGED
+  if (in_world.y > 0.0) discard;
+#endif
   const vec3 n = normalize(in_normal);
-  const vec3 v = normalize(in_eye - in_world);
+  const vec3 v = normalize(in_eye.xyz - in_world);
   const vec3 albedo = mix(in_albedo.rgb, vec3(1.0), 0.35 * in_albedo.a);
   const float diffuse = max(dot(n, in_sun), 0.0);
   const vec3 ambient = in_sky * (0.3 + 0.15 * n.y);
@@ -35,5 +43,13 @@ void main() {
   const float rim = 1.0 - max(dot(n, v), 0.0);
   const vec3 c = albedo * (ambient + 0.85 * diffuse * kSunColor) + 0.35 * spec * kSunColor +
                  0.15 * rim * rim * in_sky;
+#ifdef POND_BODY_SUBMERGED
+  // The view depth where the eye's line leaves the sphere: the chord from this entry point is
+  // 2 r cos(angle to the normal), and view depth grows along the line as it does to here.
+  const float front = 1.0 / gl_FragCoord.w, to_here = distance(in_eye.xyz, in_world);
+  const float back = front + 2.0 * in_eye.w * max(dot(n, v), 0.0) * front / to_here;
+  out_layer = uvec4(packUnorm4x8(finish_color(c)), floatBitsToUint(front), floatBitsToUint(back), 0u);
+#else
   out_color = finish_color(c);
+#endif
 }

@@ -16,7 +16,7 @@ layout(location = kBodyAttribCentre) in vec3 in_centre;
 
 layout(location = 0) out vec3 out_world;
 layout(location = 1) out vec3 out_normal;
-layout(location = kBodyFlatEye) flat out vec3 out_eye;
+layout(location = kBodyFlatEye) flat out vec4 out_eye;  // w: the radius (world)
 layout(location = kBodyFlatSun) flat out vec3 out_sun;
 layout(location = kBodyFlatSky) flat out vec3 out_sky;
 layout(location = kBodyFlatAlbedo) flat out vec4 out_albedo;
@@ -25,10 +25,10 @@ void main() {
   out_world = in_centre * in_size.y + in_point.xyz * in_size.x;
   out_normal = in_point.xyz;
 #ifdef POND_BODY_MIRROR
-  out_eye = vec3(f.eye.x, -f.eye.y, f.eye.z);
+  out_eye = vec4(f.eye.x, -f.eye.y, f.eye.z, in_size.x);
   gl_Position = f.view_proj * vec4(out_world.x, -out_world.y, out_world.z, 1.0);
 #else
-  out_eye = f.eye.xyz;
+  out_eye = vec4(f.eye.xyz, in_size.x);
   gl_Position = f.view_proj * vec4(out_world, 1.0);
 #endif
   out_sun = f.sun.xyz;

@@ -8,9 +8,12 @@
 
 #include "shared/water_render.h"
 #include "shared/water_shading.h"
-// The mirrored land (POND_LAND_MIRROR: land_mirror.frag, the planar reflection's) never reads the
-// shadow map: while the reflection is drawn the map may be in another pass's layout.
-#ifndef POND_LAND_MIRROR
+// The mirrored land (POND_LAND_MIRROR: land_mirror.frag, the planar reflection's) and the walls
+// under the water (POND_LAND_SUBMERGED: land_submerged.frag, render/submerged_pass.h) never read
+// the shadow map: while those layers are drawn the map may be in another pass's layout.
+#if defined(POND_LAND_MIRROR) || defined(POND_LAND_SUBMERGED)
+#define POND_LAND_LAYER
+#else
 #include "shared/shadow_sampling.h"
 #endif
 
@@ -23,7 +26,11 @@ layout(location = 1) in vec3 in_world;
 layout(location = 2) in float in_top;
 layout(location = 3) in vec3 in_sun_share;  // read only with shadows, so only then interpolated
 layout(location = 4) in vec3 in_shadow;
+#ifdef POND_LAND_SUBMERGED
+layout(location = 0) out uvec4 out_layer;  // render/submerged_pass.h
+#else
 layout(location = 0) out vec4 out_color;
+#endif
 
 float tri(float x) { return abs(fract(x) - 0.5) * 4.0 - 1.0; }
 
@@ -41,8 +48,14 @@ vec3 land_texture(vec3 p, float top) {
 
 void main() {
   vec3 light = in_color;
-#ifndef POND_LAND_MIRROR
+#ifndef POND_LAND_LAYER
   if (kShadows) light *= vec3(1.0) - in_sun_share * (1.0 - sun_light(in_shadow));
 #endif
+#ifdef POND_LAND_SUBMERGED
+  // A wall stands on the floor: solid behind its face as far as any ray goes.
+  out_layer = uvec4(packUnorm4x8(finish_color(light * land_texture(in_world, in_top))), floatBitsToUint(1.0 / gl_FragCoord.w),
+                    floatBitsToUint(3.0e38), 0u);
+#else
   out_color = finish_color(light * land_texture(in_world, in_top));
+#endif
 }

@@ -44,6 +44,12 @@ layout(set = 0, binding = POND_RENDER_BINDING_REFLECTION) uniform sampler2D refl
 #endif
 layout(set = 0, binding = POND_RENDER_BINDING_CAUSTICS) uniform sampler2D caustics;
 layout(constant_id = POND_SPEC_CAUSTICS) const bool kCaustics = false;
+layout(set = 0, binding = POND_RENDER_BINDING_SUBMERGED) uniform usampler2D submerged;
+layout(constant_id = POND_SPEC_SUBMERGED) const bool kSubmerged = false;
+// Read only where kSubmerged is on, for the refracted ray's clip-space direction, per pixel: every
+// flat varying is taken (shared/water_render.h), and one interpolated per vertex bent the images
+// of what lies under large calm triangles.
+layout(std140, set = 0, binding = POND_RENDER_BINDING_FRAME) uniform Frame { WaterFrame f; };
 layout(location = 0) out vec4 out_color;
 
 // The pool floor at a world point: sand with soft ripples a few cells across, so refraction shows.
@@ -91,6 +97,42 @@ vec3 exp_neg(vec3 x) {
   return e * e;
 }
 
+// What the submerged layer (render/submerged_pass.h) shows along the refracted ray t from this
+// point, within `path` of it: rgb its colour, a its distance along t (0: nothing). The layer was
+// drawn unrefracted, holding each texel's view depths (clip w) where the eye's line enters and
+// leaves what it shows, so a point of the ray at s is projected (clip = this pixel's + s * the
+// ray's clip direction) and the layer read there: the ray is inside what the texel shows where the
+// point's depth lies between the two. Marched in kMarch steps to the floor or wall, then halved
+// twice toward the entry.
+const int kMarch = 8;
+bool submerged_inside(vec3 clip, out vec3 color) {
+  const ivec2 size = textureSize(submerged, 0);
+  const uvec4 texel = texelFetch(submerged, clamp(ivec2(floor((clip.xy / clip.z * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1), 0);
+  color = unpackUnorm4x8(texel.x).rgb;
+  const float front = uintBitsToFloat(texel.y), back = uintBitsToFloat(texel.z);
+  return front > 0.0 && clip.z >= front && clip.z <= back;
+}
+vec4 submerged_seen(vec3 t, float path) {
+  if (!kSubmerged) return vec4(0.0);
+  const float w = 1.0 / gl_FragCoord.w;
+  const vec3 here = vec3((gl_FragCoord.xy * in_screen.xy * 2.0 - 1.0) * w, w);
+  const vec3 ray = (f.view_proj * vec4(t, 0.0)).xyw;
+  const float step = path / float(kMarch);
+  float lo = 0.0, hi = -1.0;
+  vec3 seen = vec3(0.0), c;
+  for (int k = 1; k <= kMarch && hi < 0.0; ++k) {
+    if (submerged_inside(here + (step * float(k)) * ray, c)) seen = c, hi = step * float(k);
+    else lo = step * float(k);
+  }
+  if (hi < 0.0) return vec4(0.0);
+  for (int k = 0; k < 2; ++k) {
+    const float s = 0.5 * (lo + hi);
+    if (submerged_inside(here + s * ray, c)) seen = c, hi = s;
+    else lo = s;
+  }
+  return vec4(seen, hi);
+}
+
 // The sun's light (shared/shadow_sampling.h) on the surface here (x) and on the floor or wall point
 // `hit` seen through it (y): where the sunlight reaching `hit` entered the water, followed back
 // along the refracted sun to the rest plane (the casters are all above it).
@@ -124,11 +166,14 @@ void main() {
   const bool wall = exit_path < path;
   path = min(path, exit_path);
   const vec3 hit = in_world + t * path;
-  const vec3 transmit = exp_neg(in_absorb * path);
   const vec2 sun = water_sun_light(hit);  // the shadows of the tree and the bodies
   const vec3 body = in_water.rgb * (0.35 + 0.65 * diffuse * sun.x);  // scattered light: diffuse-lit water colour
-  // The floor's light: the sky's share, and the sun's, focused by the waves and shadowed.
-  const vec3 bottom = (wall ? wall_color(hit) : floor_color(hit.xz)) * mix(in_shadow_sun.w, caustic_light(hit), sun.y);
+  // The floor's light: the sky's share, and the sun's, focused by the waves and shadowed; or what
+  // the submerged layer shows in front of it, lit as it was drawn.
+  const vec4 seen = submerged_seen(t, path);
+  const vec3 bottom = seen.a > 0.0 ? seen.rgb
+                                   : (wall ? wall_color(hit) : floor_color(hit.xz)) * mix(in_shadow_sun.w, caustic_light(hit), sun.y);
+  const vec3 transmit = exp_neg(in_absorb * (seen.a > 0.0 ? seen.a : path));
   const vec3 seen_through = bottom * transmit + body * (vec3(1.0) - transmit);
 
   const vec3 r = reflect(-v, n);

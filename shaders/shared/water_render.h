@@ -15,6 +15,8 @@
 //      POND_SPEC_SHADOWS is on
 //   5: combined image sampler, the caustics map (render/caustics_pass.h), per frame slot; read by
 //      water.frag where POND_SPEC_CAUSTICS is on
+//   6: combined image sampler, what lies under the surface (render/submerged_pass.h), per frame
+//      slot; read by water.frag where POND_SPEC_SUBMERGED is on
 // The water is drawn with vertex pulling: the index buffer holds node indices n = row * cols + col
 // (the LOD builder's output as is), the vertex shader reads the normals at gl_VertexIndex and the
 // state at its row * pitch + col.
@@ -48,6 +50,7 @@ struct mat4 {
 #define POND_RENDER_BINDING_REFLECTION 3
 #define POND_RENDER_BINDING_SHADOW 4
 #define POND_RENDER_BINDING_CAUSTICS 5
+#define POND_RENDER_BINDING_SUBMERGED 6
 
 // The fragment shaders take the frame's constants as flat varyings from their vertex shader, not
 // from the uniform block: llvmpipe (Mesa 22.3) reads a uniform (or push constant) in a fragment
@@ -89,6 +92,9 @@ struct mat4 {
 #define POND_SPEC_SHADOWS 1
 // Fragment-shader specialization constant (bool): water.frag lights the floor with the caustics map.
 #define POND_SPEC_CAUSTICS 2
+// Fragment-shader specialization constant (bool): water.frag shows the submerged layer
+// (render/submerged_pass.h) where its refracted ray meets what the layer holds.
+#define POND_SPEC_SUBMERGED 3
 
 // Everything a frame's shaders need, one uniform block (std140), written per frame slot. Every
 // member is a vec4 (or mat4), so the layout is the same in both languages; the lanes that hold

@@ -14,6 +14,7 @@
 #include "render/shadow_pass.h"
 #include "render/frame_constants.h"
 #include "render/sphere_mesh.h"
+#include "render/submerged_pass.h"
 #include "scene/body_fields.h"
 #include "shared/body_render.h"
 
@@ -48,7 +49,7 @@ sh::vec4 v4(const std::array<double, 3>& a) {
 struct BodyDrawable::Impl {
   const gpu::Context& ctx;
   const FrameLoop& loop;
-  BodyPipeline pipe, mirror_pipe, shadow_pipe;  // the frame's, the planar reflection's, the shadow map's
+  BodyPipeline pipe, mirror_pipe, submerged_pipe, shadow_pipe;  // the frame's, the layers', the shadow map's
   gpu::Buffer points, indices;
   std::array<Level, kLevels> levels{};
   std::vector<gpu::Buffer> instances;  // per frame slot, host-visible
@@ -60,7 +61,8 @@ struct BodyDrawable::Impl {
 
   Impl(const gpu::Context& c, const FrameLoop& l)
       : ctx(c), loop(l), pipe(create_body_pipeline(c, l.color_format(), kDepthFormat)),
-        mirror_pipe(create_body_pipeline(c, kReflectionFormat, kReflectionDepthFormat, BodyView::mirrored)),
+        mirror_pipe(create_body_pipeline(c, kReflectionFormat, kDepthFormat, BodyView::mirrored)),
+        submerged_pipe(create_body_pipeline(c, kSubmergedFormat, kDepthFormat, BodyView::submerged)),
         shadow_pipe(create_body_pipeline(c, vk::Format::eUndefined, kShadowFormat, BodyView::shadow)) {
     SphereMesh all;  // every level, one after the other
     for (int k = 0; k < kLevels; ++k) {
@@ -127,7 +129,7 @@ struct BodyDrawable::Impl {
     frame.sky = v4(info.lighting.sky);
   }
 
-  // With `with` (pipe, mirror_pipe in the planar reflection's pass, shadow_pipe in the shadow map's,
+  // With `with` (pipe; mirror_pipe, submerged_pipe in those layers' passes; shadow_pipe in the shadow map's,
   // whose projection is info.view_proj).
   void draw(const FrameInfo& info, const BodyPipeline& with) const {
     if (count == 0) return;
@@ -157,6 +159,8 @@ BodyDrawable::~BodyDrawable() {
 void BodyDrawable::prepare(const FrameInfo& frame) { impl_->prepare(frame); }
 void BodyDrawable::draw(const FrameInfo& frame) { impl_->draw(frame, impl_->pipe); }
 void BodyDrawable::draw_reflected(const FrameInfo& frame) { impl_->draw(frame, impl_->mirror_pipe); }
+void BodyDrawable::draw_submerged(const FrameInfo& frame) { impl_->draw(frame, impl_->submerged_pipe); }
+bool BodyDrawable::has_submerged() const { return impl_->count > 0; }
 void BodyDrawable::add_shadow_casters(std::vector<view::ShadowCaster>& casters) const {
   for (const sh::vec4& s : impl_->spheres) casters.push_back(view::sphere_caster({s.x, s.y, s.z}, s.w));
 }

@@ -10,7 +10,8 @@
 // draws every instance at its centre read from the bodies' states on the GPU (FrameInfo::bodies:
 // the GPU solver's own buffer), so nothing waits for the bodies to come back to draw them. Kinematic bodies are brick red, floating ones buoy
 // yellow; a body the demo holds (Session::held) is drawn lighter. A body's part under the water is
-// depth-tested against the surface like everything else.
+// depth-tested against the surface like everything else, and drawn again into the submerged layer
+// (render/submerged_pass.h), through which clear water shows it refracted.
 #include <cstddef>
 #include <memory>
 
@@ -30,6 +31,8 @@ class BodyDrawable final : public PassDrawable {
   void prepare(const FrameInfo& frame) override;
   void draw(const FrameInfo& frame) override;
   void draw_reflected(const FrameInfo& frame) override;  // the part above the water, mirrored
+  void draw_submerged(const FrameInfo& frame) override;  // the part below it
+  bool has_submerged() const override;                    // any body drawn
   // Each body's sphere; drawn into the sun's shadow map (at the frame's level of detail).
   void add_shadow_casters(std::vector<view::ShadowCaster>& casters) const override;
   void draw_shadow(const FrameInfo& frame) override;

@@ -11,6 +11,7 @@ namespace {
 #include "body_frag.spv.h"
 #include "body_mirror_frag.spv.h"
 #include "body_mirror_vert.spv.h"
+#include "body_submerged_frag.spv.h"
 #include "body_vert.spv.h"
 
 namespace sh = shared::body_render;
@@ -49,14 +50,19 @@ BodyPipeline create_body_pipeline(const gpu::Context& ctx, vk::Format color_form
       .depthTestEnable = VK_TRUE, .depthWriteEnable = VK_TRUE, .depthCompareOp = vk::CompareOp::eLessOrEqual};
   using CC = vk::ColorComponentFlagBits;
   const vk::PipelineColorBlendAttachmentState blend{.colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
-  const std::span<const std::uint32_t> frag = view == BodyView::shadow ? std::span<const std::uint32_t>()
-                                             : mirrored ? std::span<const std::uint32_t>(pond_spirv_body_mirror_frag)
-                                                        : std::span<const std::uint32_t>(pond_spirv_body_frag);
+  using Spirv = std::span<const std::uint32_t>;
+  const Spirv frag = view == BodyView::shadow      ? Spirv()
+                     : mirrored                    ? Spirv(pond_spirv_body_mirror_frag)
+                     : view == BodyView::submerged ? Spirv(pond_spirv_body_submerged_frag)
+                                                   : Spirv(pond_spirv_body_frag);
+  const char* name = view == BodyView::shadow      ? "bodies (shadow)"
+                     : mirrored                    ? "bodies (reflected)"
+                     : view == BodyView::submerged ? "bodies (submerged)"
+                                                   : "bodies";
   p.pipeline = create_graphics_pipeline(
       ctx, p.layout, color_format, depth_format,
-      {mirrored ? std::span<const std::uint32_t>(pond_spirv_body_mirror_vert) : pond_spirv_body_vert, frag, vertex_input,
-       assembly, raster, depth, blend,
-       view == BodyView::shadow ? "bodies (shadow)" : mirrored ? "bodies (reflected)" : "bodies", mirrored});
+      {mirrored ? Spirv(pond_spirv_body_mirror_vert) : Spirv(pond_spirv_body_vert), frag, vertex_input, assembly, raster,
+       depth, blend, name, mirrored || view == BodyView::submerged});
   return p;
 }
 

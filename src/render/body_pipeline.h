@@ -17,6 +17,8 @@ enum class BodyView {
   direct,
   mirrored,  // the planar reflection's (body_mirror.vert/.frag: mirrored about y = 0, only what is
              // above the water, clockwise front faces, linear colour)
+  submerged,  // the submerged layer's (render/submerged_pass.h; body_submerged.frag: only what is
+              // below the water, linear colour, the view depth (clip w) in alpha)
   shadow,    // the sun's shadow map's (render/shadow_pass.h): body.vert, depth only (color_format
              // eUndefined), no fragment shader
 };

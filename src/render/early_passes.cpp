@@ -2,6 +2,7 @@
 
 #include "render/barrier_batch.h"
 #include "render/shadow_pass.h"
+#include "render/submerged_pass.h"
 
 namespace pond::render {
 
@@ -24,7 +25,9 @@ void record_early_passes(const vk::raii::CommandBuffer& cmd, const FrameContext&
   if (plan.caustics) batch.images.push_back(caustics.begin_barrier(frame.slot));
   if (plan.shadow) batch.images.push_back(shadow_pass_begin(d.shadow));
   if (plan.reflection)
-    for (const vk::ImageMemoryBarrier2& b : reflection_pass_begin(d.reflection)) batch.images.push_back(b);
+    for (const vk::ImageMemoryBarrier2& b : layer_pass_begin(d.reflection)) batch.images.push_back(b);
+  if (plan.submerged)
+    for (const vk::ImageMemoryBarrier2& b : layer_pass_begin(d.submerged)) batch.images.push_back(b);
   batch.record(cmd);
 
   if (plan.caustics) caustics.record_dispatch(cmd, frame.slot, caustics_push);
@@ -40,7 +43,7 @@ void record_early_passes(const vk::raii::CommandBuffer& cmd, const FrameContext&
     FrameInfo mirrored = info;
     mirrored.extent = d.reflection.color.extent;
     mirrored.pixel_scale = static_cast<float>(mirrored.extent.height) / static_cast<float>(info.extent.height);
-    record_reflection_pass(cmd, d.reflection, [&] {
+    record_layer_pass(cmd, d.reflection, [&] {
       cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *frame.pipes.layout, 0, *d.set, nullptr);
       cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *frame.pipes.land_mirror);
       frame.geometry.bind_mirrored(cmd, frame.slot);
@@ -48,11 +51,20 @@ void record_early_passes(const vk::raii::CommandBuffer& cmd, const FrameContext&
       for (PassDrawable* p : frame.drawables) p->draw_reflected(mirrored);
     });
   }
+  if (plan.submerged)
+    record_layer_pass(cmd, d.submerged, [&] {
+      cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *frame.pipes.layout, 0, *d.set, nullptr);
+      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *frame.pipes.land_submerged);
+      frame.geometry.draw_submerged(cmd);
+      for (PassDrawable* p : frame.drawables) p->draw_submerged(info);
+    });
   // After: what they wrote to shader-read for the main pass's fragment shaders (a frame without
-  // shadows still puts the map, which its set binds, in that layout).
+  // shadows or without the submerged layer still puts the map or the layer, which every water.frag
+  // declares, in that layout).
   if (plan.caustics) batch.images.push_back(caustics.end_barrier(frame.slot));
   batch.images.push_back(plan.shadow ? shadow_pass_end(d.shadow) : shadow_map_unused(d.shadow));
-  if (plan.reflection) batch.images.push_back(reflection_pass_end(d.reflection));
+  if (plan.reflection) batch.images.push_back(layer_pass_end(d.reflection));  // read only by water_reflect.frag
+  batch.images.push_back(plan.submerged ? layer_pass_end(d.submerged) : layer_unused(d.submerged));
   batch.record(cmd);
 }
 

@@ -14,7 +14,7 @@ FrameRing::FrameRing(const gpu::Context& ctx, vk::DescriptorSetLayout set_layout
   const vk::DescriptorPoolSize sizes[] = {{.type = vk::DescriptorType::eUniformBuffer, .descriptorCount = kFramesInFlight},
                                           {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 2 * kFramesInFlight},
                                           {.type = vk::DescriptorType::eCombinedImageSampler,
-                                           .descriptorCount = 3 * kFramesInFlight}};
+                                           .descriptorCount = 4 * kFramesInFlight}};
   descriptor_pool_ = vk::raii::DescriptorPool(
       ctx.device(), vk::DescriptorPoolCreateInfo{.flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
                                                  .maxSets = kFramesInFlight, .poolSizeCount = 3, .pPoolSizes = sizes});
@@ -42,7 +42,8 @@ void write_frame_set(const gpu::Context& ctx, const FrameData& f, const gpu::Buf
   const vk::DescriptorBufferInfo infos[] = {f.uniforms.whole(), state.whole(), normals.whole()};
   const vk::DescriptorImageInfo images[] = {{.sampler = nearest, .imageView = *f.reflection.color.view, .imageLayout = kRead},
                                             {.sampler = shadow, .imageView = *f.shadow.view, .imageLayout = kRead},
-                                            {.sampler = nearest, .imageView = caustics_map, .imageLayout = kRead}};
+                                            {.sampler = nearest, .imageView = caustics_map, .imageLayout = kRead},
+                                            {.sampler = nearest, .imageView = *f.submerged.color.view, .imageLayout = kRead}};
   const vk::WriteDescriptorSet writes[] = {
       {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_FRAME, .descriptorCount = 1,
        .descriptorType = DT::eUniformBuffer, .pBufferInfo = &infos[0]},
@@ -55,7 +56,9 @@ void write_frame_set(const gpu::Context& ctx, const FrameData& f, const gpu::Buf
       {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_SHADOW, .descriptorCount = 1,
        .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[1]},
       {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_CAUSTICS, .descriptorCount = 1,
-       .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[2]}};
+       .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[2]},
+      {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_SUBMERGED, .descriptorCount = 1,
+       .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[3]}};
   ctx.device().updateDescriptorSets(writes, nullptr);
 }
 

@@ -10,7 +10,7 @@
 #include "gpu/context.h"
 #include "render/frame_constants.h"
 #include "render/frame_target.h"
-#include "render/reflection_pass.h"
+#include "render/layer_target.h"
 #include "render/render_target.h"
 
 namespace pond::render {
@@ -23,13 +23,14 @@ struct FrameData {
   gpu::Buffer uniforms;                     // host-visible: WaterFrame
   vk::raii::DescriptorSet set = nullptr;    // the water renderer's set 0 (shared/water_render.h)
   Image depth;
-  ReflectionTarget reflection;
+  LayerTarget reflection;
+  LayerTarget submerged;  // render/submerged_pass.h
   Image shadow;  // the sun's shadow map (render/shadow_pass.h)
 };
 
 // Points `frame`'s descriptor set (shared/water_render.h bindings) at its uniforms, the water's
-// `state` and `normals`, its reflection and shadow map and the caustics' `caustics_map`; the frame
-// must be finished. `nearest`: the reflection's and the caustics map's sampler; `shadow`: the
+// `state` and `normals`, its reflection, submerged layer and shadow map and the caustics'
+// `caustics_map`; the frame must be finished. `nearest`: the layers' and the caustics map's sampler; `shadow`: the
 // depth-compare one.
 void write_frame_set(const gpu::Context& ctx, const FrameData& frame, const gpu::Buffer& state,
                      const gpu::Buffer& normals, vk::ImageView caustics_map, vk::Sampler nearest, vk::Sampler shadow);

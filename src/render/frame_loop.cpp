@@ -1,5 +1,6 @@
 #include "render/frame_loop.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <optional>
@@ -11,7 +12,9 @@
 #include "render/frame_data.h"
 #include "render/main_pass.h"
 #include "render/render_layout.h"
+#include "render/reflection_pass.h"
 #include "render/shadow_pass.h"
+#include "render/submerged_pass.h"
 #include "render/visible_geometry.h"
 #include "render/water_pipeline.h"
 #include "render/water_source.h"
@@ -90,7 +93,7 @@ struct FrameLoop::Impl {
     f.view_proj = view::view_projection(f.camera, session.model());
     f.lighting = scene.lighting;
     f.lighting.sun = session.sun();
-    ensure_reflection_target(ctx, d.reflection, extent);  // made even when off: the set is whole
+    ensure_layer_target(ctx, d.reflection, reflection_extent(extent), kReflectionFormat, "reflection");  // made even when off: the set is whole
     const FrameInfo base = info(cmd, f);
     for (PassDrawable* p : drawables) p->prepare(base);
     std::vector<view::ShadowCaster> casters;
@@ -98,6 +101,9 @@ struct FrameLoop::Impl {
     f.plan = view::plan_frame({f.view.effects, casters, f.view_proj, w, h, f.lighting.sun,
                                session.model().basin.floor_depth, session.model().basin.land_height});
     ensure_shadow_map(ctx, d.shadow, f.plan.shadow ? f.plan.shadow->size : 0);  // made even when off: the set is whole
+    f.plan.submerged = geometry.has_submerged() ||
+                       std::any_of(drawables.begin(), drawables.end(), [](const PassDrawable* p) { return p->has_submerged(); });
+    ensure_layer_target(ctx, d.submerged, submerged_extent(extent, f.plan.submerged), kSubmergedFormat, "submerged layer");
     const vk::Extent2D mirror = d.reflection.color.extent;
     geometry.cull_land(f.slot, f.view_proj, w, h, f.plan.shadow_rects,
                        {f.plan.reflection ? static_cast<int>(mirror.width) : 0, static_cast<int>(mirror.height)}, f.draws);
@@ -167,7 +173,7 @@ struct FrameLoop::Impl {
     frames.ensure_depth(f.slot, target.extent);
     record_main_pass(cmd, context(f, info(cmd, f)), target,
                      {.wireframe = f.view.wireframe, .reflections = f.plan.reflection, .caustics = f.plan.caustics,
-                      .sky = f.lighting.sky});
+                      .submerged = f.plan.submerged, .sky = f.lighting.sky});
     frames.submit_main(f.slot, target);
     if (f.view.wait) frames.finish(f.slot);
     f.stats.draw_ms += ms_since(t);

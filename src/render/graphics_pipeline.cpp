@@ -22,15 +22,17 @@ vk::raii::Pipeline create_graphics_pipeline(const gpu::Context& ctx, const vk::r
   // The target's encoding is a specialization constant, not a uniform: llvmpipe would otherwise
   // run the per-pixel pow() of the UNORM branch for every pixel under a mask, sRGB targets
   // included (docs/perf.md). Fragment shaders without a constant ignore it.
-  // Likewise the shadows (shared/shadow_sampling.h) and the caustics: off, the shader holds no code
-  // for them.
-  const std::array<vk::Bool32, 3> constants{is_srgb(color) || d.linear_output ? VK_FALSE : VK_TRUE,
-                                            d.shadows ? VK_TRUE : VK_FALSE, d.caustics ? VK_TRUE : VK_FALSE};
+  // Likewise the shadows (shared/shadow_sampling.h), the caustics and the submerged layer: off, the
+  // shader holds no code for them.
+  const std::array<vk::Bool32, 4> constants{is_srgb(color) || d.linear_output ? VK_FALSE : VK_TRUE,
+                                            d.shadows ? VK_TRUE : VK_FALSE, d.caustics ? VK_TRUE : VK_FALSE,
+                                            d.submerged ? VK_TRUE : VK_FALSE};
   const vk::SpecializationMapEntry entries[] = {
       {.constantID = POND_SPEC_ENCODE_SRGB, .offset = 0, .size = sizeof(vk::Bool32)},
       {.constantID = POND_SPEC_SHADOWS, .offset = sizeof(vk::Bool32), .size = sizeof(vk::Bool32)},
-      {.constantID = POND_SPEC_CAUSTICS, .offset = 2 * sizeof(vk::Bool32), .size = sizeof(vk::Bool32)}};
-  const vk::SpecializationInfo frag_constants{.mapEntryCount = 3, .pMapEntries = entries,
+      {.constantID = POND_SPEC_CAUSTICS, .offset = 2 * sizeof(vk::Bool32), .size = sizeof(vk::Bool32)},
+      {.constantID = POND_SPEC_SUBMERGED, .offset = 3 * sizeof(vk::Bool32), .size = sizeof(vk::Bool32)}};
+  const vk::SpecializationInfo frag_constants{.mapEntryCount = 4, .pMapEntries = entries,
                                               .dataSize = sizeof constants, .pData = constants.data()};
   const vk::PipelineShaderStageCreateInfo stages[] = {
       {.stage = vk::ShaderStageFlagBits::eVertex, .module = *vs, .pName = "main"},

@@ -27,6 +27,8 @@ struct GraphicsPipelineDesc {
   bool shadows = false;
   // The water lights the floor it sees with the caustics map (POND_SPEC_CAUSTICS).
   bool caustics = false;
+  // The water shows what the submerged layer holds (POND_SPEC_SUBMERGED, render/submerged_pass.h).
+  bool submerged = false;
 };
 
 vk::raii::Pipeline create_graphics_pipeline(const gpu::Context& ctx, const vk::raii::PipelineLayout& layout,

@@ -101,8 +101,9 @@ void record_main_pass(const vk::raii::CommandBuffer& cmd, const FrameContext& fr
   frame.geometry.bind_land(cmd, frame.slot);
   shaded(pipes.land, pipes.land_shadowed, draws.land_whole, draws.land_rects);
   frame.geometry.bind_water(cmd, frame.slot, draws.full_mesh);
-  shaded(pipes.water_for(options.reflections, options.caustics, false),
-         pipes.water_for(options.reflections, options.caustics, true), draws.water_whole, draws.water_rects);
+  shaded(pipes.water_for(options.reflections, options.caustics, false, options.submerged),
+         pipes.water_for(options.reflections, options.caustics, true, options.submerged), draws.water_whole,
+         draws.water_rects);
   if (options.wireframe && *pipes.wire) {
     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.wire);
     draw_range(cmd, draws.water_whole);

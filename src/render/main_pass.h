@@ -14,7 +14,7 @@ namespace pond::render {
 
 struct MainPassOptions {
   bool wireframe = false;  // the LOD triangles over the water
-  bool reflections = false, caustics = false;  // which water pipeline (water_pipeline.h)
+  bool reflections = false, caustics = false, submerged = false;  // which water pipeline (water_pipeline.h)
   std::array<double, 3> sky{};  // the zenith's colour (linear): the background is its horizon
 };
 

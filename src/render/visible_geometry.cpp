@@ -56,6 +56,10 @@ VisibleGeometry::VisibleGeometry(const gpu::Context& ctx, const sim::WaterModel&
   const std::vector<view::LandVertex> above = view::mirrored_walls(mesh);
   mirrored_source_ = cull_source(above, -1.0f);
   mirrored_ = device_buffer(ctx, std::as_bytes(std::span(above)), BU::eVertexBuffer, "land walls above the water");
+  const std::vector<view::LandVertex> below = view::submerged_walls(mesh, model);
+  submerged_vertices_ = static_cast<std::uint32_t>(below.size());
+  if (!below.empty())
+    submerged_ = device_buffer(ctx, std::as_bytes(std::span(below)), BU::eVertexBuffer, "islands' walls under the water");
   const std::vector<std::uint32_t> full = full_mesh_indices(model.rows, model.cols);
   full_index_count_ = static_cast<std::uint32_t>(full.size());
   full_indices_ = device_buffer(ctx, std::as_bytes(std::span(full)), BU::eIndexBuffer, "water full-mesh indices");
@@ -116,6 +120,12 @@ void VisibleGeometry::bind_land(const vk::raii::CommandBuffer& cmd, std::uint32_
 void VisibleGeometry::bind_mirrored(const vk::raii::CommandBuffer& cmd, std::uint32_t slot) const {
   cmd.bindVertexBuffers(0, *mirrored_.buffer, vk::DeviceSize{0});
   cmd.bindIndexBuffer(*slots_[slot].mirrored.buffer, 0, vk::IndexType::eUint32);
+}
+
+void VisibleGeometry::draw_submerged(const vk::raii::CommandBuffer& cmd) const {
+  if (submerged_vertices_ == 0) return;
+  cmd.bindVertexBuffers(0, *submerged_.buffer, vk::DeviceSize{0});
+  cmd.draw(submerged_vertices_, 1, 0, 0);
 }
 
 void VisibleGeometry::bind_water(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, bool full_mesh) const {

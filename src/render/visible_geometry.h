@@ -2,7 +2,8 @@
 // What of the pond a frame sees: the land (built once from the model), the water's triangles (the
 // view-dependent LOD of the frame's positions, or the full mesh) and the mirrored walls the
 // reflection draws, each culled to the frame's view and its shadow rectangles
-// (view/triangle_cull.h) and streamed into the frame slot's host-visible index buffers.
+// (view/triangle_cull.h) and streamed into the frame slot's host-visible index buffers; and the
+// islands' walls under the water (render/submerged_pass.h), drawn whole.
 #include <array>
 #include <cstdint>
 #include <span>
@@ -50,6 +51,10 @@ class VisibleGeometry {
   void bind_land(const vk::raii::CommandBuffer& cmd, std::uint32_t slot) const;
   void bind_mirrored(const vk::raii::CommandBuffer& cmd, std::uint32_t slot) const;
   void bind_water(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, bool full_mesh) const;
+  // Binds and draws the islands' walls under the water (view::submerged_walls), all of them: few
+  // triangles, clipped by the device.
+  void draw_submerged(const vk::raii::CommandBuffer& cmd) const;
+  bool has_submerged() const { return submerged_vertices_ > 0; }
 
   std::size_t land_triangles() const { return land_source_.triangles.size() / 3; }
   std::size_t full_triangles() const { return full_index_count_ / 3; }
@@ -67,8 +72,8 @@ class VisibleGeometry {
   void write(gpu::Buffer& b, const char* what, std::uint32_t slot) const;  // culled_ into b
 
   const gpu::Context& ctx_;
-  gpu::Buffer land_, mirrored_, full_indices_;
-  std::uint32_t full_index_count_ = 0;
+  gpu::Buffer land_, mirrored_, submerged_, full_indices_;
+  std::uint32_t full_index_count_ = 0, submerged_vertices_ = 0;
   CullSource land_source_, mirrored_source_;  // the mirrored walls' with y negated, as land.vert mirrors
   lod::LodBuilder lod_;
   std::vector<std::uint32_t> lod_indices_;

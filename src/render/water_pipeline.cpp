@@ -3,10 +3,12 @@
 #include <iterator>
 #include <span>
 #include <stdexcept>
+#include <string>
 
 #include "core/errors.h"
 #include "render/graphics_pipeline.h"
 #include "render/reflection_pass.h"
+#include "render/submerged_pass.h"
 #include "render/render_layout.h"
 #include "render/render_shaders.h"
 
@@ -22,10 +24,11 @@ struct PipelineSpec {
   bool linear_output = false;  // GraphicsPipelineDesc::linear_output
   bool shadows = false;        // GraphicsPipelineDesc::shadows
   bool caustics = false;       // GraphicsPipelineDesc::caustics
+  bool submerged = false;      // GraphicsPipelineDesc::submerged
   // The land's and the water's: "less", so where shadows fall a pixel is shaded once although
   // they are drawn twice there (render/frame_loop.cpp).
   vk::CompareOp depth_compare = vk::CompareOp::eLessOrEqual;
-  const char* name;
+  std::string name;
 };
 
 // The shadow-sampling land and water are pulled this many depth units (ULPs near the far plane)
@@ -71,7 +74,7 @@ vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayou
       .colorWriteMask = CC::eR | CC::eG | CC::eB | CC::eA};
   return create_graphics_pipeline(ctx, layout, color, depth,
                                   {s.vert, s.frag, vertex_input, assembly, raster, depth_state, blend, s.name, s.linear_output,
-                                   s.shadows, s.caustics});
+                                   s.shadows, s.caustics, s.submerged});
 }
 
 }  // namespace
@@ -91,9 +94,11 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
       {.binding = POND_RENDER_BINDING_SHADOW, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
        .descriptorCount = 1, .stageFlags = SS::eFragment},
       {.binding = POND_RENDER_BINDING_CAUSTICS, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
+       .descriptorCount = 1, .stageFlags = SS::eFragment},
+      {.binding = POND_RENDER_BINDING_SUBMERGED, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
        .descriptorCount = 1, .stageFlags = SS::eFragment}};
   p.set_layout = vk::raii::DescriptorSetLayout(
-      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = 6, .pBindings = bindings});
+      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = 7, .pBindings = bindings});
   const vk::DescriptorSetLayout set_layout = *p.set_layout;
   p.layout = vk::raii::PipelineLayout(ctx.device(),
                                       vk::PipelineLayoutCreateInfo{.setLayoutCount = 1, .pSetLayouts = &set_layout});
@@ -104,23 +109,25 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
                            {.vert = land_vert_spirv(), .frag = land_frag_spirv(), .land_vertices = true,
                             .depth_bias = kShadowedDepthBias, .shadows = true, .depth_compare = vk::CompareOp::eLess,
                             .name = "land, shadowed"});
-  static const char* const kWaterNames[] = {
-      "water", "water, reflecting", "water, caustics", "water, reflecting, caustics", "water, shadowed",
-      "water, reflecting, shadowed", "water, caustics, shadowed", "water, reflecting, caustics, shadowed"};
-  for (std::size_t v = 0; v < std::size(kWaterNames); ++v) {
-    const bool reflections = v & 1u, caustics = v & 2u, shadows = v & 4u;
-    if (WaterPipelines::water_variant(reflections, caustics, shadows) != p.waters.size())
+  for (std::size_t v = 0; v < WaterPipelines::kWaterVariants; ++v) {
+    const bool reflections = v & 1u, caustics = v & 2u, shadows = v & 4u, submerged = v & 8u;
+    if (WaterPipelines::water_variant(reflections, caustics, shadows, submerged) != p.waters.size())
       throw InternalError("water pipeline variants out of order");
+    const std::string name = std::string("water") + (reflections ? ", reflecting" : "") + (caustics ? ", caustics" : "") +
+                             (shadows ? ", shadowed" : "") + (submerged ? ", submerged" : "");
     p.waters.push_back(create(ctx, p.layout, color_format, depth_format,
                               {.vert = water_vert_spirv(),
                                .frag = reflections ? water_reflect_frag_spirv() : water_frag_spirv(),
                                .depth_bias = shadows ? kShadowedDepthBias : 0.0f, .shadows = shadows,
-                               .caustics = caustics, .depth_compare = vk::CompareOp::eLess,
-                               .name = kWaterNames[v]}));
+                               .caustics = caustics, .submerged = submerged, .depth_compare = vk::CompareOp::eLess,
+                               .name = name}));
   }
   p.land_mirror = create(ctx, p.layout, kReflectionFormat, depth_format,
                          {.vert = land_mirror_vert_spirv(), .frag = land_mirror_frag_spirv(), .land_vertices = true,
                           .linear_output = true, .name = "land, mirrored"});
+  p.land_submerged = create(ctx, p.layout, kSubmergedFormat, depth_format,
+                            {.vert = land_vert_spirv(), .frag = land_submerged_frag_spirv(), .land_vertices = true,
+                             .linear_output = true, .name = "land, submerged"});
   p.sky = create(ctx, p.layout, color_format, depth_format,
                  {.vert = sky_vert_spirv(), .frag = sky_frag_spirv(), .depth_write = false, .name = "sky"});
   if (ctx.physical().getFeatures().fillModeNonSolid)

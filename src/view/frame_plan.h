@@ -24,6 +24,10 @@ inline constexpr double kShadowWaveMargin = 1.0;
 struct FramePlan {
   bool caustics = false;
   bool reflection = false;
+  // Something lies under the surface besides the floor and the rim's walls (islands' walls,
+  // bodies): the frame draws the submerged layer (render/submerged_pass.h). Set by the frame loop,
+  // which knows its drawables; plan_frame() leaves it false.
+  bool submerged = false;
   std::optional<SunShadowView> shadow;  // shadows on, something casts, and a shadow is on screen
   std::vector<PixelRect> shadow_rects;  // where its shadows can fall (merged; empty without a map)
 };

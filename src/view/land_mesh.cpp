@@ -95,4 +95,24 @@ std::vector<LandVertex> mirrored_walls(const std::vector<LandVertex>& mesh) {
   return out;
 }
 
+std::vector<LandVertex> submerged_walls(const std::vector<LandVertex>& mesh, const sim::WaterModel& model) {
+  const float x_max = static_cast<float>(model.cols - 1) * model.spacing;
+  const float z_max = static_cast<float>(model.rows - 1) * model.spacing;
+  const float eps = static_cast<float>(1e-4 * model.spacing);
+  // On the rim: every corner on the same border line of the pool.
+  const auto on_rim = [&](const LandVertex* v) {
+    const auto all = [&](auto on_line) { return on_line(v[0]) && on_line(v[1]) && on_line(v[2]); };
+    return all([&](const LandVertex& p) { return p.position.x <= eps; }) ||
+           all([&](const LandVertex& p) { return p.position.x >= x_max - eps; }) ||
+           all([&](const LandVertex& p) { return p.position.z <= eps; }) ||
+           all([&](const LandVertex& p) { return p.position.z >= z_max - eps; });
+  };
+  std::vector<LandVertex> out;
+  for (std::size_t t = 0; t + 2 < mesh.size(); t += 3)
+    if (mesh[t].normal.y == 0.0f && mesh[t].position.y <= 0.0f && mesh[t + 1].position.y <= 0.0f &&
+        mesh[t + 2].position.y <= 0.0f && !on_rim(&mesh[t]))
+      out.insert(out.end(), mesh.begin() + static_cast<std::ptrdiff_t>(t), mesh.begin() + static_cast<std::ptrdiff_t>(t + 3));
+  return out;
+}
+
 }  // namespace pond::view

@@ -33,4 +33,8 @@ SkyBox sky_box(const sim::WaterModel& model);
 // so no top is ever seen in the water, and they would cover most of the reflection's target.
 std::vector<LandVertex> mirrored_walls(const std::vector<LandVertex>& mesh);
 
+// What of it clear water shows below the surface (render/submerged_pass.h): the islands' walls
+// below y = 0. The rim's walls are left out: water.frag traces its rays to them itself.
+std::vector<LandVertex> submerged_walls(const std::vector<LandVertex>& mesh, const sim::WaterModel& model);
+
 }  // namespace pond::view
