@@ -18,7 +18,7 @@ layout(location = kBodyFlatSun) flat in vec3 in_sun;
 layout(location = kBodyFlatSky) flat in vec3 in_sky;
 layout(location = kBodyFlatAlbedo) flat in vec4 in_albedo;
 #ifdef POND_BODY_SUBMERGED
-layout(location = 0) out uvec4 out_layer;  // render/submerged_pass.h
+layout(location = 0) out uvec2 out_layer;  // render/submerged_pass.h
 #else
 layout(location = 0) out vec4 out_color;
 #endif
@@ -48,7 +48,7 @@ void main() {
   // 2 r cos(angle to the normal), and view depth grows along the line as it does to here.
   const float front = 1.0 / gl_FragCoord.w, to_here = distance(in_eye.xyz, in_world);
   const float back = front + 2.0 * in_eye.w * max(dot(n, v), 0.0) * front / to_here;
-  out_layer = uvec4(packUnorm4x8(finish_color(c)), floatBitsToUint(front), floatBitsToUint(back), 0u);
+  out_layer = uvec2(packUnorm4x8(finish_color(c)), packHalf2x16(vec2(front, back)));
 #else
   out_color = finish_color(c);
 #endif

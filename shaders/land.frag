@@ -27,7 +27,7 @@ layout(location = 2) in float in_top;
 layout(location = 3) in vec3 in_sun_share;  // read only with shadows, so only then interpolated
 layout(location = 4) in vec3 in_shadow;
 #ifdef POND_LAND_SUBMERGED
-layout(location = 0) out uvec4 out_layer;  // render/submerged_pass.h
+layout(location = 0) out uvec2 out_layer;  // render/submerged_pass.h
 #else
 layout(location = 0) out vec4 out_color;
 #endif
@@ -53,8 +53,8 @@ void main() {
 #endif
 #ifdef POND_LAND_SUBMERGED
   // A wall stands on the floor: solid behind its face as far as any ray goes.
-  out_layer = uvec4(packUnorm4x8(finish_color(light * land_texture(in_world, in_top))), floatBitsToUint(1.0 / gl_FragCoord.w),
-                    floatBitsToUint(3.0e38), 0u);
+  out_layer = uvec2(packUnorm4x8(finish_color(light * land_texture(in_world, in_top))),
+                    packHalf2x16(vec2(1.0 / gl_FragCoord.w, 65504.0)));
 #else
   out_color = finish_color(light * land_texture(in_world, in_top));
 #endif

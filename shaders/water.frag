@@ -104,12 +104,13 @@ vec3 exp_neg(vec3 x) {
 // ray's clip direction) and the layer read there: the ray is inside what the texel shows where the
 // point's depth lies between the two. Marched in kMarch steps to the floor or wall, then halved
 // twice toward the entry.
-const int kMarch = 8;
+const int kMarch = 4;
 bool submerged_inside(vec3 clip, out vec3 color) {
   const ivec2 size = textureSize(submerged, 0);
-  const uvec4 texel = texelFetch(submerged, clamp(ivec2(floor((clip.xy / clip.z * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1), 0);
+  const uvec2 texel = texelFetch(submerged, clamp(ivec2(floor((clip.xy / clip.z * 0.5 + 0.5) * vec2(size))), ivec2(0), size - 1), 0).xy;
   color = unpackUnorm4x8(texel.x).rgb;
-  const float front = uintBitsToFloat(texel.y), back = uintBitsToFloat(texel.z);
+  const vec2 depths = unpackHalf2x16(texel.y);
+  const float front = depths.x, back = depths.y;
   return front > 0.0 && clip.z >= front && clip.z <= back;
 }
 vec4 submerged_seen(vec3 t, float path) {

@@ -48,7 +48,7 @@ void print_effect_costs(render::FrameLoop& loop, const render::RenderTarget& tar
     bool view::Effects::*flag;
   };
   for (const Effect e : {Effect{"reflections", &view::Effects::reflections}, Effect{"caustics", &view::Effects::caustics},
-                         Effect{"shadows", &view::Effects::shadows}}) {
+                         Effect{"shadows", &view::Effects::shadows}, Effect{"submerged", &view::Effects::submerged}}) {
     if (!(view.effects.*e.flag)) continue;
     std::vector<double> on, off;
     for (int k = 0; k < pairs; ++k)

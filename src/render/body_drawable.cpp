@@ -160,7 +160,6 @@ void BodyDrawable::prepare(const FrameInfo& frame) { impl_->prepare(frame); }
 void BodyDrawable::draw(const FrameInfo& frame) { impl_->draw(frame, impl_->pipe); }
 void BodyDrawable::draw_reflected(const FrameInfo& frame) { impl_->draw(frame, impl_->mirror_pipe); }
 void BodyDrawable::draw_submerged(const FrameInfo& frame) { impl_->draw(frame, impl_->submerged_pipe); }
-bool BodyDrawable::has_submerged() const { return impl_->count > 0; }
 void BodyDrawable::add_shadow_casters(std::vector<view::ShadowCaster>& casters) const {
   for (const sh::vec4& s : impl_->spheres) casters.push_back(view::sphere_caster({s.x, s.y, s.z}, s.w));
 }

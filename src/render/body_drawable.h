@@ -32,7 +32,6 @@ class BodyDrawable final : public PassDrawable {
   void draw(const FrameInfo& frame) override;
   void draw_reflected(const FrameInfo& frame) override;  // the part above the water, mirrored
   void draw_submerged(const FrameInfo& frame) override;  // the part below it
-  bool has_submerged() const override;                    // any body drawn
   // Each body's sphere; drawn into the sun's shadow map (at the frame's level of detail).
   void add_shadow_casters(std::vector<view::ShadowCaster>& casters) const override;
   void draw_shadow(const FrameInfo& frame) override;

@@ -1,6 +1,5 @@
 #include "render/frame_loop.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <optional>
@@ -98,11 +97,9 @@ struct FrameLoop::Impl {
     for (PassDrawable* p : drawables) p->prepare(base);
     std::vector<view::ShadowCaster> casters;
     for (const PassDrawable* p : drawables) p->add_shadow_casters(casters);
-    f.plan = view::plan_frame({f.view.effects, casters, f.view_proj, w, h, f.lighting.sun,
+    f.plan = view::plan_frame({f.view.effects, casters, geometry.submerged_boxes(), f.view_proj, w, h, f.lighting.sun,
                                session.model().basin.floor_depth, session.model().basin.land_height});
     ensure_shadow_map(ctx, d.shadow, f.plan.shadow ? f.plan.shadow->size : 0);  // made even when off: the set is whole
-    f.plan.submerged = geometry.has_submerged() ||
-                       std::any_of(drawables.begin(), drawables.end(), [](const PassDrawable* p) { return p->has_submerged(); });
     ensure_layer_target(ctx, d.submerged, submerged_extent(extent, f.plan.submerged), kSubmergedFormat, "submerged layer");
     const vk::Extent2D mirror = d.reflection.color.extent;
     geometry.cull_land(f.slot, f.view_proj, w, h, f.plan.shadow_rects,

@@ -43,10 +43,9 @@ class PassDrawable {
   // that are not above the water (the demo's panel) draw nothing.
   virtual void draw_reflected(const FrameInfo& /*frame*/) {}
   // Inside the submerged layer's pass (render/submerged_pass.h: kSubmergedFormat, kDepthFormat):
-  // draw what lies below y = 0, linear colour, the view depth (clip w) in alpha. has_submerged(),
-  // after prepare(): whether there is any (the frame draws the layer only then).
+  // draw what lies below y = 0 (its colour and view depths: that header). Its shadow casters'
+  // boxes below y = 0 say where (view::plan_frame).
   virtual void draw_submerged(const FrameInfo& /*frame*/) {}
-  virtual bool has_submerged() const { return false; }
   // Inside the main pass, before the scene: opaque screen-space overlays (the demo's panel) that
   // write the nearest depth, so the scene's fragments behind them fail the depth test before they
   // are shaded (on llvmpipe the water's shading is most of what a pixel under the panel costs).

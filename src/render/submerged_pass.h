@@ -3,8 +3,8 @@
 // traces itself: the islands' walls and the bodies below y = 0, drawn from the camera (unrefracted)
 // into a layer (render/layer_target.h) the frame's size, before the main pass, when there is any
 // (view::FramePlan::submerged). Each texel holds the linear colour of what it shows (x: RGBA8,
-// packUnorm4x8) and the view depths (clip w, float bits) where the eye's line through it enters
-// (y; 0: nothing) and leaves (z) the body or wall. water.frag marches its refracted ray through the
+// packUnorm4x8) and the view depths (clip w, y: packHalf2x16) where the eye's line through it enters
+// (0: nothing) and leaves the body or wall. water.frag marches its refracted ray through the
 // layer in clip space (submerged_seen), so the walls and the bodies bend with the waves as the
 // floor does.
 #include "gpu/context.h"
@@ -14,7 +14,7 @@ namespace pond::render {
 
 // A sampled colour attachment in this format is a feature every Vulkan device has; integer, so
 // read texel by texel (nearest) and never blended.
-inline constexpr vk::Format kSubmergedFormat = vk::Format::eR32G32B32A32Uint;
+inline constexpr vk::Format kSubmergedFormat = vk::Format::eR32G32Uint;
 
 // The layer's size: the frame's when the frame draws it, else 1 x 1 (bound, never read).
 inline vk::Extent2D submerged_extent(vk::Extent2D frame, bool drawn) { return drawn ? frame : vk::Extent2D{1, 1}; }

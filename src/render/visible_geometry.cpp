@@ -60,6 +60,7 @@ VisibleGeometry::VisibleGeometry(const gpu::Context& ctx, const sim::WaterModel&
   submerged_vertices_ = static_cast<std::uint32_t>(below.size());
   if (!below.empty())
     submerged_ = device_buffer(ctx, std::as_bytes(std::span(below)), BU::eVertexBuffer, "islands' walls under the water");
+  submerged_boxes_ = view::touching_boxes(below);
   const std::vector<std::uint32_t> full = full_mesh_indices(model.rows, model.cols);
   full_index_count_ = static_cast<std::uint32_t>(full.size());
   full_indices_ = device_buffer(ctx, std::as_bytes(std::span(full)), BU::eIndexBuffer, "water full-mesh indices");

@@ -17,6 +17,7 @@
 #include "sim/model.h"
 #include "view/land_mesh.h"
 #include "view/pixel_rect.h"
+#include "view/sun_shadow.h"
 #include "view/triangle_cull.h"
 
 namespace pond::render {
@@ -54,7 +55,8 @@ class VisibleGeometry {
   // Binds and draws the islands' walls under the water (view::submerged_walls), all of them: few
   // triangles, clipped by the device.
   void draw_submerged(const vk::raii::CommandBuffer& cmd) const;
-  bool has_submerged() const { return submerged_vertices_ > 0; }
+  // Their boxes, one per island (for view::plan_frame).
+  std::span<const view::ShadowCaster> submerged_boxes() const { return submerged_boxes_; }
 
   std::size_t land_triangles() const { return land_source_.triangles.size() / 3; }
   std::size_t full_triangles() const { return full_index_count_ / 3; }
@@ -74,6 +76,7 @@ class VisibleGeometry {
   const gpu::Context& ctx_;
   gpu::Buffer land_, mirrored_, submerged_, full_indices_;
   std::uint32_t full_index_count_ = 0, submerged_vertices_ = 0;
+  std::vector<view::ShadowCaster> submerged_boxes_;
   CullSource land_source_, mirrored_source_;  // the mirrored walls' with y negated, as land.vert mirrors
   lod::LodBuilder lod_;
   std::vector<std::uint32_t> lod_indices_;

@@ -118,7 +118,7 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
     p.waters.push_back(create(ctx, p.layout, color_format, depth_format,
                               {.vert = water_vert_spirv(),
                                .frag = reflections ? water_reflect_frag_spirv() : water_frag_spirv(),
-                               .depth_bias = shadows ? kShadowedDepthBias : 0.0f, .shadows = shadows,
+                               .depth_bias = shadows || submerged ? kShadowedDepthBias : 0.0f, .shadows = shadows,
                                .caustics = caustics, .submerged = submerged, .depth_compare = vk::CompareOp::eLess,
                                .name = name}));
   }

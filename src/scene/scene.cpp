@@ -162,6 +162,7 @@ void parse_view(JsonFields f, ViewSpec& v, sim::BasinSpec& basin, int basin_give
   v.effects.reflections = f.boolean("reflections", v.effects.reflections);
   v.effects.caustics = f.boolean("caustics", v.effects.caustics);
   v.effects.shadows = f.boolean("shadows", v.effects.shadows);
+  v.effects.submerged = f.boolean("submerged", v.effects.submerged);
   f.finish();
 }
 

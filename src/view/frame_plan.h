@@ -1,7 +1,8 @@
 #pragma once
 // A frame's plan (no Vulkan): which of the passes before the main one it draws, and for the sun's
-// shadow map its view, fitted to this frame's casters, and the parts of the target its shadows can
-// reach (where the land and the water are drawn with the shaders that sample it).
+// shadow map its view, fitted to this frame's casters; and the parts of the target its shadows can
+// reach or what lies under the water can show through it (where the land and the water are drawn
+// with the shaders that sample the map and the submerged layer).
 #include <array>
 #include <optional>
 #include <span>
@@ -25,11 +26,13 @@ struct FramePlan {
   bool caustics = false;
   bool reflection = false;
   // Something lies under the surface besides the floor and the rim's walls (islands' walls,
-  // bodies): the frame draws the submerged layer (render/submerged_pass.h). Set by the frame loop,
-  // which knows its drawables; plan_frame() leaves it false.
+  // bodies) where the camera can see it: the frame draws the submerged layer
+  // (render/submerged_pass.h).
   bool submerged = false;
   std::optional<SunShadowView> shadow;  // shadows on, something casts, and a shadow is on screen
-  std::vector<PixelRect> shadow_rects;  // where its shadows can fall (merged; empty without a map)
+  // Where its shadows can fall and where what is under the water can show (merged; empty without
+  // either): the effect pipelines' scissor rectangles.
+  std::vector<PixelRect> shadow_rects;
 };
 
 // What the scene around the frame is: the pond's floor depth and land height (world units) and
@@ -37,6 +40,8 @@ struct FramePlan {
 struct PlanInput {
   Effects effects;
   std::span<const ShadowCaster> casters;
+  // Boxes of what lies under the water besides the casters' parts below y = 0 (the islands' walls).
+  std::span<const ShadowCaster> submerged;
   const std::array<float, 16>& view_proj;  // the camera's, column-major, Vulkan clip space
   int width = 0, height = 0;               // the target's
   std::array<double, 3> sun{};
@@ -44,6 +49,13 @@ struct PlanInput {
 };
 
 FramePlan plan_frame(const PlanInput& in);
+
+// The pixels of the water's surface through which `box` (below y = 0) can be seen: the rays that
+// reach it enter the water within depth * tan(48.8 degrees) (the critical angle, 1 / 1.33) of it
+// horizontally, so its box widened by that much, between the wave margin's heights; the whole view
+// when that reaches behind the eye, nothing when it is off screen.
+std::optional<PixelRect> submerged_pixels(const ShadowCaster& box, const std::array<float, 16>& view_proj, int width,
+                                          int height, double floor_depth);
 
 // The camera's pixels per world unit at the nearest point of any caster's box (0 without casters):
 // the shadow map's resolution follows it.

@@ -115,4 +115,35 @@ std::vector<LandVertex> submerged_walls(const std::vector<LandVertex>& mesh, con
   return out;
 }
 
+std::vector<ShadowCaster> touching_boxes(const std::vector<LandVertex>& triangles) {
+  std::vector<ShadowCaster> boxes;
+  for (std::size_t t = 0; t + 2 < triangles.size(); t += 3) {
+    ShadowCaster b{{triangles[t].position.x, triangles[t].position.y, triangles[t].position.z},
+                   {triangles[t].position.x, triangles[t].position.y, triangles[t].position.z}};
+    for (std::size_t v = t + 1; v < t + 3; ++v) {
+      const float p[3] = {triangles[v].position.x, triangles[v].position.y, triangles[v].position.z};
+      for (int k = 0; k < 3; ++k) b.lo[k] = std::min(b.lo[k], p[k]), b.hi[k] = std::max(b.hi[k], p[k]);
+    }
+    boxes.push_back(b);
+  }
+  const auto touch = [](const ShadowCaster& a, const ShadowCaster& b) {
+    for (int k = 0; k < 3; ++k)
+      if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return false;
+    return true;
+  };
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+      for (std::size_t j = i + 1; j < boxes.size(); ++j)
+        if (touch(boxes[i], boxes[j])) {
+          for (int k = 0; k < 3; ++k)
+            boxes[i].lo[k] = std::min(boxes[i].lo[k], boxes[j].lo[k]), boxes[i].hi[k] = std::max(boxes[i].hi[k], boxes[j].hi[k]);
+          boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(j));
+          merged = true;
+          --j;
+        }
+  }
+  return boxes;
+}
+
 }  // namespace pond::view

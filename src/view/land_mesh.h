@@ -12,6 +12,7 @@
 
 #include "shared/water_render.h"
 #include "sim/model.h"
+#include "view/sun_shadow.h"
 
 namespace pond::view {
 
@@ -36,5 +37,9 @@ std::vector<LandVertex> mirrored_walls(const std::vector<LandVertex>& mesh);
 // What of it clear water shows below the surface (render/submerged_pass.h): the islands' walls
 // below y = 0. The rim's walls are left out: water.frag traces its rays to them itself.
 std::vector<LandVertex> submerged_walls(const std::vector<LandVertex>& mesh, const sim::WaterModel& model);
+
+// The bounding boxes of a triangle list's triangles, every two that touch or overlap merged until
+// none do: one box per island for its walls.
+std::vector<ShadowCaster> touching_boxes(const std::vector<LandVertex>& triangles);
 
 }  // namespace pond::view

@@ -19,6 +19,7 @@ struct Effects {
   bool reflections = true;  // planar reflection of the land and the trees in the water
   bool caustics = true;     // the sun's light focused by the waves on the pool floor
   bool shadows = true;      // the sun's shadows of the trees and the bodies on the land and the water
+  bool submerged = true;    // the islands' walls and the bodies under clear water, refracted
 };
 
 // "view": what a rendered frame advances and which effects it draws (the floor and the land are

@@ -3,7 +3,8 @@
 // Which pixels see them through the surface is worked out here, independently of the shaders: from
 // the eye to each point of the flat surface, refracted by Snell's law (1 / 1.33), on to the sphere.
 // Those pixels must change when the balls are there (measured: 390 of 447 at the commit); the
-// pixels whose rays reach the floor beside them must not (5 of 25567).
+// pixels whose rays reach the floor beside them must not (5 of 25567); nor must the balls' pixels
+// with view.submerged off.
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -67,6 +68,9 @@ TEST_F(SubmergedTest, BallsUnderClearWaterShowRefractedWhereTheirRaysMeetThem) {
   const view::Effects plain{.reflections = false, .caustics = false, .shadows = false};
   const Rgba with = render_scene_frame(ctx(), kScene, plain, kWidth, kHeight);
   const Rgba without = render_scene_frame(ctx(), kEmpty, plain, kWidth, kHeight);
+  view::Effects off = plain;
+  off.submerged = false;
+  const Rgba switched_off = render_scene_frame(ctx(), kScene, off, kWidth, kHeight);
   const scene::Scene scene = scene::parse_scene(kScene, "test");
   const sim::WaterModel model = sim::build_model(scene);
   const std::array<float, 16> vp = view::view_projection(view::scene_camera(scene.camera, model, kWidth, kHeight), model);
@@ -87,12 +91,13 @@ TEST_F(SubmergedTest, BallsUnderClearWaterShowRefractedWhereTheirRaysMeetThem) {
       const auto [u, v] = project_to_pixel(vp, x, 0, z, kWidth, kHeight);
       if (u >= 0 && u < kWidth && v >= 0 && v < kHeight) seen[static_cast<std::size_t>(v) * kWidth + u] |= meets ? 1 : 2;
     }
-  int ball = 0, ball_changed = 0, floor = 0, floor_changed = 0;
+  int ball = 0, ball_changed = 0, floor = 0, floor_changed = 0, off_changed = 0;
   for (int v = 0; v < kHeight; ++v)
     for (int u = 0; u < kWidth; ++u) {
       const int s = seen[static_cast<std::size_t>(v) * kWidth + u];
       const bool changed = std::abs(pixel_brightness(with, u, v) - pixel_brightness(without, u, v)) > 24;
-      if (s == 1) ++ball, ball_changed += changed;
+      if (s == 1) ++ball, ball_changed += changed,
+                  off_changed += std::abs(pixel_brightness(switched_off, u, v) - pixel_brightness(without, u, v)) > 24;
       if (s == 2) ++floor, floor_changed += changed;
     }
   std::printf("pixels seeing a ball through the water: %d, %d changed; seeing the floor: %d, %d changed\n", ball,
@@ -100,6 +105,7 @@ TEST_F(SubmergedTest, BallsUnderClearWaterShowRefractedWhereTheirRaysMeetThem) {
   ASSERT_GE(ball, 200) << "the balls' refracted images are too small to judge";
   EXPECT_GE(ball_changed, ball * 8 / 10);
   EXPECT_LE(floor_changed, floor / 50);
+  EXPECT_LE(off_changed, ball / 10) << "with view.submerged off the water still shows the balls beneath it";
 }
 
 }  // namespace

@@ -158,7 +158,7 @@ TEST(Scene, RenderKeysParse) {
   const Scene s = parse_scene(R"({"camera": {"eye": [1, 2, 3], "target": [4, 0, 5], "fovy": 50},
                                   "view": {"steps_per_frame": 3, "lod_tolerance": 0, "floor_depth": 2.5,
                                            "land_height": 1, "reflections": false, "caustics": false,
-                                           "shadows": false},
+                                           "shadows": false, "submerged": false},
                                   "lighting": {"sun": [0, 1, 0], "water": [0, 0.1, 0.2], "sky": [1, 1, 1],
                                                "ground": [0.5, 0.5, 0.5]}})",
                               "x");
@@ -173,6 +173,7 @@ TEST(Scene, RenderKeysParse) {
   EXPECT_FALSE(s.view.effects.reflections);
   EXPECT_FALSE(s.view.effects.caustics);
   EXPECT_FALSE(s.view.effects.shadows);
+  EXPECT_FALSE(s.view.effects.submerged);
   EXPECT_EQ(s.lighting.sun, (std::array<double, 3>{0, 1, 0}));
   EXPECT_EQ(s.lighting.sky, (std::array<double, 3>{1, 1, 1}));
   EXPECT_EQ(s.lighting.absorption, (view::LightingSpec{}.absorption));  // not given: pure water's
@@ -184,6 +185,7 @@ TEST(Scene, RenderKeysParse) {
   EXPECT_TRUE(d.view.effects.reflections);  // the effects default on
   EXPECT_TRUE(d.view.effects.caustics);
   EXPECT_TRUE(d.view.effects.shadows);
+  EXPECT_TRUE(d.view.effects.submerged);
 }
 
 TEST(Scene, RenderKeyErrorsNameThePath) {
@@ -217,6 +219,7 @@ TEST(Scene, RenderKeyErrorsNameThePath) {
   EXPECT_TRUE(has(R"({"view": {"caustics": null}})", "view.caustics must be true or false"));
   EXPECT_TRUE(has(R"({"view": {"shadows": 0}})", "view.shadows must be true or false, not a number"));
   EXPECT_TRUE(has(R"({"view": {"shadows": null}})", "view.shadows must be true or false"));
+  EXPECT_TRUE(has(R"({"view": {"submerged": "yes"}})", "view.submerged must be true or false"));
   EXPECT_TRUE(has(R"({"lighting": {"sun": [0, 0, 0]}})", "lighting.sun must not be zero"));
   EXPECT_TRUE(has(R"({"lighting": {"water": [0, 2, 0]}})", "lighting.water must be an RGB colour"));
   EXPECT_TRUE(has(R"({"lighting": {"sky": "blue"}})", "lighting.sky must be an array"));

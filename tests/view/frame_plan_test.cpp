@@ -5,6 +5,7 @@
 // rays fit their limits.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -26,7 +27,7 @@ struct Frame {
   std::array<float, 16> view_proj = view_projection(camera, model);
 
   FramePlan plan(const Effects& effects, const std::vector<ShadowCaster>& casters) const {
-    return plan_frame({effects, casters, view_proj, camera.width, camera.height, scene.lighting.sun,
+    return plan_frame({effects, casters, {}, view_proj, camera.width, camera.height, scene.lighting.sun,
                        scene.basin.floor_depth, scene.basin.land_height});
   }
 };
@@ -36,8 +37,9 @@ TEST(FramePlan, PassesFollowTheEffects) {
   const std::vector<ShadowCaster> ball{sphere_caster({25, 1, 25}, 2)};
   const FramePlan all = f.plan({}, ball);
   EXPECT_TRUE(all.caustics && all.reflection && all.shadow.has_value());
-  const FramePlan none = f.plan({.reflections = false, .caustics = false, .shadows = false}, ball);
-  EXPECT_FALSE(none.caustics || none.reflection || none.shadow.has_value());
+  EXPECT_TRUE(all.submerged);  // the ball's lower half
+  const FramePlan none = f.plan({.reflections = false, .caustics = false, .shadows = false, .submerged = false}, ball);
+  EXPECT_FALSE(none.caustics || none.reflection || none.shadow.has_value() || none.submerged);
   EXPECT_TRUE(none.shadow_rects.empty());
 }
 
@@ -71,6 +73,30 @@ TEST(FramePlan, ShadowRectanglesHoldTheCastersShadowAndDoNotOverlap) {
       const PixelRect &r = p.shadow_rects[a], &s = p.shadow_rects[b];
       EXPECT_TRUE(r.x1 <= s.x0 || s.x1 <= r.x0 || r.y1 <= s.y0 || s.y1 <= r.y0) << a << " and " << b << " overlap";
     }
+}
+
+// What lies under the water shows through the surface above it and beside it (as far as a ray can
+// bend, 1.15 depths): the rectangles hold the surface around a sunk ball; nothing above the water or
+// below the floor asks for them.
+TEST(FramePlan, SubmergedRectanglesHoldTheSurfaceThroughWhichItShows) {
+  const Frame f;
+  const Effects no_shadows{.shadows = false};
+  const FramePlan sunk = f.plan(no_shadows, {sphere_caster({25, -1.5f, 25}, 1)});
+  ASSERT_TRUE(sunk.submerged);
+  ASSERT_FALSE(sunk.shadow.has_value());
+  const double reach = 1.1 * f.scene.basin.floor_depth;
+  for (const auto& [x, z] : std::vector<std::array<double, 2>>{{25, 25}, {26 + reach, 25}, {24 - reach, 26}, {25, 26 + reach}}) {
+    const std::array<float, 16>& m = f.view_proj;  // the surface point (x, 0, z) on screen
+    const double w = m[3] * x + m[11] * z + m[15];
+    const int u = static_cast<int>((m[0] * x + m[8] * z + m[12]) / w * 0.5 * f.camera.width + 0.5 * f.camera.width);
+    const int v = static_cast<int>((m[1] * x + m[9] * z + m[13]) / w * 0.5 * f.camera.height + 0.5 * f.camera.height);
+    bool held = false;
+    for (const PixelRect& r : sunk.shadow_rects) held = held || (r.x0 <= u && u < r.x1 && r.y0 <= v && v < r.y1);
+    EXPECT_TRUE(held) << "the surface at " << x << ", " << z;
+  }
+  EXPECT_FALSE(f.plan(no_shadows, {sphere_caster({25, 3, 25}, 1)}).submerged);     // above the water
+  EXPECT_FALSE(f.plan(no_shadows, {sphere_caster({25, -60, 25}, 1)}).submerged);   // below the floor
+  EXPECT_TRUE(f.plan(no_shadows, {sphere_caster({25, 3, 25}, 1)}).shadow_rects.empty());
 }
 
 // The map's texels follow the camera's pixels at the nearest caster: nearer, a finer map.

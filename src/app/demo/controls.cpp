@@ -27,6 +27,7 @@ constexpr KeyBinding kBindings[] = {
     {GLFW_KEY_M, Action::reflections, "M", "reflections (mirror image) on / off"},
     {GLFW_KEY_K, Action::caustics, "K", "caustics (focused sunlight on the floor) on / off"},
     {GLFW_KEY_L, Action::shadows, "L", "shadows (of the trees and bodies) on / off"},
+    {GLFW_KEY_U, Action::submerged, "U", "under water (islands' walls, bodies, refracted) on / off"},
     {GLFW_KEY_RIGHT_BRACKET, Action::tau_up, "] / =", "LOD tolerance up (coarser)"},
     {GLFW_KEY_EQUAL, Action::tau_up, "", ""},
     {GLFW_KEY_LEFT_BRACKET, Action::tau_down, "[ / -", "LOD tolerance down (0 = full mesh)"},

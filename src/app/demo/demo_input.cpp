@@ -42,6 +42,7 @@ void DemoApp::on_action(Action action) {
     case Action::reflections: settings_.effects.reflections = !settings_.effects.reflections; break;
     case Action::caustics: settings_.effects.caustics = !settings_.effects.caustics; break;
     case Action::shadows: settings_.effects.shadows = !settings_.effects.shadows; break;
+    case Action::submerged: settings_.effects.submerged = !settings_.effects.submerged; break;
     case Action::tau_up: settings_.lod_tolerance_px = next_tolerance(settings_.lod_tolerance_px, true); break;
     case Action::tau_down: settings_.lod_tolerance_px = next_tolerance(settings_.lod_tolerance_px, false); break;
     case Action::steps_up: settings_.steps_per_frame = std::min<std::int64_t>(64, settings_.steps_per_frame + 1); break;

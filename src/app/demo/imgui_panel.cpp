@@ -139,6 +139,8 @@ PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, render::TreeDr
     ImGui::SameLine();
     ImGui::Checkbox("vsync (F3)", &s.vsync);
     ImGui::Checkbox("shadows (L)", &s.effects.shadows);
+    ImGui::SameLine();
+    ImGui::Checkbox("under water (U)", &s.effects.submerged);
     if (ImGui::Button("reset camera (C)")) req.reset_camera = true;
     req.apply_sun = edit_sun(s.sun);
   }
