@@ -27,6 +27,9 @@ layout(location = 2) in float in_top;
 layout(location = 3) in vec3 in_sun_share;  // read only with shadows, so only then interpolated
 layout(location = 4) in vec3 in_shadow;
 #ifdef POND_LAND_SUBMERGED
+layout(location = 5) flat in float in_thick;  // land.vert
+#endif
+#ifdef POND_LAND_SUBMERGED
 layout(location = 0) out uvec2 out_layer;  // render/submerged_pass.h
 #else
 layout(location = 0) out vec4 out_color;
@@ -52,9 +55,8 @@ void main() {
   if (kShadows) light *= vec3(1.0) - in_sun_share * (1.0 - sun_light(in_shadow));
 #endif
 #ifdef POND_LAND_SUBMERGED
-  // A wall stands on the floor: solid behind its face as far as any ray goes.
   out_layer = uvec2(packUnorm4x8(finish_color(light * land_texture(in_world, in_top))),
-                    packHalf2x16(vec2(1.0 / gl_FragCoord.w, 65504.0)));
+                    packHalf2x16(vec2(1.0 / gl_FragCoord.w, 1.0 / gl_FragCoord.w + in_thick)));
 #else
   out_color = finish_color(light * land_texture(in_world, in_top));
 #endif

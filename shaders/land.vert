@@ -21,6 +21,9 @@ layout(location = 1) out vec3 out_world;      // for the texture
 layout(location = 2) out float out_top;       // 1 on flat tops (grass), 0 on walls
 layout(location = 3) out vec3 out_sun_share;  // the sun's part of out_color, which a shadow takes
 layout(location = 4) out vec3 out_shadow;     // the point in the sun's shadow map (land.frag)
+#ifdef POND_LAND_SUBMERGED
+layout(location = 5) flat out float out_thick;  // a wall's depth in the submerged layer (land.frag)
+#endif
 
 void main() {
   const vec3 n = normalize(in_normal.xyz);
@@ -44,5 +47,14 @@ void main() {
   // `precise`: the same position with and without shadows, as water.vert's.
   precise vec4 position = f.view_proj * vec4(in_position.xyz, 1.0);
   gl_Position = position;
+#endif
+#ifdef POND_LAND_SUBMERGED
+  // The submerged layer holds what a ray can enter: a wall seen from behind (the island's far
+  // side, through its top) is left out, all three corners of it outside the clip volume (a wall's
+  // corners share its plane, so they agree).
+  if (dot(n, f.eye.xyz - in_position.xyz) <= 0.0) gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+  // A ray enters an island through a wall it sees, so the layer need only call the wall solid for
+  // a march step behind its face (water.frag: at most 0.38 floor depths), not the island's width.
+  out_thick = 0.5 * POND_FRAME_FLOOR_DEPTH(f) + 0.5;
 #endif
 }

@@ -14,6 +14,7 @@ std::span<const std::uint32_t> land_vert_spirv();
 std::span<const std::uint32_t> land_frag_spirv();
 std::span<const std::uint32_t> water_reflect_frag_spirv();
 std::span<const std::uint32_t> land_mirror_vert_spirv();
+std::span<const std::uint32_t> land_submerged_vert_spirv();  // front faces only
 std::span<const std::uint32_t> land_submerged_frag_spirv();
 std::span<const std::uint32_t> land_mirror_frag_spirv();  // without the shadow map
 std::span<const std::uint32_t> sky_vert_spirv();

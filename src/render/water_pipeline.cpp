@@ -126,7 +126,7 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
                          {.vert = land_mirror_vert_spirv(), .frag = land_mirror_frag_spirv(), .land_vertices = true,
                           .linear_output = true, .name = "land, mirrored"});
   p.land_submerged = create(ctx, p.layout, kSubmergedFormat, depth_format,
-                            {.vert = land_vert_spirv(), .frag = land_submerged_frag_spirv(), .land_vertices = true,
+                            {.vert = land_submerged_vert_spirv(), .frag = land_submerged_frag_spirv(), .land_vertices = true,
                              .linear_output = true, .name = "land, submerged"});
   p.sky = create(ctx, p.layout, color_format, depth_format,
                  {.vert = sky_vert_spirv(), .frag = sky_frag_spirv(), .depth_write = false, .name = "sky"});
