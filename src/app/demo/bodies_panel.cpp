@@ -8,7 +8,7 @@ namespace pond::app::demo {
 
 BodyRequests draw_bodies_panel(const sim::Session& session, float width, double& ball_density) {
   BodyRequests req;
-  constexpr float kWidth = 300;
+  constexpr float kWidth = 400;  // a floating body's whole line
   ImGui::SetNextWindowPos(ImVec2(width - kWidth - 10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(kWidth, 0), ImGuiCond_FirstUseEver);
   // Collapsed at first, like the panel's closed sections: on lavapipe every panel pixel costs.
@@ -22,6 +22,9 @@ BodyRequests draw_bodies_panel(const sim::Session& session, float width, double&
   for (std::size_t b = 0; b < bodies.size(); ++b) {
     const sim::BodySpec& spec = bodies[b];
     ImGui::PushID(static_cast<int>(b));
+    // The button first: after the text it covered the text's end at the panel's width.
+    if (ImGui::SmallButton("remove")) req.remove = b;
+    ImGui::SameLine();
     if (session.held(b))
       ImGui::Text("%zu  held (dragged)  r %.2f", b, spec.radius);
     else if (spec.motion == sim::BodyMotion::floating)
@@ -30,8 +33,6 @@ BodyRequests draw_bodies_panel(const sim::Session& session, float width, double&
                   spec.radius);
     else
       ImGui::Text("%zu  kinematic  r %.2f", b, spec.radius);
-    ImGui::SameLine(kWidth - 75);
-    if (ImGui::SmallButton("remove")) req.remove = b;
     ImGui::PopID();
   }
   float density = static_cast<float>(ball_density);
