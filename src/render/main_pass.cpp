@@ -73,37 +73,43 @@ void record_main_pass(const vk::raii::CommandBuffer& cmd, const FrameContext& fr
   for (PassDrawable* p : frame.drawables) p->draw_occluding(info);
   cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *frame.pipes.layout, 0, *d.set, nullptr);
   // The land and the water: first where a shadow can fall or what is under the water can show
-  // (plan.shadow_rects, scissored) with the pipelines that sample the map and the submerged layer,
-  // then everywhere with those that do not. Both test depth with
-  // "less" before shading, and a pixel the first draw shaded holds a depth the second cannot beat
+  // (plan.shadow_rects, scissored), each rectangle with the pipeline that samples what it is for
+  // (the shadow map, the submerged layer, or both), then everywhere with those that sample neither.
+  // Both test depth with "less" before shading, and a pixel the first draw shaded holds a depth the second cannot beat
   // (the same `precise` vertex code, and the first draw's small bias toward the camera:
   // water_pipeline.cpp), so each pixel is shaded once. llvmpipe runs both sides of a per-pixel
   // branch, so only the scissor keeps the fetches off the pixels no shadow reaches; and one full
   // draw, not the rectangles' complement, keeps the vertex work to one pass over the mesh plus,
-  // per rectangle, the triangles that can reach it.
-  auto shaded = [&](bool in_rects_too, const vk::raii::Pipeline& plain, const vk::raii::Pipeline& shadowed,
-                    const view::IndexRange& all, const std::vector<view::IndexRange>& in_rects) {
+  // per rectangle, the triangles that can reach it. `effect_pipe`: a rectangle's pipeline (null:
+  // none, it is left to the plain draw).
+  auto shaded = [&](const vk::raii::Pipeline& plain, auto effect_pipe, const view::IndexRange& all,
+                    const std::vector<view::IndexRange>& in_rects) {
     bool covered = false;  // a rectangle is the whole target (a low sun, a caster behind the eye)
-    if (in_rects_too) {
-      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *shadowed);
-      for (std::size_t k = 0; k < plan.shadow_rects.size(); ++k) {
-        const vk::Rect2D r = scissor(plan.shadow_rects[k]);
-        cmd.setScissor(0, r);
-        draw_range(cmd, in_rects[k]);
-        covered = covered || r == whole;
-      }
-      cmd.setScissor(0, whole);
+    for (std::size_t k = 0; k < plan.shadow_rects.size(); ++k) {
+      const vk::raii::Pipeline* pipe = effect_pipe(plan.shadow_rects[k]);
+      if (!pipe) continue;
+      cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, **pipe);
+      const vk::Rect2D r = scissor(plan.shadow_rects[k]);
+      cmd.setScissor(0, r);
+      draw_range(cmd, in_rects[k]);
+      covered = covered || r == whole;
     }
+    cmd.setScissor(0, whole);
     if (covered) return;
     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *plain);
     draw_range(cmd, all);
   };
   const WaterPipelines& pipes = frame.pipes;
+  const bool shadow = plan.shadow.has_value();
   frame.geometry.bind_land(cmd, frame.slot);
-  shaded(plan.shadow.has_value(), pipes.land, pipes.land_shadowed, draws.land_whole, draws.land_rects);
+  shaded(pipes.land, [&](const view::PixelRect& r) { return shadow && r.shadowed ? &pipes.land_shadowed : nullptr; },
+         draws.land_whole, draws.land_rects);
   frame.geometry.bind_water(cmd, frame.slot, draws.full_mesh);
-  shaded(!plan.shadow_rects.empty(), pipes.water_for(options.reflections, options.caustics, false, false),
-         pipes.water_for(options.reflections, options.caustics, plan.shadow.has_value(), options.submerged),
+  shaded(pipes.water_for(options.reflections, options.caustics, false, false),
+         [&](const view::PixelRect& r) {
+           return &pipes.water_for(options.reflections, options.caustics, shadow && r.shadowed,
+                                   options.submerged && r.submerged);
+         },
          draws.water_whole, draws.water_rects);
   if (options.wireframe && *pipes.wire) {
     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipes.wire);

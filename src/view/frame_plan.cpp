@@ -24,7 +24,8 @@ double nearest_caster_pixels(std::span<const ShadowCaster> casters, const std::a
 
 std::optional<PixelRect> submerged_pixels(const ShadowCaster& box, const std::array<float, 16>& view_proj, int width,
                                           int height, double floor_depth) {
-  const double reach = 1.15 * floor_depth + kShadowWaveMargin;  // tan(asin(1 / 1.33)) = 1.14
+  // tan(asin(1 / 1.33)) = 1.14 per unit of depth, to the box's bottom or the floor.
+  const double reach = 1.15 * std::min(-static_cast<double>(box.lo[1]), floor_depth) + kShadowWaveMargin;
   const std::array<float, 16>& m = view_proj;
   double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
   for (int k = 0; k < 8; ++k) {
@@ -47,29 +48,43 @@ FramePlan plan_frame(const PlanInput& in) {
   FramePlan plan;
   plan.caustics = in.effects.caustics;
   plan.reflection = in.effects.reflections;
-  std::vector<PixelRect> rects;
+  std::vector<PixelRect> below, shadowed;
   if (in.effects.submerged) {
     auto add = [&](ShadowCaster box) {
       if (box.lo[1] >= 0.0f || box.hi[1] < -in.floor_depth) return;  // all above the water (a tree), or below the floor
       box.hi[1] = std::min(box.hi[1], 0.0f);
-      if (const auto r = submerged_pixels(box, in.view_proj, in.width, in.height, in.floor_depth)) rects.push_back(*r);
+      if (auto r = submerged_pixels(box, in.view_proj, in.width, in.height, in.floor_depth)) {
+        r->submerged = true;
+        below.push_back(*r);
+      }
     };
     for (const ShadowCaster& c : in.casters) add(c);
     for (const ShadowCaster& c : in.submerged) add(c);
-    plan.submerged = !rects.empty();
+    below = merge_overlapping(std::move(below));
+    plan.submerged = !below.empty();
   }
   const double pixels = nearest_caster_pixels(in.casters, in.view_proj, in.height);
   const std::optional<SunShadowView> fitted =
       in.effects.shadows ? fit_sun_shadow(in.sun, in.casters, pixels * kShadowTexelsPerPixel, kMaxShadowMapSize)
                          : std::nullopt;
-  const std::size_t below = rects.size();
   if (fitted)
     for (const ShadowCaster& c : in.casters)
-      if (const auto r = shadow_pixels(*fitted, c, in.view_proj, in.width, in.height, -in.floor_depth,
-                                       in.land_height + kShadowWaveMargin))
-        rects.push_back(*r);
-  if (rects.size() > below) plan.shadow = *fitted;
-  plan.shadow_rects = merge_overlapping(std::move(rects));
+      if (auto r = shadow_pixels(*fitted, c, in.view_proj, in.width, in.height, -in.floor_depth,
+                                 in.land_height + kShadowWaveMargin)) {
+        r->shadowed = true;
+        shadowed.push_back(*r);
+      }
+  shadowed = merge_overlapping(std::move(shadowed));
+  if (!shadowed.empty()) plan.shadow = *fitted;
+  // Where both can show, first (the main pass shades each pixel in the first rectangle that holds
+  // it): the two kinds' overlaps, which do not overlap each other; then each kind's own.
+  for (const PixelRect& s : shadowed)
+    for (const PixelRect& u : below) {
+      const PixelRect both{std::max(s.x0, u.x0), std::max(s.y0, u.y0), std::min(s.x1, u.x1), std::min(s.y1, u.y1), true, true};
+      if (both.x0 < both.x1 && both.y0 < both.y1) plan.shadow_rects.push_back(both);
+    }
+  plan.shadow_rects.insert(plan.shadow_rects.end(), shadowed.begin(), shadowed.end());
+  plan.shadow_rects.insert(plan.shadow_rects.end(), below.begin(), below.end());
   return plan;
 }
 

@@ -30,8 +30,10 @@ struct FramePlan {
   // (render/submerged_pass.h).
   bool submerged = false;
   std::optional<SunShadowView> shadow;  // shadows on, something casts, and a shadow is on screen
-  // Where its shadows can fall and where what is under the water can show (merged; empty without
-  // either): the effect pipelines' scissor rectangles.
+  // Where its shadows can fall and where what is under the water can show (PixelRect's flags; empty
+  // without either): the effect pipelines' scissor rectangles, in the order the main pass draws
+  // them, the first holding a pixel shading it: where both can show, then each kind's own
+  // rectangles, merged within their kind (they overlap the other kind's).
   std::vector<PixelRect> shadow_rects;
 };
 
@@ -52,8 +54,9 @@ FramePlan plan_frame(const PlanInput& in);
 
 // The pixels of the water's surface through which `box` (below y = 0) can be seen: the rays that
 // reach it enter the water within depth * tan(48.8 degrees) (the critical angle, 1 / 1.33) of it
-// horizontally, so its box widened by that much, between the wave margin's heights; the whole view
-// when that reaches behind the eye, nothing when it is off screen.
+// horizontally, the depth of its bottom (or the floor's), so its box widened by that much, between
+// the wave margin's heights; the whole view when that reaches behind the eye, nothing when it is
+// off screen.
 std::optional<PixelRect> submerged_pixels(const ShadowCaster& box, const std::array<float, 16>& view_proj, int width,
                                           int height, double floor_depth);
 

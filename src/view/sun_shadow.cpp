@@ -131,7 +131,8 @@ std::vector<PixelRect> merge_overlapping(std::vector<PixelRect> rects) {
       for (std::size_t j = i + 1; j < rects.size() && !merged; ++j)
         if (overlap(rects[i], rects[j])) {
           rects[i] = {std::min(rects[i].x0, rects[j].x0), std::min(rects[i].y0, rects[j].y0),
-                      std::max(rects[i].x1, rects[j].x1), std::max(rects[i].y1, rects[j].y1)};
+                      std::max(rects[i].x1, rects[j].x1), std::max(rects[i].y1, rects[j].y1),
+                      rects[i].shadowed || rects[j].shadowed, rects[i].submerged || rects[j].submerged};
           rects.erase(rects.begin() + static_cast<std::ptrdiff_t>(j));
           merged = true;
         }

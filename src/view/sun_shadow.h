@@ -59,8 +59,8 @@ std::optional<PixelRect> shadow_pixels(const SunShadowView& view, const ShadowCa
                                        const std::array<float, 16>& view_proj, int width, int height, double y_low,
                                        double y_high);
 
-// The rectangles, with every two that overlap replaced by their bounding box until none overlap
-// (fewer draws).
+// The rectangles, with every two that overlap replaced by their bounding box (and the union of
+// what they are for) until none overlap (fewer draws).
 std::vector<PixelRect> merge_overlapping(std::vector<PixelRect> rects);
 
 // The direction sunlight travels under the water (refracted at the flat rest surface, air to water,

@@ -5,6 +5,7 @@
 // rays fit their limits.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -52,6 +53,8 @@ TEST(FramePlan, NoShadowMapWithoutCastersOrWhenTheirShadowsAreOffScreen) {
   EXPECT_TRUE(away.shadow_rects.empty());
 }
 
+// (Rectangles of one kind do not overlap; where shadows and what is under the water meet, the
+// overlap comes first with both flags.)
 TEST(FramePlan, ShadowRectanglesHoldTheCastersShadowAndDoNotOverlap) {
   const Frame f;
   const std::vector<ShadowCaster> casters{sphere_caster({20, 1, 25}, 2), sphere_caster({21, 1, 26}, 2),
@@ -65,18 +68,20 @@ TEST(FramePlan, ShadowRectanglesHoldTheCastersShadowAndDoNotOverlap) {
                                  f.scene.basin.land_height + kShadowWaveMargin);
     ASSERT_TRUE(r.has_value());
     bool held = false;
-    for (const PixelRect& m : p.shadow_rects) held = held || (m.x0 <= r->x0 && m.y0 <= r->y0 && r->x1 <= m.x1 && r->y1 <= m.y1);
+    for (const PixelRect& m : p.shadow_rects)
+      held = held || (m.shadowed && m.x0 <= r->x0 && m.y0 <= r->y0 && r->x1 <= m.x1 && r->y1 <= m.y1);
     EXPECT_TRUE(held);
   }
   for (std::size_t a = 0; a < p.shadow_rects.size(); ++a)
     for (std::size_t b = a + 1; b < p.shadow_rects.size(); ++b) {
       const PixelRect &r = p.shadow_rects[a], &s = p.shadow_rects[b];
+      if (r.shadowed != s.shadowed || r.submerged != s.submerged) continue;  // the kinds overlap each other
       EXPECT_TRUE(r.x1 <= s.x0 || s.x1 <= r.x0 || r.y1 <= s.y0 || s.y1 <= r.y0) << a << " and " << b << " overlap";
     }
 }
 
 // What lies under the water shows through the surface above it and beside it (as far as a ray can
-// bend, 1.15 depths): the rectangles hold the surface around a sunk ball; nothing above the water or
+// bend, 1.15 times the depth of its bottom): the rectangles hold the surface around a sunk ball; nothing above the water or
 // below the floor asks for them.
 TEST(FramePlan, SubmergedRectanglesHoldTheSurfaceThroughWhichItShows) {
   const Frame f;
@@ -84,7 +89,7 @@ TEST(FramePlan, SubmergedRectanglesHoldTheSurfaceThroughWhichItShows) {
   const FramePlan sunk = f.plan(no_shadows, {sphere_caster({25, -1.5f, 25}, 1)});
   ASSERT_TRUE(sunk.submerged);
   ASSERT_FALSE(sunk.shadow.has_value());
-  const double reach = 1.1 * f.scene.basin.floor_depth;
+  const double reach = 1.1 * std::min(2.5, f.scene.basin.floor_depth);  // the ball's bottom is 2.5 down
   for (const auto& [x, z] : std::vector<std::array<double, 2>>{{25, 25}, {26 + reach, 25}, {24 - reach, 26}, {25, 26 + reach}}) {
     const std::array<float, 16>& m = f.view_proj;  // the surface point (x, 0, z) on screen
     const double w = m[3] * x + m[11] * z + m[15];
