@@ -1,6 +1,7 @@
 // Node-steps per second of the CPU solver: every backend at 50^2, 256^2 and 1024^2, one thread and
 // all threads, exact and fast math; and the machine's copy bandwidth measured in the same run, the
-// memory-bound ceiling (a substep reads and writes 24 bytes of state per node).
+// memory-bound ceiling (a substep reads and writes 24 bytes of state per node); and the cost of
+// the tile bounds (BM_TileBounds).
 //
 //   build/bench/sim/bench_solver --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
@@ -30,7 +31,9 @@ WaterModel rippled_model(int size, MathMode math) {
   return build_model(s, math);
 }
 
-void BM_Solver(benchmark::State& state) {
+// Args: backend, size, threads, math (0 exact, 1 fast) and, where given, whether the kernels emit
+// the tile bounds (sim/tile_bounds.h).
+void run_solver(benchmark::State& state, bool tiles) {
   const auto backend = static_cast<Backend>(state.range(0));
   const int size = static_cast<int>(state.range(1));
   const int threads = static_cast<int>(state.range(2));
@@ -41,13 +44,16 @@ void BM_Solver(benchmark::State& state) {
   }
   CpuSolver solver(rippled_model(size, math), backend, threads);
   solver.advance(20);  // the splashes spread
+  solver.track_tile_bounds(tiles);
   for (auto _ : state) solver.advance(1);
   const double nodes = double(size) * size;
   state.counters["node_steps_per_s"] =
       benchmark::Counter(nodes * double(state.iterations()), benchmark::Counter::kIsRate);
   state.SetLabel(std::string(backend_name(backend)) + " x" + std::to_string(solver.threads()) +
-                 (math == MathMode::exact ? " exact" : " fast"));
+                 (math == MathMode::exact ? " exact" : " fast") + (tiles ? " tiles" : ""));
 }
+void BM_Solver(benchmark::State& state) { run_solver(state, false); }
+void BM_TileBounds(benchmark::State& state) { run_solver(state, state.range(4) != 0); }
 
 void solver_args(benchmark::internal::Benchmark* b) {
   const int all = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -60,6 +66,18 @@ void solver_args(benchmark::internal::Benchmark* b) {
         }
 }
 BENCHMARK(BM_Solver)->Apply(solver_args)->ArgNames({"backend", "size", "threads", "fast"})
+    ->Unit(benchmark::kMicrosecond)->UseRealTime()->MinTime(0.3);
+
+// The cost of the tile bounds: every backend at 1024^2 and 256^2, exact math, one thread and all
+// threads, without and with them (docs/perf.md).
+void tile_args(benchmark::internal::Benchmark* b) {
+  const int all = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  for (int size : {256, 1024})
+    for (int backend : {0, 1, 2, 3})
+      for (int threads : {1, all})
+        for (int tiles : {0, 1}) b->Args({backend, size, threads, 0, tiles});
+}
+BENCHMARK(BM_TileBounds)->Apply(tile_args)->ArgNames({"backend", "size", "threads", "fast", "tiles"})
     ->Unit(benchmark::kMicrosecond)->UseRealTime()->MinTime(0.3);
 
 // The sweep behind docs/solver_speed.png (scripts/plot_solver_speed.sh): exact math, every backend,

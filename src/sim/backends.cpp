@@ -45,8 +45,8 @@ bool compiled_in(Backend b) {
   switch (b) {
     case Backend::scalar:
     case Backend::sse: return true;
-    case Backend::avx2: return step_rows_avx2(shared::kRsqrtStepsExact, false) != nullptr;
-    case Backend::avx512: return step_rows_avx512(shared::kRsqrtStepsExact, false) != nullptr;
+    case Backend::avx2: return step_rows_avx2(shared::kRsqrtStepsExact, false, false) != nullptr;
+    case Backend::avx512: return step_rows_avx512(shared::kRsqrtStepsExact, false, false) != nullptr;
   }
   return false;
 }
@@ -85,7 +85,7 @@ std::optional<Backend> parse_backend(std::string_view name) {
   return std::nullopt;
 }
 
-StepRowsFn step_rows_for(Backend b, int rsqrt_steps, bool reach) {
+StepRowsFn step_rows_for(Backend b, int rsqrt_steps, bool reach, bool tiles) {
   if (!compiled_in(b))
     throw InputError(std::string("solver ") + backend_name(b) +
                      " is not in this build (IA-32 builds have scalar and sse)");
@@ -96,10 +96,10 @@ StepRowsFn step_rows_for(Backend b, int rsqrt_steps, bool reach) {
                                 : "this CPU lacks " + feature));
   }
   switch (b) {
-    case Backend::scalar: return step_rows_scalar(rsqrt_steps, reach);
-    case Backend::sse: return step_rows_sse2(rsqrt_steps, reach);
-    case Backend::avx2: return step_rows_avx2(rsqrt_steps, reach);
-    case Backend::avx512: return step_rows_avx512(rsqrt_steps, reach);
+    case Backend::scalar: return step_rows_scalar(rsqrt_steps, reach, tiles);
+    case Backend::sse: return step_rows_sse2(rsqrt_steps, reach, tiles);
+    case Backend::avx2: return step_rows_avx2(rsqrt_steps, reach, tiles);
+    case Backend::avx512: return step_rows_avx512(rsqrt_steps, reach, tiles);
   }
   return nullptr;
 }

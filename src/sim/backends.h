@@ -12,14 +12,15 @@ enum class Backend { scalar, sse, avx2, avx512 };
 
 // A substep of rows [r0, r1) with a scratch of kSpringRows * kSlots floats. Returns the blow-up
 // check; a kernel that tracks the reach also stores the rows' largest |u'x|, |u'z| in *reach.
-using StepRowsFn = float (*)(const StepView&, int r0, int r1, float* scratch, float* reach);
+// A kernel that emits the tile bounds of the new displacements does so to *tiles (else nullptr).
+using StepRowsFn = float (*)(const StepView&, int r0, int r1, float* scratch, float* reach, TileSink* tiles);
 
 // The kernel of one backend for a number of Newton steps (shared::kRsqrtStepsExact or ...Fast),
-// tracking the reach (scenes with bodies) or not.
-StepRowsFn step_rows_scalar(int rsqrt_steps, bool reach);
-StepRowsFn step_rows_sse2(int rsqrt_steps, bool reach);
-StepRowsFn step_rows_avx2(int rsqrt_steps, bool reach);    // nullptr in builds without AVX2 (IA-32)
-StepRowsFn step_rows_avx512(int rsqrt_steps, bool reach);  // nullptr in builds without AVX-512 (IA-32)
+// tracking the reach (scenes with bodies) or not, emitting the tile bounds (to its TileSink) or not.
+StepRowsFn step_rows_scalar(int rsqrt_steps, bool reach, bool tiles);
+StepRowsFn step_rows_sse2(int rsqrt_steps, bool reach, bool tiles);
+StepRowsFn step_rows_avx2(int rsqrt_steps, bool reach, bool tiles);    // nullptr in builds without AVX2 (IA-32)
+StepRowsFn step_rows_avx512(int rsqrt_steps, bool reach, bool tiles);  // nullptr in builds without AVX-512 (IA-32)
 
 // Tests hide CPU features with POND_CPU_FEATURES_MASK=avx2 (sse2|avx2|avx512f,...; wider ones go too).
 bool compiled_in(Backend b);         // in this build (IA-32 builds have scalar and sse)
@@ -27,6 +28,6 @@ bool cpu_supports(Backend b);        // compiled in, supported by this CPU and n
 Backend best_backend();              // the widest supported
 const char* backend_name(Backend b);  // "scalar", "sse", "avx2", "avx512"
 std::optional<Backend> parse_backend(std::string_view name);
-StepRowsFn step_rows_for(Backend b, int rsqrt_steps, bool reach);  // throws InputError naming the missing CPU feature
+StepRowsFn step_rows_for(Backend b, int rsqrt_steps, bool reach, bool tiles);  // throws InputError naming the missing CPU feature
 
 }  // namespace pond::sim

@@ -74,7 +74,8 @@ void move_bodies(BodyState* sb, const BodyConstants* sc, const BodyState* sk, st
 }
 
 // Step 3 for kinematic body b: the nodes inside it to its surface, with its vertical velocity.
-void push_out(WaterState& s, const WaterModel& m, const BodyState& b, const BodyConstants& c, float reach) {
+// Returns the rectangle of nodes it may have moved (empty: row0 > row1 or col0 > col1).
+NodeRect push_out(WaterState& s, const WaterModel& m, const BodyState& b, const BodyConstants& c, float reach) {
   const float extent = shared::contact_extent(c.radius, reach), limit2 = shared::contact_touch_limit2(c.radius);
   const int i0 = shared::footprint_first(b.z, extent), i1 = shared::footprint_last(b.z, extent, m.rows - 1);
   const int j0 = shared::footprint_first(b.x, extent), j1 = shared::footprint_last(b.x, extent, m.cols - 1);
@@ -89,6 +90,7 @@ void push_out(WaterState& s, const WaterModel& m, const BodyState& b, const Body
       s.uy[n] = shared::contact_surface(s.uy[n], b.y, half);
       s.vy[n] = b.vy;
     }
+  return {i0, i1, j0, j1};
 }
 
 }  // namespace
@@ -111,7 +113,8 @@ ContactPush contact_push(const WaterModel& m) {
   return p;
 }
 
-void resolve_contacts(WaterState& s, const WaterModel& m, std::int64_t step, int substep, float reach) {
+void resolve_contacts(WaterState& s, const WaterModel& m, std::int64_t step, int substep, float reach,
+                      std::vector<NodeRect>* moved) {
   const ContactPush p = contact_push(m);
   std::array<BodyConstants, shared::kMaxBodies> sc{};
   std::array<BodyState, shared::kMaxBodies> sk{};
@@ -123,7 +126,10 @@ void resolve_contacts(WaterState& s, const WaterModel& m, std::int64_t step, int
     if (sc[i].floating != 0u) exchange_with_water(s, m, s.bodies[i], sc[i]);
   move_bodies(s.bodies.data(), sc.data(), sk.data(), p.count, m.land.data(), p);
   for (std::uint32_t i = 0; i < p.count; ++i)
-    if (sc[i].floating == 0u) push_out(s, m, s.bodies[i], sc[i], reach);
+    if (sc[i].floating == 0u) {
+      const NodeRect r = push_out(s, m, s.bodies[i], sc[i], reach);
+      if (moved && r.row0 <= r.row1 && r.col0 <= r.col1) moved->push_back(r);
+    }
   for (std::uint32_t i = 0; i < p.count; ++i) s.bodies[i] = shared::canonical_body(s.bodies[i]);
 }
 

@@ -4,6 +4,7 @@
 // number of threads. The result does not depend on either (same bits).
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "sim/aligned_buffer.h"
@@ -12,6 +13,7 @@
 #include "sim/row_threads.h"
 #include "sim/solver.h"
 #include "sim/state.h"
+#include "sim/tile_bounds.h"
 
 namespace pond::sim {
 
@@ -39,8 +41,18 @@ class CpuSolver final : public Solver {
   // Advances `steps` steps. Throws InputError naming the step when the state becomes non-finite.
   void advance(std::int64_t steps) override;
 
+  // Whether to keep the tile bounds (shared/tile_bounds.h) of the current state: the step kernels
+  // emit them, and the contact and perturb() keep them true. Off at first, so that nothing pays for
+  // them while no one reads them; turning it on computes them from the state.
+  void track_tile_bounds(bool on);
+  // The current state's tile bounds, tile (a, b) at b * tiles_x + a; empty while not tracked.
+  const std::vector<TileBounds>& tile_bounds() const { return tile_bounds_; }
+  const TileGrid& tile_grid() const { return tile_grid_; }
+
  private:
   void substep(int substep_index);  // then the bodies' contact (sim/contact.h)
+  std::pair<int, int> part_rows(int part) const;  // the node rows [r0, r1) of a part
+  void refresh_tiles(const NodeRect& moved);  // if tracked
   WaterModel model_;
   Backend backend_;
   StepRowsFn kernel_;
@@ -50,6 +62,12 @@ class CpuSolver final : public Solver {
   std::vector<AlignedBuffer<float>> scratch_;  // spring rows, one per part
   std::vector<float> checks_;                  // blow-up check of each part
   std::vector<float> reaches_;                 // largest |ux|, |uz| of each part (with bodies)
+  TileGrid tile_grid_;
+  std::vector<TileBounds> tile_bounds_;          // empty while not tracked
+  std::vector<AlignedBuffer<float>> tile_columns_;  // per part: TileSink::columns
+  std::vector<std::vector<TileBounds>> tile_rows_;  // per part: its partial tile rows
+  std::vector<TileRowSpan> tile_spans_;             // per part: which tile rows those are
+  std::vector<NodeRect> moved_;                     // by the contact, this substep
   std::size_t next_perturbation_ = 0;
   std::int64_t step_ = 0;
 };

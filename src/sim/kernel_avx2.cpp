@@ -4,5 +4,7 @@
 #include "sim/wide_avx2.h"
 
 namespace pond::sim {
-StepRowsFn step_rows_avx2(int rsqrt_steps, bool reach) { return step_rows_of<WideAvx2>(rsqrt_steps, reach); }
+StepRowsFn step_rows_avx2(int rsqrt_steps, bool reach, bool tiles) {
+  return step_rows_of<WideAvx2>(rsqrt_steps, reach, tiles);
+}
 }  // namespace pond::sim

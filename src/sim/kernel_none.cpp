@@ -2,6 +2,6 @@
 #include "sim/backends.h"
 
 namespace pond::sim {
-StepRowsFn step_rows_avx2(int, bool) { return nullptr; }
-StepRowsFn step_rows_avx512(int, bool) { return nullptr; }
+StepRowsFn step_rows_avx2(int, bool, bool) { return nullptr; }
+StepRowsFn step_rows_avx512(int, bool, bool) { return nullptr; }
 }  // namespace pond::sim

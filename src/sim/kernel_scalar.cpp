@@ -3,5 +3,7 @@
 #include "sim/wide_scalar.h"
 
 namespace pond::sim {
-StepRowsFn step_rows_scalar(int rsqrt_steps, bool reach) { return step_rows_of<WideScalar>(rsqrt_steps, reach); }
+StepRowsFn step_rows_scalar(int rsqrt_steps, bool reach, bool tiles) {
+  return step_rows_of<WideScalar>(rsqrt_steps, reach, tiles);
+}
 }  // namespace pond::sim

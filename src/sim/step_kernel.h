@@ -31,12 +31,11 @@
 
 #include "shared/exact_math.h"
 #include "sim/backends.h"
+#include "sim/chunks.h"
 #include "sim/isa_namespace.h"
 #include "sim/step_view.h"
+#include "sim/tile_kernel.h"
 #include "sim/wide_scalar.h"
-
-// The kernel's helpers must be inlined into its loops: a call per 8 nodes costs more than the work.
-#define POND_KERNEL_INLINE inline __attribute__((always_inline))
 
 namespace pond::sim {
 inline namespace POND_ISA {
@@ -46,39 +45,6 @@ inline namespace POND_ISA {
 POND_KERNEL_INLINE constexpr int h_row(int h_index) { return 3 * h_index; }
 POND_KERNEL_INLINE constexpr int band_row(int band) { return 6 + 9 * band; }
 inline constexpr int kBandS = 0, kBandD1 = 3, kBandD2 = 6;
-
-// Calls fn.template operator()<V, Shifted>(j) for chunks of V::width columns [j, j + V::width)
-// covering [begin, end): chunks of W while more than W::width columns remain, then one last chunk
-// ending at `end`, which overlaps the one before it where the columns do not divide evenly (it
-// recomputes some columns from the same inputs: the same bits). The last chunk is a chunk of
-// W::Half (half as wide; half the cost where the wide unit is split in two, as on Zen 4) when that
-// covers the rest. Shifted is true for a last chunk that starts before the columns not done yet.
-// A range narrower than W is done with W::Half, or one column at a time with the scalar backend.
-template <class W, class Fn>
-POND_KERNEL_INLINE void for_chunks(int begin, int end, Fn&& fn) {
-  using Half = typename W::Half;
-  if (end - begin >= W::width) {
-    int j = begin;
-    for (; end - j > W::width; j += W::width) fn.template operator()<W, false>(j);
-    if constexpr (Half::width < W::width) {
-      if (end - j <= Half::width) {
-        if (end - j < Half::width)
-          fn.template operator()<Half, true>(end - Half::width);
-        else
-          fn.template operator()<Half, false>(j);
-        return;
-      }
-    }
-    if (end - j < W::width)
-      fn.template operator()<W, true>(end - W::width);
-    else
-      fn.template operator()<W, false>(j);
-  } else if constexpr (Half::width < W::width) {
-    for_chunks<Half>(begin, end, fn);
-  } else {
-    for (int j = begin; j < end; ++j) fn.template operator()<WideScalar, false>(j);
-  }
-}
 
 // Steps: the Newton steps of the reciprocal square root, a compile-time constant so the four
 // springs' iterations unroll and interleave.
@@ -364,14 +330,17 @@ struct RowIntegrate {
 
 // One substep for rows [row_begin, row_end), block by block. Returns the sum of the new velocity
 // components of those rows (non-finite iff some velocity is non-finite or astronomically large).
-// With Reach it also stores in *reach the largest |u'x|, |u'z| of those rows (shared/bodies.h).
+// With Reach it also stores in *reach the largest |u'x|, |u'z| of those rows (shared/bodies.h);
+// with Tiles, it emits their tile bounds to *tiles (tile_kernel.h).
 //
 // The springs run one row ahead of the integration, so the spring rows row i reads were stored a
 // whole row earlier (a load that straddles two stores still in flight, as the j-1 terms do, cannot
 // be forwarded from them and waits).
-template <class W, int Steps, bool Reach>
-float step_rows(const StepView& view, int row_begin, int row_end, float* scratch_base, float* reach) {
+template <class W, int Steps, bool Reach, bool Tiles>
+float step_rows(const StepView& view, int row_begin, int row_end, float* scratch_base, float* reach,
+                TileSink* tiles) {
   RowIntegrate<W, Reach> integrate(view);
+  const TileGrid tile_grid = Tiles ? TileGrid(view.rows, view.cols) : TileGrid();
   for (int block_begin = 0; block_begin < view.cols; block_begin += kBlockCols) {
     const int block_end =
         block_begin + kBlockCols < view.cols ? block_begin + kBlockCols : view.cols;
@@ -399,6 +368,7 @@ float step_rows(const StepView& view, int row_begin, int row_end, float* scratch
       if (i + 1 < row_end)
         block_springs<W, Steps>(view, i + 1, block_begin, block_end, scratch, 1 - h_index, ahead);
       for_chunks<W>(block_begin, block_end, integrate);
+      if constexpr (Tiles) emit_tile_rows<W>(view, tile_grid, i, row_begin, row_end, block_begin, block_end, *tiles);
       const int recycled = below;
       below = above;
       above = ahead;
@@ -410,12 +380,17 @@ float step_rows(const StepView& view, int row_begin, int row_end, float* scratch
   return integrate.sum();
 }
 
-// The kernel of backend W for a number of Newton steps, tracking the reach or not.
+// The kernel of backend W for a number of Newton steps, tracking the reach or not, emitting the
+// tile bounds or not.
+template <class W, int Steps>
+StepRowsFn step_rows_with(bool reach, bool tiles) {
+  if (reach) return tiles ? &step_rows<W, Steps, true, true> : &step_rows<W, Steps, true, false>;
+  return tiles ? &step_rows<W, Steps, false, true> : &step_rows<W, Steps, false, false>;
+}
 template <class W>
-StepRowsFn step_rows_of(int rsqrt_steps, bool reach) {
-  constexpr int kFast = shared::kRsqrtStepsFast, kExact = shared::kRsqrtStepsExact;
-  if (rsqrt_steps == kFast) return reach ? &step_rows<W, kFast, true> : &step_rows<W, kFast, false>;
-  return reach ? &step_rows<W, kExact, true> : &step_rows<W, kExact, false>;
+StepRowsFn step_rows_of(int rsqrt_steps, bool reach, bool tiles) {
+  if (rsqrt_steps == shared::kRsqrtStepsFast) return step_rows_with<W, shared::kRsqrtStepsFast>(reach, tiles);
+  return step_rows_with<W, shared::kRsqrtStepsExact>(reach, tiles);
 }
 
 }  // namespace POND_ISA

@@ -2,6 +2,7 @@
 // The plain data one substep of the CPU kernel works on (see step_kernel.h).
 #include <cstdint>
 
+#include "shared/tile_bounds.h"
 #include "sim/model.h"
 
 namespace pond::sim {
@@ -31,5 +32,22 @@ inline constexpr int kBlockCols = 1024;
 inline constexpr int kSlotAlign = 16;  // floats in 64 bytes
 inline constexpr int kSlots = kBlockCols + 2 * kSlotAlign;  // a multiple of kSlotAlign
 inline constexpr int kSpringRows = 2 * 3 + 3 * 9;
+
+}  // namespace pond::sim
+
+namespace pond::sim {
+
+// Where a kernel puts the tile bounds (shared/tile_bounds.h) of its rows [r0, r1): while it walks
+// a block's rows, the bounds of each column over the tile row's rows so far (six rows of
+// kColumnsPitch floats: least x, y, z, greatest x, y, z); at a tile row's end (or r1 - 1), the
+// tile row from them, tile row b at rows + (b - first_row) * tiles_x (partial where the tile row
+// goes on beyond [r0, r1): the solver merges those).
+// A cache line more than a block, so that the six rows do not all fall in one set of the cache.
+inline constexpr int kColumnsPitch = kBlockCols + kSlotAlign;
+struct TileSink {
+  shared::TileBounds* rows;
+  float* columns;
+  int first_row;  // the first tile row holding a row of [r0, r1)
+};
 
 }  // namespace pond::sim

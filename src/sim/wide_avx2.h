@@ -33,6 +33,18 @@ struct WideAvx2 {
   }
   static F keep(M m, F v) { return _mm256_and_ps(m, v); }
   static F max_abs(F acc, F v) { return _mm256_max_ps(_mm256_andnot_ps(_mm256_set1_ps(-0.0f), v), acc); }
+  static F min_of(F v, F acc) { return _mm256_min_ps(v, acc); }  // v < acc ? v : acc, per lane
+  static F max_of(F v, F acc) { return _mm256_max_ps(v, acc); }  // v > acc ? v : acc
+  static float reduce_min(F v) {
+    __m128 m = _mm_min_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+    m = _mm_min_ps(m, _mm_movehl_ps(m, m));
+    return _mm_cvtss_f32(_mm_min_ss(m, _mm_shuffle_ps(m, m, 1)));
+  }
+  static float reduce_max(F v) {
+    __m128 m = _mm_max_ps(_mm256_castps256_ps128(v), _mm256_extractf128_ps(v, 1));
+    m = _mm_max_ps(m, _mm_movehl_ps(m, m));
+    return _mm_cvtss_f32(_mm_max_ss(m, _mm_shuffle_ps(m, m, 1)));
+  }
   static float sum_lanes(F v) {
     alignas(32) float l[8];
     _mm256_store_ps(l, v);

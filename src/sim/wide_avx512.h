@@ -41,6 +41,16 @@ struct WideAvx512 {
     const __m512 a = _mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(v), _mm512_set1_epi32(INT32_MAX)));
     return _mm512_maskz_max_ps(0xffff, a, acc);  // the masked form: see rsqrt_seed
   }
+  // v < acc ? v : acc per lane (v > acc ? v : acc); the masked forms: see rsqrt_seed.
+  static F min_of(F v, F acc) { return _mm512_maskz_min_ps(0xffff, v, acc); }
+  static F max_of(F v, F acc) { return _mm512_maskz_max_ps(0xffff, v, acc); }
+  // The half `h` (0 low, 1 high) by the masked extract (see rsqrt_seed); reductions halve, then AVX2's.
+  template <int h>
+  static __m256 half(F v) {
+    return _mm256_castpd_ps(_mm512_maskz_extractf64x4_pd(0xf, _mm512_castps_pd(v), h));
+  }
+  static float reduce_min(F v) { return WideAvx2::reduce_min(_mm256_min_ps(half<0>(v), half<1>(v))); }
+  static float reduce_max(F v) { return WideAvx2::reduce_max(_mm256_max_ps(half<0>(v), half<1>(v))); }
   static float sum_lanes(F v) {
     alignas(64) float l[16];
     _mm512_store_ps(l, v);

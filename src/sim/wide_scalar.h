@@ -39,6 +39,13 @@ struct WideScalar {
     const F a = std::bit_cast<float>(std::bit_cast<std::uint32_t>(v) & 0x7fffffffu);
     return a > acc ? a : acc;
   }
+  // v where it is below (above) acc, else acc: with acc never NaN, NaN values are skipped
+  // (shared/tile_bounds.h; the SIMD tables' minps(v, acc) and maxps(v, acc)).
+  static F min_of(F v, F acc) { return v < acc ? v : acc; }
+  static F max_of(F v, F acc) { return v > acc ? v : acc; }
+  // The least (greatest) lane of v, v free of NaN: its value is the same in any order.
+  static float reduce_min(F v) { return v; }
+  static float reduce_max(F v) { return v; }
   static float sum_lanes(F v) { return v; }
 };
 

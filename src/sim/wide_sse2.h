@@ -36,6 +36,16 @@ struct WideSse2 {
   }
   static F keep(M m, F v) { return _mm_and_ps(m, v); }
   static F max_abs(F acc, F v) { return _mm_max_ps(_mm_andnot_ps(_mm_set1_ps(-0.0f), v), acc); }
+  static F min_of(F v, F acc) { return _mm_min_ps(v, acc); }  // v < acc ? v : acc, per lane
+  static F max_of(F v, F acc) { return _mm_max_ps(v, acc); }  // v > acc ? v : acc
+  static float reduce_min(F v) {
+    v = _mm_min_ps(v, _mm_movehl_ps(v, v));
+    return _mm_cvtss_f32(_mm_min_ss(v, _mm_shuffle_ps(v, v, 1)));
+  }
+  static float reduce_max(F v) {
+    v = _mm_max_ps(v, _mm_movehl_ps(v, v));
+    return _mm_cvtss_f32(_mm_max_ss(v, _mm_shuffle_ps(v, v, 1)));
+  }
   static float sum_lanes(F v) {
     alignas(16) float l[4];
     _mm_store_ps(l, v);

@@ -20,8 +20,6 @@ namespace {
 
 using scene::Scene;
 using sim::Backend;
-using sim::BodyMotion;
-using sim::BodySpec;
 using sim::CpuSolver;
 using sim::NodeKind;
 using sim::PathKey;
@@ -29,14 +27,6 @@ using sim::WaterModel;
 using sim::WaterState;
 
 using test::ball;
-
-BodySpec dragged(double radius, std::vector<PathKey> path) {
-  BodySpec b;
-  b.motion = BodyMotion::kinematic;
-  b.radius = radius;
-  b.path = std::move(path);
-  return b;
-}
 
 // A mixed scene: a kinematic sphere crossing the pool, a ball dropped in, a ball on the water, two
 // balls that collide, an island and a splash.
@@ -46,7 +36,7 @@ Scene mixed_scene(int rows, int cols, int substeps) {
   s.constraints.push_back({NodeKind::fixed, rows / 2 + 4, rows / 2 + 7, cols / 2, cols / 2 + 5});
   s.perturbations.push_back(test::splash(rows / 3.0, cols / 3.0, 2, 1, 5));
   const double z = rows / 2.0;
-  s.bodies.push_back(dragged(3.0, {PathKey{0, {6.0, 0.5, z}}, PathKey{120, {cols - 7.0, 0.5, z}},
+  s.bodies.push_back(test::kinematic(3.0, {PathKey{0, {6.0, 0.5, z}}, PathKey{120, {cols - 7.0, 0.5, z}},
                                    PathKey{160, {cols - 7.0, -1.0, z - 8}}}));
   s.bodies.push_back(ball({cols / 4.0, 3.0, rows / 4.0}, 2.0, 0.9, {0.0, -0.3, 0.0}));
   s.bodies.push_back(ball({0.7 * cols, 2.0, 0.75 * rows}, 2.5, 0.3, {0.05, 0.0, -0.02}));
@@ -150,7 +140,7 @@ TEST(Bodies, ANodePulledFarSidewaysIsStillPushedOut) {
 
 TEST(Bodies, ADraggedSphereLeavesAWakeBehindAndNotAhead) {
   Scene s = test::grid_scene(33, 161);
-  s.bodies.push_back(dragged(3.0, {PathKey{0, {10.0, 0.5, 16.0}}, PathKey{200, {150.0, 0.5, 16.0}}}));
+  s.bodies.push_back(test::kinematic(3.0, {PathKey{0, {10.0, 0.5, 16.0}}, PathKey{200, {150.0, 0.5, 16.0}}}));
   const WaterModel m = sim::build_model(s);
   CpuSolver solver(m, Backend::scalar, 1);
   solver.advance(100);  // the sphere is at x = 80

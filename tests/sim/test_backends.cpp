@@ -202,7 +202,7 @@ std::string forcing_error(Backend b) {
 // A backend this CPU lacks, on any CPU: AVX2 masked out (and AVX-512F with it, as on a real CPU
 // without AVX2). Forcing it is an InputError naming it; auto falls back to SSE; SSE still runs.
 TEST(Backends, ForcingAMaskedOutBackendFailsClearly) {
-  const bool in_build = step_rows_avx2(shared::kRsqrtStepsExact, false) != nullptr;  // not in IA-32 builds
+  const bool in_build = step_rows_avx2(shared::kRsqrtStepsExact, false, false) != nullptr;  // not in IA-32 builds
   const CpuFeaturesMask mask("avx2");
   EXPECT_FALSE(cpu_supports(Backend::avx2));
   EXPECT_FALSE(cpu_supports(Backend::avx512));

@@ -61,6 +61,15 @@ inline sim::BodySpec ball(std::array<double, 3> position, double radius, double 
   return b;
 }
 
+// A kinematic sphere of `radius` moved along `path` (world units).
+inline sim::BodySpec kinematic(double radius, std::vector<sim::PathKey> path) {
+  sim::BodySpec b;
+  b.motion = sim::BodyMotion::kinematic;
+  b.radius = radius;
+  b.path = std::move(path);
+  return b;
+}
+
 inline std::size_t node(const scene::Scene& s, int i, int j) {
   return static_cast<std::size_t>(i) * s.grid.cols + j;
 }
