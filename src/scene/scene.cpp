@@ -260,11 +260,12 @@ std::optional<Problem> physics_problem(const Physics& p) {
   const double bound = sim::stability_bound(p.mass, p.stiffness, p.damping);
   const double sub_dt = p.dt / p.substeps;
   if (!(sub_dt < bound)) {
-    const int needed = static_cast<int>(std::floor(p.dt / bound)) + 1;
+    // In double: a tiny bound (a huge damping) needs more substeps than an int holds.
+    const double needed = std::floor(p.dt / bound) + 1.0;
     char msg[256];
     std::snprintf(msg, sizeof msg,
                   "%g%s exceeds the explicit-Euler stability bound %.6g for mass %g, "
-                  "stiffness %g, damping %g; use dt < %.6g or physics.substeps >= %d",
+                  "stiffness %g, damping %g; use dt < %.6g or physics.substeps >= %.15g",
                   p.dt, p.substeps > 1 ? (" / " + std::to_string(p.substeps) + " substeps").c_str() : "",
                   bound, p.mass, p.stiffness, p.damping, bound, needed);
     return Problem{"dt", msg};
