@@ -37,11 +37,7 @@ std::optional<PixelRect> submerged_pixels(const ShadowCaster& box, const std::ar
     const double px = (cx / cw * 0.5 + 0.5) * width, py = (cy / cw * 0.5 + 0.5) * height;
     x0 = std::min(x0, px), x1 = std::max(x1, px), y0 = std::min(y0, py), y1 = std::max(y1, py);
   }
-  auto pixel = [](double v, int size) { return static_cast<int>(std::clamp(v, 0.0, static_cast<double>(size))); };
-  const PixelRect rect{pixel(std::floor(x0) - 2.0, width), pixel(std::floor(y0) - 2.0, height),
-                       pixel(std::ceil(x1) + 2.0, width), pixel(std::ceil(y1) + 2.0, height)};
-  if (rect.x0 >= rect.x1 || rect.y0 >= rect.y1) return std::nullopt;
-  return rect;
+  return padded_pixels(x0, y0, x1, y1, width, height);
 }
 
 FramePlan plan_frame(const PlanInput& in) {

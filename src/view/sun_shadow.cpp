@@ -112,13 +112,7 @@ std::optional<PixelRect> shadow_pixels(const SunShadowView& view, const ShadowCa
     }
   }
   if (!(x0 <= x1)) return std::nullopt;  // the whole box below the receivers
-  // Two pixels of margin (the filter's reach, rounding); clamped to the view.
-  // (Clamped as doubles: a point just in front of the eye can land far outside any int.)
-  auto pixel = [](double v, int size) { return static_cast<int>(std::clamp(v, 0.0, static_cast<double>(size))); };
-  PixelRect rect{pixel(std::floor(x0) - 2.0, width), pixel(std::floor(y0) - 2.0, height), pixel(std::ceil(x1) + 2.0, width),
-                 pixel(std::ceil(y1) + 2.0, height)};
-  if (rect.x0 >= rect.x1 || rect.y0 >= rect.y1) return std::nullopt;
-  return rect;
+  return padded_pixels(x0, y0, x1, y1, width, height);
 }
 
 std::vector<PixelRect> merge_overlapping(std::vector<PixelRect> rects) {
