@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,13 @@ using pond::lod_test::CheckCamera;
 struct Pond {
   int side;
   std::vector<float> state;
+  pond::lod::NodePositions positions() const { return pond::lod::interleaved_positions(state.data(), side, side); }
+  // The tile ranges a running pond gets from its solver's step (timed apart: BM_TileRangesFromState).
+  const pond::lod::TileRanges& ranges() const {
+    if (!ranges_) ranges_ = pond::lod::tile_ranges(positions());
+    return *ranges_;
+  }
+  mutable std::optional<pond::lod::TileRanges> ranges_;
 };
 
 const Pond& drops_everywhere(int side, double amplitude) {
@@ -59,7 +67,7 @@ std::vector<std::uint32_t> build(const Pond& p, const CheckCamera& c, double tau
                                  pond::lod::BuildStats* stats = nullptr) {
   pond::lod::LodBuilder b(p.side, p.side);
   std::vector<std::uint32_t> out(b.max_indices());
-  out.resize(b.build(pond::lod::interleaved_positions(p.state.data(), p.side, p.side), lod_camera(c), tau, out));
+  out.resize(b.build(p.positions(), p.ranges(), lod_camera(c), tau, out));
   if (stats) *stats = b.stats();
   return out;
 }
@@ -75,19 +83,29 @@ void BM_BuildRain(benchmark::State& st) {
   const Pond& p = rain(side);
   pond::lod::LodBuilder b(side, side);
   std::vector<std::uint32_t> out(b.max_indices());
-  const auto view_positions = pond::lod::interleaved_positions(p.state.data(), side, side);
+  const auto view_positions = p.positions();
+  const pond::lod::TileRanges& ranges = p.ranges();
   std::size_t n = 0;
   for (auto _ : st) {
-    n = b.build(view_positions, lod_camera(view(side)), 1.0, out);
+    n = b.build(view_positions, ranges, lod_camera(view(side)), 1.0, out);
     benchmark::DoNotOptimize(out.data());
   }
   report_counts(st, n / 3, side);
   st.counters["tested_tris"] = static_cast<double>(b.stats().tested);
+  st.counters["ranged_tris"] = static_cast<double>(b.stats().ranged);
+  st.counters["blocks"] = static_cast<double>(b.stats().blocks);
   st.counters["scanned_tris"] = static_cast<double>(b.stats().scanned);
   st.counters["proved_tris"] = static_cast<double>(b.stats().proved);
   st.counters["scan_nodes"] = static_cast<double>(b.stats().scanned_nodes);
 }
 BENCHMARK(BM_BuildRain)->Arg(50)->Arg(257)->Arg(1025)->Arg(2049)->Arg(4097)->Unit(benchmark::kMillisecond);
+
+// What `pond lod` spends before building from a file's state: its tile ranges, node by node.
+void BM_TileRangesFromState(benchmark::State& st) {
+  const Pond& p = rain(static_cast<int>(st.range(0)));
+  for (auto _ : st) benchmark::DoNotOptimize(pond::lod::tile_ranges(p.positions()).largest());
+}
+BENCHMARK(BM_TileRangesFromState)->Arg(257)->Arg(1025)->Arg(4097)->Unit(benchmark::kMillisecond);
 
 void BM_BuildSplashes(benchmark::State& st) {
   const int side = static_cast<int>(st.range(0));
@@ -96,7 +114,7 @@ void BM_BuildSplashes(benchmark::State& st) {
   std::vector<std::uint32_t> out(b.max_indices());
   std::size_t n = 0;
   for (auto _ : st) {
-    n = b.build(pond::lod::interleaved_positions(p.state.data(), side, side), lod_camera(view(side)), 1.0, out);
+    n = b.build(p.positions(), p.ranges(), lod_camera(view(side)), 1.0, out);
     benchmark::DoNotOptimize(out.data());
   }
   report_counts(st, n / 3, side);
@@ -110,7 +128,7 @@ void BM_BuildStorm(benchmark::State& st) {
   std::vector<std::uint32_t> out(b.max_indices());
   std::size_t n = 0;
   for (auto _ : st) {
-    n = b.build(pond::lod::interleaved_positions(p.state.data(), side, side), lod_camera(view(side)), 1.0, out);
+    n = b.build(p.positions(), p.ranges(), lod_camera(view(side)), 1.0, out);
     benchmark::DoNotOptimize(out.data());
   }
   report_counts(st, n / 3, side);

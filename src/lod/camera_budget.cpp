@@ -60,6 +60,35 @@ ViewBasis view_basis(const Camera& c) {
   return b;
 }
 
+BoxBudget::BoxBudget(const Camera& c, double tolerance_px, float largest) : basis_(view_basis(c)) {
+  const double eye_max = std::max({std::abs(c.eye[0]), std::abs(c.eye[1]), std::abs(c.eye[2])});
+  delta_ = 32 * std::max(double(largest), eye_max) * std::numeric_limits<float>::epsilon();
+  per_depth_ = tolerance_px / basis_.pixels_per_radian * kBudgetShrink;
+  tx_ = basis_.tan_x * (1 + kFrustumSlack), ty_ = basis_.tan_y * (1 + kFrustumSlack);
+}
+
+double BoxBudget::least(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
+  // Depth and screen offsets are linear, so their extremes over the box are at its corners. The box
+  // is outside when every corner is outside one plane (depth > 0, |sx| <= tx depth, |sy| <= ty depth)
+  // by a margin far above the double rounding here and the float rounding of node_budgets.
+  double least_depth = std::numeric_limits<double>::infinity();
+  bool in[5] = {false, false, false, false, false};
+  const double margin = 4 * delta_ * (1 + tx_ + ty_);
+  for (int k = 0; k < 8; ++k) {
+    const Vec corner{k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]};
+    const Vec d = sub(corner, basis_.eye);
+    const double depth = dot(d, basis_.forward), sx = dot(d, basis_.right), sy = dot(d, basis_.up);
+    least_depth = std::min(least_depth, depth);
+    in[0] |= depth > -margin;
+    in[1] |= tx_ * depth - sx > -margin, in[2] |= tx_ * depth + sx > -margin;
+    in[3] |= ty_ * depth - sy > -margin, in[4] |= ty_ * depth + sy > -margin;
+  }
+  // Looking along +-y the roll is free (view_basis): only the depth plane culls.
+  const bool outside = !in[0] || (!basis_.cone && (!in[1] || !in[2] || !in[3] || !in[4]));
+  if (outside) return std::numeric_limits<double>::infinity();
+  return per_depth_ * std::max(least_depth - delta_, 0.0);
+}
+
 void node_budgets(const NodePositions& p, const Camera& c, double tolerance_px, float largest,
                   float* budget) {
   const ViewBasis b = view_basis(c);

@@ -33,6 +33,19 @@ struct ViewBasis {
 };
 ViewBasis view_basis(const Camera& camera);
 
+// The least budget of any node in a world box: +infinity when the box lies wholly outside the
+// frustum (widened as the node budgets' is), else tau * (its least depth) / K, lowered by `delta`
+// (as node_budgets: `largest` bounds every |coordinate|), never below 0. In double.
+class BoxBudget {
+ public:
+  BoxBudget(const Camera& camera, double tolerance_px, float largest);
+  double least(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const;
+
+ private:
+  ViewBasis basis_;
+  double per_depth_, delta_, tx_, ty_;
+};
+
 // Writes budget[n] (world units) for every node of `positions` (stride 1). Computed in float
 // (vectorized) and kept conservative: `largest` must bound every |coordinate| of the positions;
 // depth and screen offsets are then known within delta = 32 eps max(largest, |eye|), so the

@@ -29,8 +29,9 @@ struct NestedBound {
 
 constexpr NestedBound kNothingProved{std::numeric_limits<float>::infinity(), 0.0f};
 
-// `largest` bounds every |coordinate| (it sizes the float rounding slack).
+// `largest` bounds every |coordinate| (it sizes the float rounding slack). `grid` may be a block
+// of a larger grid (surface_blocks.h) whose first node is `origin` there.
 void nested_bounds(const GridHierarchy& grid, const NodePositions& positions, float largest,
-                   const float* budget, NestedBound* bounds);
+                   const float* budget, NestedBound* bounds, Point origin = {});
 
 }  // namespace pond::lod

@@ -8,6 +8,8 @@
 #include "core/errors.h"
 #include "lod/error_bounds.h"
 #include "lod/position_copy.h"
+#include "lod/range_proof.h"
+#include "lod/surface_blocks.h"
 #include "lod/triangle_scan.h"
 
 namespace pond::lod {
@@ -25,21 +27,51 @@ int side_of(const Tri& t, Point m) {
 
 }  // namespace
 
-LodBuilder::LodBuilder(int rows, int cols) : grid_(rows, cols) {
+LodBuilder::LodBuilder(int rows, int cols) : grid_(rows, cols), blocks_(rows, cols) {
   const std::size_t n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
-  // The row scan reads a few floats past the last node (triangle_scan.h).
-  x_.resize(n + kScanOverread), y_.resize(n + kScanOverread), z_.resize(n + kScanOverread);
-  budget_.resize(n + kScanOverread), bounds_.assign(n, kNothingProved);
-  state_.resize(grid_.domain_nodes());
+  x_.resize(n), y_.resize(n), z_.resize(n);
+  state_.assign(grid_.domain_nodes(), 0);
+  for (std::uint32_t id : grid_.always_split_ids()) state_[id] = kActive;
 }
 
 std::size_t LodBuilder::max_indices() const {
   return 6 * static_cast<std::size_t>(rows() - 1) * static_cast<std::size_t>(cols() - 1);
 }
 
-bool LodBuilder::leaf_is_fine(const Tri& t, std::uint32_t mid) {
+// Is t, a triangle of the hierarchy whose midpoint m is not active, fine as a leaf? In order: the
+// tile ranges, then (for a triangle within a block) its block's nodes.
+bool LodBuilder::leaf_fits(const Tri& t, Point m) {
+  const int x0 = std::min({t.apex.x, t.left.x, t.right.x}), x1 = std::max({t.apex.x, t.left.x, t.right.x});
+  const int y0 = std::min({t.apex.y, t.left.y, t.right.y}), y1 = std::max({t.apex.y, t.left.y, t.right.y});
+  const bool inside = grid_.within_grid(t);
+  if (!inside && clip_to_grid(t, rows(), cols()).count < 3) return true;  // wholly outside the grid
   ++stats_.tested;
-  if (bounds_[mid].error <= bounds_[mid].min_budget) {
+  const bool small = x1 - x0 <= kBlockCells && y1 - y0 <= kBlockCells;
+  const int bx = x0 / kBlockCells, by = y0 / kBlockCells;
+  // A small triangle whose block is made is judged on its nodes at once: sharper than the ranges.
+  if (!(small && blocks_.made(bx, by))) {
+    GridPolygon corners;
+    if (inside) corners.count = 3, corners.corner[0] = t.apex, corners.corner[1] = t.left, corners.corner[2] = t.right;
+    else corners = clip_to_grid(t, rows(), cols());
+    if (RangeProof(*ranges_, *box_budget_, positions_).proves(x0, std::min(x1, cols() - 1), y0,
+                                                               std::min(y1, rows() - 1), corners)) {
+      ++stats_.ranged;
+      return true;
+    }
+    if (!small) return false;
+  }
+  const SurfaceBlock& b = blocks_.block(bx, by);
+  const Tri local = b.local(t);
+  if (inside) return leaf_is_fine(b, local, {m.x - b.origin.x, m.y - b.origin.y});
+  return clipped_leaf_is_fine(b, clip_to_grid(local, b.grid->rows(), b.grid->cols()));
+}
+
+bool LodBuilder::leaf_is_fine(const SurfaceBlock& blk, const Tri& t, Point mid_point) {
+  const GridHierarchy& grid = *blk.grid;
+  const float *px = blk.x.data(), *py = blk.y.data(), *pz = blk.z.data(), *budget = blk.budget.data();
+  const NestedBound* bounds = blk.bounds.data();
+  const std::uint32_t mid = grid.id(mid_point);
+  if (bounds[mid].error <= bounds[mid].min_budget) {
     ++stats_.proved;
     return true;
   }
@@ -49,15 +81,15 @@ bool LodBuilder::leaf_is_fine(const Tri& t, std::uint32_t mid) {
   const auto squared_deviation = [&](Point e0, Point e1) {
     const int sx = e0.x + e1.x, sy = e0.y + e1.y;
     if ((sx | sy) & 1) return -1.0;  // a cell diagonal: no node halfway
-    const std::uint32_t v = grid_.id({sx / 2, sy / 2}), a = grid_.id(e0), b = grid_.id(e1);
-    const double dx = x_[v] - 0.5 * (double(x_[a]) + x_[b]);
-    const double dy = y_[v] - 0.5 * (double(y_[a]) + y_[b]);
-    const double dz = z_[v] - 0.5 * (double(z_[a]) + z_[b]);
+    const std::uint32_t v = grid.id({sx / 2, sy / 2}), a = grid.id(e0), b = grid.id(e1);
+    const double dx = px[v] - 0.5 * (double(px[a]) + px[b]);
+    const double dy = py[v] - 0.5 * (double(py[a]) + py[b]);
+    const double dz = pz[v] - 0.5 * (double(pz[a]) + pz[b]);
     return dx * dx + dy * dy + dz * dz;
   };
   const auto over = [&](double d2, Point e0, Point e1) {
     if (d2 < 0) return false;
-    const double b = budget_[grid_.id({(e0.x + e1.x) / 2, (e0.y + e1.y) / 2})];
+    const double b = budget[grid.id({(e0.x + e1.x) / 2, (e0.y + e1.y) / 2})];
     return d2 > b * b;
   };
   const double mid2 = squared_deviation(t.left, t.right);
@@ -81,7 +113,7 @@ bool LodBuilder::leaf_is_fine(const Tri& t, std::uint32_t mid) {
     return std::sqrt(d2) * (1 + 1e-12) + 1e-12 * double(largest_);
   };
   const auto proved_by = [&](Point v, double deviations) {
-    const NestedBound& b = bounds_[grid_.id(v)];
+    const NestedBound& b = bounds[grid.id(v)];
     return (deviations + b.error) * (1 + 1e-12) <= b.min_budget;
   };
   const double dev_m = deviation_up(mid2);
@@ -110,18 +142,22 @@ bool LodBuilder::leaf_is_fine(const Tri& t, std::uint32_t mid) {
     return true;
   }
   ++stats_.scanned;
-  const NodePositions own = soa_positions(x_.data(), y_.data(), z_.data(), rows(), cols());
+  const NodePositions own = blk.positions();
   for (int k = 0; k < parts; ++k)
-    if (!within_budget(grid_, own, budget_.data(), largest_, t, unproved[k], &stats_.scanned_nodes))
+    if (!within_budget(grid, own, budget, largest_, t, unproved[k], &stats_.scanned_nodes))
       return false;
   return true;
 }
 
-bool LodBuilder::clipped_leaf_is_fine(const GridPolygon& polygon) {
-  ++stats_.tested;
+bool LodBuilder::clipped_leaf_is_fine(const SurfaceBlock& b, const GridPolygon& polygon) {
   ++stats_.scanned;
-  return fan_within_budget(polygon, soa_positions(x_.data(), y_.data(), z_.data(), rows(), cols()),
-                           budget_.data(), &stats_.scanned_nodes);
+  return fan_within_budget(polygon, b.positions(), b.budget.data(), &stats_.scanned_nodes);
+}
+
+// Sets bits of v's state, remembering v so that the next build clears it.
+void LodBuilder::mark(std::uint8_t& s, std::uint8_t bits, Point v) {
+  if (s == 0) marked_.push_back(grid_.domain_id(v));
+  s |= bits;
 }
 
 // Activates v and, first, its parents (the dependency closure that keeps the mesh conforming),
@@ -129,7 +165,7 @@ bool LodBuilder::clipped_leaf_is_fine(const GridPolygon& polygon) {
 void LodBuilder::activate(Point v) {
   std::uint8_t& s = state_[grid_.domain_id(v)];
   if (s & kActive) return;
-  s |= kActive;
+  mark(s, kActive, v);
   const Diamond d = GridHierarchy::diamond(v);
   for (Point p : d.parents)
     if (grid_.in_domain(p)) activate(p);
@@ -140,27 +176,33 @@ void LodBuilder::activate(Point v) {
 std::size_t LodBuilder::build(const NodePositions& p, const Camera& camera, double tolerance_px,
                               std::span<std::uint32_t> out) {
   validate(camera, tolerance_px);
+  if (p.rows != rows() || p.cols != cols()) return build(p, TileRanges(), camera, tolerance_px, out);  // throws
+  return build(p, tile_ranges(p), camera, tolerance_px, out);
+}
+
+std::size_t LodBuilder::build(const NodePositions& p, const TileRanges& ranges, const Camera& camera,
+                              double tolerance_px, std::span<std::uint32_t> out) {
+  validate(camera, tolerance_px);
   if (p.rows != rows() || p.cols != cols())
     throw InternalError("positions are " + std::to_string(p.rows) + " x " + std::to_string(p.cols) +
                      " but the LOD builder was made for " + std::to_string(rows()) + " x " +
                      std::to_string(cols()));
+  if (ranges.rows() != rows() || ranges.cols() != cols())
+    throw InternalError("tile ranges are of a " + std::to_string(ranges.rows()) + " x " +
+                        std::to_string(ranges.cols()) + " grid, the LOD builder's is " + std::to_string(rows()) +
+                        " x " + std::to_string(cols()));
   if (out.size() < max_indices())
     throw InternalError("LOD index array holds " + std::to_string(out.size()) +
                             " indices, needs " + std::to_string(max_indices()));
   stats_ = {};
-  const std::size_t n = p.nodes();
-  const float largest = copy_positions(p, x_.data(), y_.data(), z_.data());
-  largest_ = largest;
-  if (!std::isfinite(largest))
-    for (std::size_t k = 0; k < n; ++k)
-      if (!std::isfinite(x_[k]) || !std::isfinite(y_[k]) || !std::isfinite(z_[k]))
-        throw InputError("node " + std::to_string(k) + " (row " + std::to_string(k / cols()) +
-                         ", col " + std::to_string(k % cols()) + ") has a non-finite position");
-  const NodePositions own = soa_positions(x_.data(), y_.data(), z_.data(), rows(), cols());
-  node_budgets(own, camera, tolerance_px, largest, budget_.data());
-  nested_bounds(grid_, own, largest, budget_.data(), bounds_.data());
+  ranges_ = &ranges;
+  positions_ = p;
+  largest_ = ranges.largest();
+  box_budget_.emplace(camera, tolerance_px, largest_);
+  blocks_.begin(p, camera, tolerance_px, largest_);
 
-  std::fill(state_.begin(), state_.end(), std::uint8_t{0});
+  for (std::uint32_t id : marked_) state_[id] = 0;
+  marked_.clear();
   for (std::uint32_t id : grid_.always_split_ids()) state_[id] = kActive;
   work_.assign(grid_.roots().begin(), grid_.roots().end());
   while (!work_.empty()) {
@@ -170,17 +212,12 @@ std::size_t LodBuilder::build(const NodePositions& p, const Camera& camera, doub
     if (!midpoint(t, m)) continue;  // a half cell: no node inside
     std::uint8_t& s = state_[grid_.domain_id(m)];
     if (!(s & kActive)) {
-      if (grid_.within_grid(t)) {
-        if (leaf_is_fine(t, grid_.id(m))) continue;
-      } else {
-        const GridPolygon polygon = clip_to_grid(t, rows(), cols());
-        if (polygon.count < 3 || clipped_leaf_is_fine(polygon)) continue;  // outside, or fine
-      }
+      if (leaf_fits(t, m)) continue;
       activate(m);  // queues t again (expanded below, so that copy is skipped) and its neighbour
     }
     const std::uint8_t bit = kExpanded[side_of(t, m)];
     if (s & bit) continue;
-    s |= bit;
+    mark(s, bit, m);
     work_.push_back(child_left(t, m));
     work_.push_back(child_right(t, m));
   }
@@ -189,6 +226,8 @@ std::size_t LodBuilder::build(const NodePositions& p, const Camera& camera, doub
   for (const Tri& root : grid_.roots()) emit(root, true, cursor);
   const std::size_t written = static_cast<std::size_t>(cursor - out.data());
   stats_.triangles = written / 3;
+  stats_.blocks = blocks_.made();
+  copy_nodes(p, out.first(written), x_.data(), y_.data(), z_.data());
   return written;
 }
 

@@ -1,21 +1,26 @@
 #pragma once
 // The view-dependent LOD builder: (node positions, camera, tau pixels) -> triangle indices into a
-// caller's array (the renderer passes its mapped index buffer).
+// caller's array (the renderer passes its mapped index buffer). Its cost follows what it draws,
+// not the grid's size.
 //
-// The mesh is a conforming longest-edge-bisection mesh (see grid_hierarchy.h). Each frame:
-//  1. every node gets a budget: tau * depth / K inside the frustum, +infinity outside;
-//  2. nested error bounds are computed bottom-up (error_bounds.h), O(nodes);
-//  3. refinement from the roots: a triangle stays a leaf when its nested bound proves every node
-//     in it is within budget, or, failing that, when an exact scan of its nodes shows it; else its
-//     midpoint is activated together with its ancestors in the dependency DAG (so the mesh stays
-//     conforming), and every triangle created that way is tested in turn, forced ones included;
-//     Triangles reaching past the grid (sizes other than 2^k + 1) are tested and drawn as their
-//     clipped fans, exactly (triangle_scan.h), and dropped when wholly outside;
+// The mesh is a conforming longest-edge-bisection mesh (see grid_hierarchy.h). Each frame,
+// refinement descends from the roots:
+//  1. a triangle stays a leaf when the tile ranges under it (tile_ranges.h) bound its nodes'
+//     distance from its interpolation within the least budget of its world box (camera_budget.h:
+//     tau * depth / K in the frustum, +infinity for a box wholly outside it): no node is read;
+//  2. failing that, a triangle of at most a block (surface_blocks.h) is judged on its block's
+//     nodes, made on first use: its nested bound (error_bounds.h), then proofs by parts, then
+//     an exact scan of the parts left (triangle_scan.h);
+//  3. else its midpoint is activated together with its ancestors in the dependency DAG (so the
+//     mesh stays conforming), and every triangle created that way is tested in turn, forced ones
+//     included. Triangles reaching past the grid (sizes other than 2^k + 1) are tested and drawn
+//     as their clipped fans, exactly, and dropped when wholly outside;
 //  4. the leaves are written depth first, which walks a Sierpinski curve (vertex-cache friendly).
-// Every leaf passed the test, and every left-out node lies in leaves only (no T-junctions), so
+// Every leaf passed a test, and every left-out node lies in leaves only (no T-junctions), so
 // every left-out node in the frustum is within tau pixels: a strict bound, not a heuristic.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -23,12 +28,16 @@
 #include "lod/error_bounds.h"
 #include "lod/grid_hierarchy.h"
 #include "lod/node_positions.h"
+#include "lod/surface_blocks.h"
+#include "lod/tile_ranges.h"
 
 namespace pond::lod {
 
 struct BuildStats {
   std::size_t triangles = 0;
   std::size_t tested = 0;        // candidate leaves tested
+  std::size_t ranged = 0;        // accepted by the tile ranges (no node read)
+  std::size_t blocks = 0;        // blocks of nodes read (surface_blocks.h)
   std::size_t proved = 0;        // accepted by the nested bound alone
   std::size_t scanned = 0;       // needed an exact scan
   long long scanned_nodes = 0;   // nodes visited by exact scans
@@ -45,30 +54,41 @@ class LodBuilder {
   std::size_t full_triangles() const { return max_indices() / 3; }
 
   // Writes the triangles (3 indices each, node index = row * cols + col) to `out` and returns the
-  // number of indices written. Throws InputError on a bad camera or tolerance or a non-finite position, and
-  // InternalError for positions of another grid or an `out` shorter than max_indices().
+  // number of indices written. `ranges` are those of `positions` (a solver's tile bounds, or
+  // tile_ranges(positions)). Throws InputError on a bad camera or tolerance or a non-finite
+  // position it reads, and InternalError for positions or ranges of another grid or an `out`
+  // shorter than max_indices().
+  std::size_t build(const NodePositions& positions, const TileRanges& ranges, const Camera& camera,
+                    double tolerance_px, std::span<std::uint32_t> out);
+  // The same, computing the ranges from the positions first (O(nodes)).
   std::size_t build(const NodePositions& positions, const Camera& camera, double tolerance_px,
                     std::span<std::uint32_t> out);
 
   const BuildStats& stats() const { return stats_; }
-  // The world positions the last build() read, by node index (row * cols + col).
+  // The world positions of the vertices of the last build()'s triangles, by node index
+  // (row * cols + col); other entries are stale.
   std::span<const float> world_x() const { return x_; }
   std::span<const float> world_y() const { return y_; }
   std::span<const float> world_z() const { return z_; }
   const GridHierarchy& grid() const { return grid_; }
 
  private:
-  bool leaf_is_fine(const Tri& t, std::uint32_t mid);
-  bool clipped_leaf_is_fine(const GridPolygon& polygon);
+  bool leaf_fits(const Tri& t, Point m);
+  bool leaf_is_fine(const SurfaceBlock& b, const Tri& t, Point m);
+  bool clipped_leaf_is_fine(const SurfaceBlock& b, const GridPolygon& polygon);
   void activate(Point v);
+  void mark(std::uint8_t& s, std::uint8_t bits, Point v);
   void emit(const Tri& t, bool enter_left, std::uint32_t*& out) const;
 
   GridHierarchy grid_;
-  std::vector<float> x_, y_, z_;  // this frame's positions, structure of arrays
-  float largest_ = 0;  // this frame's largest |coordinate|
-  std::vector<float> budget_;
-  std::vector<NestedBound> bounds_;
+  SurfaceBlocks blocks_;
+  const TileRanges* ranges_ = nullptr;  // this frame's
+  NodePositions positions_;             // this frame's
+  std::optional<BoxBudget> box_budget_;  // this frame's
+  float largest_ = 0;  // this frame's bound on every |coordinate|
+  std::vector<float> x_, y_, z_;  // the drawn vertices' world positions
   std::vector<std::uint8_t> state_;  // per domain node: kActive | kExpanded* bits
+  std::vector<std::uint32_t> marked_;  // the domain ids whose state this frame set
   std::vector<Tri> work_;
   BuildStats stats_;
 };

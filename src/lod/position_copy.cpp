@@ -30,20 +30,23 @@ std::uint32_t largest_of(__m128i largest4) {
 // Displacements in grid units -> world: x = (col + ux) * h, y = uy * h, z = (row + uz) * h, row by
 // row (no division per node), four columns at a time. SSE2 adds and multiplies round like the
 // scalar ones, so every node gets the same bits as the scalar tail.
-float copy_displacements(const NodePositions& p, float* x, float* y, float* z) {
-  const std::size_t cols = static_cast<std::size_t>(p.cols), stride = p.stride, pitch = p.row_pitch;
+float copy_displacements(const NodePositions& p, int row0, int col0, int rows, int window_cols, float* x, float* y,
+                         float* z) {
+  const std::size_t cols = static_cast<std::size_t>(window_cols), stride = p.stride, pitch = p.row_pitch;
+  const std::size_t first = static_cast<std::size_t>(row0) * pitch + static_cast<std::size_t>(col0);
   const float h = p.grid_spacing;
   const __m128 h4 = _mm_set1_ps(h), step4 = _mm_set1_ps(4.0f);
   __m128i largest4 = _mm_setzero_si128();
   std::uint32_t largest = 0;
   // Row i's source nodes start at i * pitch, its copies at i * cols.
-  for (std::size_t i = 0, row = 0, src_row = 0; i < static_cast<std::size_t>(p.rows);
+  const float fc = static_cast<float>(col0);
+  for (std::size_t i = 0, row = 0, src_row = first; i < static_cast<std::size_t>(rows);
        ++i, row += cols, src_row += pitch) {
-    const float fi = static_cast<float>(i);
+    const float fi = static_cast<float>(static_cast<std::size_t>(row0) + i);
     std::size_t j = 0;
     if (stride == 1) {
       const __m128 fi4 = _mm_set1_ps(fi);
-      __m128 fj4 = _mm_setr_ps(0.0f, 1.0f, 2.0f, 3.0f);
+      __m128 fj4 = _mm_setr_ps(fc, fc + 1.0f, fc + 2.0f, fc + 3.0f);
       for (; j + 4 <= cols; j += 4, fj4 = _mm_add_ps(fj4, step4)) {
         const std::size_t k = row + j, s = src_row + j;
         const __m128 vx = _mm_mul_ps(_mm_add_ps(fj4, _mm_loadu_ps(p.x + s)), h4);
@@ -55,7 +58,7 @@ float copy_displacements(const NodePositions& p, float* x, float* y, float* z) {
     }
     for (; j < cols; ++j) {
       const std::size_t k = row + j, s = (src_row + j) * stride;
-      x[k] = (static_cast<float>(j) + p.x[s]) * h;
+      x[k] = (static_cast<float>(static_cast<std::size_t>(col0) + j) + p.x[s]) * h;
       y[k] = p.y[s] * h;
       z[k] = (fi + p.z[s]) * h;
       largest = std::max({largest, magnitude_bits(x[k]), magnitude_bits(y[k]), magnitude_bits(z[k])});
@@ -94,16 +97,52 @@ std::uint32_t copy_records(const float* px, const float* py, const float* pz, st
 }  // namespace
 
 float copy_positions(const NodePositions& p, float* x, float* y, float* z) {
-  if (p.grid_spacing > 0) return copy_displacements(p, x, y, z);
-  const std::size_t cols = static_cast<std::size_t>(p.cols), stride = p.stride;
-  // A compact view is one run of rows * cols records; a view with padded rows, one run per row.
-  if (p.row_pitch == cols) return std::bit_cast<float>(copy_records(p.x, p.y, p.z, stride, p.nodes(), x, y, z));
+  return copy_window(p, 0, 0, p.rows, p.cols, x, y, z);
+}
+
+float copy_window(const NodePositions& p, int row0, int col0, int rows, int window_cols, float* x, float* y,
+                  float* z) {
+  if (p.grid_spacing > 0) return copy_displacements(p, row0, col0, rows, window_cols, x, y, z);
+  const std::size_t cols = static_cast<std::size_t>(window_cols), stride = p.stride;
+  const std::size_t first = static_cast<std::size_t>(row0) * p.row_pitch + static_cast<std::size_t>(col0);
+  // A compact whole view is one run of rows * cols records; otherwise, one run per row.
+  if (p.row_pitch == cols && first == 0 && rows == p.rows && window_cols == p.cols)
+    return std::bit_cast<float>(copy_records(p.x, p.y, p.z, stride, p.nodes(), x, y, z));
   std::uint32_t largest = 0;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(p.rows); ++i) {
-    const std::size_t from = i * p.row_pitch * stride, to = i * cols;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(rows); ++i) {
+    const std::size_t from = (first + i * p.row_pitch) * stride, to = i * cols;
     largest = std::max(largest, copy_records(p.x + from, p.y + from, p.z + from, stride, cols, x + to, y + to, z + to));
   }
   return std::bit_cast<float>(largest);
+}
+
+void prefetch_window(const NodePositions& p, int row0, int col0, int rows, int cols) {
+  const bool interleaved = p.y == p.x + 1 && p.z == p.x + 2;
+  const std::size_t bytes = (static_cast<std::size_t>(cols - 1) * p.stride + 3) * sizeof(float);
+  for (int i = 0; i < rows; ++i) {
+    const std::size_t first = (static_cast<std::size_t>(row0 + i) * p.row_pitch + static_cast<std::size_t>(col0)) * p.stride;
+    for (const float* base : {p.x, p.y, p.z}) {
+      const char* at = reinterpret_cast<const char*>(base + first);
+      for (std::size_t b = 0; b < bytes; b += 64) _mm_prefetch(at + b, _MM_HINT_T0);
+      if (interleaved) break;  // one run holds all three
+    }
+  }
+}
+
+std::array<float, 3> world_position(const NodePositions& p, int row, int col) {
+  const std::size_t s = (static_cast<std::size_t>(row) * p.row_pitch + static_cast<std::size_t>(col)) * p.stride;
+  if (p.grid_spacing <= 0) return {p.x[s], p.y[s], p.z[s]};
+  // As copy_displacements, operation for operation.
+  return {(static_cast<float>(col) + p.x[s]) * p.grid_spacing, p.y[s] * p.grid_spacing,
+          (static_cast<float>(row) + p.z[s]) * p.grid_spacing};
+}
+
+void copy_nodes(const NodePositions& p, std::span<const std::uint32_t> ids, float* x, float* y, float* z) {
+  const std::uint32_t cols = static_cast<std::uint32_t>(p.cols);
+  for (std::uint32_t id : ids) {
+    const auto w = world_position(p, static_cast<int>(id / cols), static_cast<int>(id % cols));
+    x[id] = w[0], y[id] = w[1], z[id] = w[2];
+  }
 }
 
 }  // namespace pond::lod

@@ -1,6 +1,10 @@
 #pragma once
 // The builder's per-frame copy of the node positions into its own structure-of-arrays buffers,
 // finding the largest |coordinate| on the way (it sizes every float rounding margin).
+#include <array>
+#include <cstdint>
+#include <span>
+
 #include "lod/node_positions.h"
 
 namespace pond::lod {
@@ -9,5 +13,22 @@ namespace pond::lod {
 // the view's row pitch; world units: a grid_displacements view is converted on the way) and returns the largest |coordinate|: +inf or NaN when some coordinate is
 // not finite.
 float copy_positions(const NodePositions& positions, float* x, float* y, float* z);
+
+// The same for the window of `rows` x `cols` nodes whose first node is (row0, col0) in the grid,
+// copied compactly (window row i to x[i * cols ...]); world positions bit-identical to the whole
+// copy's.
+float copy_window(const NodePositions& positions, int row0, int col0, int rows, int cols, float* x, float* y,
+                  float* z);
+
+// Asks the caches for the window's records ahead of copy_window (rows far apart in a large grid
+// are fetched in parallel instead of one after another).
+void prefetch_window(const NodePositions& positions, int row0, int col0, int rows, int cols);
+
+// Node (row, col)'s world position, as the copies compute it.
+std::array<float, 3> world_position(const NodePositions& positions, int row, int col);
+
+// World positions of the nodes `ids` only (node index = row * cols + col), to x[id], y[id], z[id];
+// bit-identical to the whole copy's.
+void copy_nodes(const NodePositions& positions, std::span<const std::uint32_t> ids, float* x, float* y, float* z);
 
 }  // namespace pond::lod

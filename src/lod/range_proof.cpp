@@ -1,0 +1,59 @@
+#include "lod/range_proof.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "lod/position_copy.h"
+
+namespace pond::lod {
+namespace {
+
+// Cells tried per test at most: past this the triangle is split instead (a bounded cost).
+constexpr int kMostChecks = 48;
+
+}  // namespace
+
+bool RangeProof::proves(int x0, int x1, int y0, int y1, const GridPolygon& corners) const {
+  const double h = ranges_.spacing();
+  Band band{{0, 0, 0}, {0, 0, 0}, x0, x1, y0, y1};
+  for (int i = 0; i < 3; ++i) band.least[i] = HUGE_VAL, band.greatest[i] = -HUGE_VAL;
+  for (int k = 0; k < corners.count; ++k) {
+    const Point c = corners.corner[k];
+    const std::array<float, 3> w = world_position(positions_, c.y, c.x);
+    const double d[3] = {w[0] - c.x * h, w[1], w[2] - c.y * h};
+    for (int i = 0; i < 3; ++i) band.least[i] = std::min(band.least[i], d[i]), band.greatest[i] = std::max(band.greatest[i], d[i]);
+  }
+  const TileRect tiles = ranges_.tiles_of(x0, x1, y0, y1);
+  const int k = ranges_.level_for(tiles);
+  int checks = 0;
+  for (int b = tiles.b0 >> k; b <= tiles.b1 >> k; ++b)
+    for (int a = tiles.a0 >> k; a <= tiles.a1 >> k; ++a)
+      if (!cell_proves(k, a, b, band, checks)) return false;
+  return true;
+}
+
+bool RangeProof::cell_proves(int k, int a, int b, const Band& band, int& checks) const {
+  if (a >= ranges_.cells_x(k) || b >= ranges_.cells_y(k)) return true;  // past the grid: no tiles
+  // The cell's nodes within the region.
+  const int span = kTileCells << k;
+  const int x0 = std::max(band.x0, a * span), x1 = std::min(band.x1, (a + 1) * span);
+  const int y0 = std::max(band.y0, b * span), y1 = std::min(band.y1, (b + 1) * span);
+  if (x0 > x1 || y0 > y1) return true;
+  if (++checks > kMostChecks) return false;
+  const TileBounds& r = ranges_.cell(k, a, b);
+  const double wx = std::max(r.max_x - band.least[0], band.greatest[0] - r.min_x);
+  const double wy = std::max(r.max_y - band.least[1], band.greatest[1] - r.min_y);
+  const double wz = std::max(r.max_z - band.least[2], band.greatest[2] - r.min_z);
+  const double error = std::sqrt(wx * wx + wy * wy + wz * wz) * (1 + 1e-12);
+  const double h = ranges_.spacing();
+  if (error <= budget_.least({x0 * h + r.min_x, double(r.min_y), y0 * h + r.min_z},
+                             {x1 * h + r.max_x, double(r.max_y), y1 * h + r.max_z}))
+    return true;
+  if (k == 0) return false;
+  for (int q = 0; q < 4; ++q)
+    if (!cell_proves(k - 1, 2 * a + (q & 1), 2 * b + (q >> 1), band, checks)) return false;
+  return true;
+}
+
+}  // namespace pond::lod

@@ -1,0 +1,37 @@
+#pragma once
+// The builder's coarse test: a region's nodes all within budget of an interpolation between some of
+// its nodes, proved from the tile ranges (tile_ranges.h) and three or so node reads, no scan. A
+// node's deviation from the rest grid lies in its tile's [lo, hi] and the interpolation's between
+// the corners' least and greatest, so the two differ by at most the larger of hi - least and
+// greatest - lo. Each cell of the range pyramid is held against the least budget of its own world
+// box (camera_budget.h); a cell that fails is tried by its four quarters, down to single tiles, so
+// a long triangle is not judged by its nearest node's budget and its farthest wave at once.
+#include "lod/camera_budget.h"
+#include "lod/grid_hierarchy.h"
+#include "lod/node_positions.h"
+#include "lod/tile_ranges.h"
+
+namespace pond::lod {
+
+class RangeProof {
+ public:
+  RangeProof(const TileRanges& ranges, const BoxBudget& budget, const NodePositions& positions)
+      : ranges_(ranges), budget_(budget), positions_(positions) {}
+
+  // Are the nodes of columns [x0, x1] and rows [y0, y1] (inside the grid) within budget of the
+  // piecewise-linear interpolation between `corners` (grid nodes of that rectangle)?
+  bool proves(int x0, int x1, int y0, int y1, const GridPolygon& corners) const;
+
+ private:
+  struct Band {
+    double least[3], greatest[3];  // the interpolation's range, per coordinate
+    int x0, x1, y0, y1;            // the region's nodes
+  };
+  bool cell_proves(int k, int a, int b, const Band& band, int& checks) const;
+
+  const TileRanges& ranges_;
+  const BoxBudget& budget_;
+  const NodePositions& positions_;
+};
+
+}  // namespace pond::lod

@@ -1,0 +1,73 @@
+#include "lod/surface_blocks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/errors.h"
+#include "lod/position_copy.h"
+#include "lod/triangle_scan.h"
+#include "shared/tile_bounds.h"
+
+namespace pond::lod {
+namespace {
+
+int blocks_on(int nodes) { return (nodes - 2) / kBlockCells + 1; }
+
+}  // namespace
+
+SurfaceBlocks::SurfaceBlocks(int rows, int cols)
+    : rows_(rows), cols_(cols), blocks_x_(blocks_on(cols)), blocks_y_(blocks_on(rows)) {
+  const std::size_t blocks = static_cast<std::size_t>(blocks_x_) * static_cast<std::size_t>(blocks_y_);
+  made_in_.assign(blocks, 0);
+  slot_.assign(blocks, 0);
+}
+
+void SurfaceBlocks::begin(const NodePositions& positions, const Camera& camera, double tolerance_px, float largest) {
+  positions_ = positions, camera_ = camera, tolerance_ = tolerance_px, largest_ = largest;
+  used_ = 0;
+  if (++frame_ == 0) {  // after 2^32 frames: every stamp would look current
+    std::fill(made_in_.begin(), made_in_.end(), 0u);
+    frame_ = 1;
+  }
+}
+
+const GridHierarchy* SurfaceBlocks::shape(int rows, int cols) {
+  auto& g = shapes_[{rows, cols}];
+  if (!g) g = std::make_unique<GridHierarchy>(rows, cols);
+  return g.get();
+}
+
+const SurfaceBlock& SurfaceBlocks::block(int bx, int by) {
+  const std::size_t k = static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_x_) + static_cast<std::size_t>(bx);
+  if (made_in_[k] == frame_) return *pool_[slot_[k]];
+  if (used_ == pool_.size()) pool_.push_back(std::make_unique<SurfaceBlock>());
+  SurfaceBlock& b = *pool_[used_];
+  make(b, bx, by);
+  made_in_[k] = frame_;
+  slot_[k] = static_cast<std::uint32_t>(used_++);
+  return b;
+}
+
+void SurfaceBlocks::make(SurfaceBlock& b, int bx, int by) {
+  b.origin = {bx * kBlockCells, by * kBlockCells};
+  const int cols = std::min(kBlockCells + 1, cols_ - b.origin.x), rows = std::min(kBlockCells + 1, rows_ - b.origin.y);
+  prefetch_window(positions_, b.origin.y, b.origin.x, rows, cols);
+  b.grid = shape(rows, cols);
+  const std::size_t n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
+  for (std::vector<float>* v : {&b.x, &b.y, &b.z, &b.budget}) v->resize(n + kScanOverread);
+  const float largest = copy_window(positions_, b.origin.y, b.origin.x, rows, cols, b.x.data(), b.y.data(), b.z.data());
+  if (!std::isfinite(largest))
+    for (std::size_t k = 0; k < n; ++k)
+      if (!std::isfinite(b.x[k]) || !std::isfinite(b.y[k]) || !std::isfinite(b.z[k])) {
+        const int row = b.origin.y + static_cast<int>(k) / cols, col = b.origin.x + static_cast<int>(k) % cols;
+        throw InputError("node " + std::to_string(std::size_t(row) * std::size_t(cols_) + std::size_t(col)) + " (row " +
+                         std::to_string(row) + ", col " + std::to_string(col) + ") has a non-finite position");
+      }
+  const NodePositions own = b.positions();
+  node_budgets(own, camera_, tolerance_, largest_, b.budget.data());
+  b.bounds.assign(n, kNothingProved);
+  nested_bounds(*b.grid, own, largest_, b.budget.data(), b.bounds.data(), b.origin);
+}
+
+}  // namespace pond::lod

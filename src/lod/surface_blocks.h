@@ -1,0 +1,70 @@
+#pragma once
+// The builder's node-level data, made only where the refinement needs it: per block of
+// kBlockCells x kBlockCells cells (aligned like the tiles, neighbours sharing their border nodes),
+// the nodes' world positions, budgets and nested error bounds (error_bounds.h) in block-local
+// coordinates. A block's nested bounds are those of the block as a grid of its own: a vertex on
+// its border is bounded over the part of its diamond inside the block, which is the only part a
+// triangle of this block (every triangle it is asked about lies in it) needs.
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "lod/camera_budget.h"
+#include "lod/error_bounds.h"
+#include "lod/grid_hierarchy.h"
+#include "lod/node_positions.h"
+
+namespace pond::lod {
+
+// A triangle whose index-space bounding box is at most this many cells across lies in one block
+// and is judged on its nodes; a larger one only on tile ranges (tile_ranges.h).
+constexpr int kBlockCells = 32;
+
+struct SurfaceBlock {
+  Point origin;               // its first node in the grid
+  const GridHierarchy* grid;  // its nodes as a grid of their own (for ids and clipping)
+  std::vector<float> x, y, z, budget;  // by local id, kScanOverread past the last node
+  std::vector<NestedBound> bounds;
+
+  NodePositions positions() const { return soa_positions(x.data(), y.data(), z.data(), grid->rows(), grid->cols()); }
+  Tri local(const Tri& t) const {
+    const auto at = [&](Point p) { return Point{p.x - origin.x, p.y - origin.y}; };
+    return {at(t.apex), at(t.left), at(t.right)};
+  }
+};
+
+class SurfaceBlocks {
+ public:
+  SurfaceBlocks(int rows, int cols);
+
+  int blocks_x() const { return blocks_x_; }
+  // Forgets the last frame's blocks; `largest` bounds every |world coordinate| of `positions`.
+  void begin(const NodePositions& positions, const Camera& camera, double tolerance_px, float largest);
+  // Block (bx, by), made on first use this frame. Throws InputError on a non-finite position in it.
+  const SurfaceBlock& block(int bx, int by);
+  std::size_t made() const { return used_; }
+  bool made(int bx, int by) const {
+    return made_in_[static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_x_) + static_cast<std::size_t>(bx)] == frame_;
+  }
+
+ private:
+  const GridHierarchy* shape(int rows, int cols);
+  void make(SurfaceBlock& b, int bx, int by);
+
+  int rows_, cols_, blocks_x_, blocks_y_;
+  NodePositions positions_;
+  Camera camera_;
+  double tolerance_ = 1;
+  float largest_ = 0;
+  std::uint32_t frame_ = 0;
+  std::vector<std::uint32_t> made_in_;  // per block: the frame it was made in (0: never)
+  std::vector<std::uint32_t> slot_;     // per block: its slot in pool_ when made this frame
+  std::vector<std::unique_ptr<SurfaceBlock>> pool_;
+  std::size_t used_ = 0;
+  std::map<std::pair<int, int>, std::unique_ptr<GridHierarchy>> shapes_;
+};
+
+}  // namespace pond::lod

@@ -1,0 +1,140 @@
+#include "lod/tile_ranges.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/errors.h"
+#include "lod/position_copy.h"
+
+namespace pond::lod {
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr TileBounds kEmpty{kInf, kInf, kInf, -kInf, -kInf, -kInf};
+
+void widen(TileBounds& t, const TileBounds& by) {
+  t.min_x = std::min(t.min_x, by.min_x), t.min_y = std::min(t.min_y, by.min_y), t.min_z = std::min(t.min_z, by.min_z);
+  t.max_x = std::max(t.max_x, by.max_x), t.max_y = std::max(t.max_y, by.max_y), t.max_z = std::max(t.max_z, by.max_z);
+}
+
+// The float at or below (above) a double.
+float down(double v) {
+  const float f = static_cast<float>(v);
+  return double(f) > v ? std::nextafter(f, -kInf) : f;
+}
+float up(double v) {
+  const float f = static_cast<float>(v);
+  return double(f) < v ? std::nextafter(f, kInf) : f;
+}
+
+int tiles_on(int nodes) { return static_cast<int>(shared::tiles_along(static_cast<shared::uint>(nodes))); }
+
+}  // namespace
+
+TileRanges::TileRanges(int rows, int cols, double spacing, std::vector<TileBounds> tiles, float largest)
+    : rows_(rows), cols_(cols), tiles_x_(tiles_on(cols)), tiles_y_(tiles_on(rows)), spacing_(spacing),
+      largest_(largest) {
+  dims_.push_back({tiles_x_, tiles_y_});
+  levels_.push_back(std::move(tiles));
+  while (dims_.back().first > 1 || dims_.back().second > 1) {
+    const auto [w, h] = dims_.back();
+    const int nw = (w + 1) / 2, nh = (h + 1) / 2;
+    const std::vector<TileBounds>& fine = levels_.back();
+    std::vector<TileBounds> coarse(static_cast<std::size_t>(nw) * static_cast<std::size_t>(nh), kEmpty);
+    for (int b = 0; b < h; ++b)
+      for (int a = 0; a < w; ++a)
+        widen(coarse[static_cast<std::size_t>(b / 2) * nw + a / 2], fine[static_cast<std::size_t>(b) * w + a]);
+    dims_.push_back({nw, nh});
+    levels_.push_back(std::move(coarse));
+  }
+}
+
+TileRect TileRanges::tiles_of(int x0, int x1, int y0, int y1) const {
+  const auto first = [](int k, int tiles) { return std::min(k / kTileCells, tiles - 1); };
+  const auto last = [](int k, int tiles) { return k > 0 ? std::min((k - 1) / kTileCells, tiles - 1) : 0; };
+  const int a0 = first(x0, tiles_x_), b0 = first(y0, tiles_y_);
+  return {a0, std::max(a0, last(x1, tiles_x_)), b0, std::max(b0, last(y1, tiles_y_))};
+}
+
+int TileRanges::level_for(const TileRect& r) const {
+  int k = 0;
+  const int side = std::min(r.a1 - r.a0, r.b1 - r.b0) + 1;
+  while (k + 1 < levels() && (2 << k) <= side) ++k;
+  return k;
+}
+
+TileBounds TileRanges::over(const TileRect& r) const {
+  const int k = level_for(r);
+  const std::vector<TileBounds>& level = levels_[static_cast<std::size_t>(k)];
+  const int w = dims_[static_cast<std::size_t>(k)].first;
+  TileBounds t = kEmpty;
+  for (int b = r.b0 >> k; b <= r.b1 >> k; ++b)
+    for (int a = r.a0 >> k; a <= r.a1 >> k; ++a) widen(t, level[static_cast<std::size_t>(b) * w + a]);
+  return t;
+}
+
+TileRanges tile_ranges(const NodePositions& p) {
+  // The rest grid's spacing: a guess that only has to be finite (and is exact for a rest grid).
+  double spacing = (double(world_position(p, 0, p.cols - 1)[0]) - world_position(p, 0, 0)[0]) / (p.cols - 1);
+  if (!std::isfinite(spacing)) spacing = 1;
+  const int tx = tiles_on(p.cols), ty = tiles_on(p.rows);
+  std::vector<TileBounds> tiles(static_cast<std::size_t>(tx) * static_cast<std::size_t>(ty));
+  double largest = 0;
+  for (int b = 0; b < ty; ++b)
+    for (int a = 0; a < tx; ++a) {
+      double lo[3] = {kInf, kInf, kInf}, hi[3] = {-kInf, -kInf, -kInf};
+      const int y1 = std::min(b * kTileCells + kTileCells, p.rows - 1);
+      const int x1 = std::min(a * kTileCells + kTileCells, p.cols - 1);
+      for (int y = b * kTileCells; y <= y1; ++y)
+        for (int x = a * kTileCells; x <= x1; ++x) {
+          const std::array<float, 3> w = world_position(p, y, x);
+          for (int c = 0; c < 3; ++c) {
+            const float v = w[static_cast<std::size_t>(c)];
+            if (!std::isfinite(v))
+              throw InputError("node " + std::to_string(std::size_t(y) * std::size_t(p.cols) + std::size_t(x)) +
+                               " (row " + std::to_string(y) + ", col " + std::to_string(x) +
+                               ") has a non-finite position");
+            largest = std::max(largest, double(std::abs(v)));
+            const double rest = c == 0 ? x * spacing : c == 2 ? y * spacing : 0.0;
+            const double d = double(v) - rest;
+            lo[c] = std::min(lo[c], d), hi[c] = std::max(hi[c], d);
+          }
+        }
+      tiles[static_cast<std::size_t>(b) * tx + a] = {down(lo[0]), down(lo[1]), down(lo[2]),
+                                                     up(hi[0]), up(hi[1]), up(hi[2])};
+    }
+  return TileRanges(p.rows, p.cols, spacing, std::move(tiles), static_cast<float>(largest));
+}
+
+TileRanges tile_ranges(std::span<const TileBounds> u, int rows, int cols, float spacing) {
+  const int tx = tiles_on(cols), ty = tiles_on(rows);
+  if (u.size() != static_cast<std::size_t>(tx) * static_cast<std::size_t>(ty))
+    throw InternalError("tile bounds hold " + std::to_string(u.size()) + " tiles, the grid has " +
+                        std::to_string(tx * ty));
+  const double h = spacing;
+  double extreme[3] = {0, 0, 0};  // the largest |displacement| per component, in world units
+  for (std::size_t k = 0; k < u.size(); ++k) {
+    const TileBounds& t = u[k];
+    for (float v : {t.min_x, t.min_y, t.min_z, t.max_x, t.max_y, t.max_z})
+      if (!std::isfinite(v))
+        throw InputError("tile " + std::to_string(k) + " of the solver's tile bounds is not finite");
+    extreme[0] = std::max({extreme[0], std::abs(t.min_x * h), std::abs(t.max_x * h)});
+    extreme[1] = std::max({extreme[1], std::abs(t.min_y * h), std::abs(t.max_y * h)});
+    extreme[2] = std::max({extreme[2], std::abs(t.min_z * h), std::abs(t.max_z * h)});
+  }
+  const double largest = std::max({(cols - 1) * h + extreme[0], extreme[1], (rows - 1) * h + extreme[2]}) * (1 + 1e-6);
+  // World x = fl(fl(col + ux) h): two roundings of magnitudes <= largest, so x - col h lies within
+  // ux h -+ eps largest (y and z alike); twice that, and outward rounding, for the products here.
+  const double slack = 2 * largest * std::numeric_limits<float>::epsilon();
+  std::vector<TileBounds> tiles(u.size());
+  for (std::size_t k = 0; k < u.size(); ++k) {
+    const TileBounds& t = u[k];
+    tiles[k] = {down(t.min_x * h - slack), down(t.min_y * h - slack), down(t.min_z * h - slack),
+                up(t.max_x * h + slack), up(t.max_y * h + slack), up(t.max_z * h + slack)};
+  }
+  return TileRanges(rows, cols, h, std::move(tiles), up(largest));
+}
+
+}  // namespace pond::lod

@@ -1,0 +1,77 @@
+#pragma once
+// What the LOD builder knows of the surface before it reads a node: per tile of the solvers' tile
+// grid (shared/tile_bounds.h: 16 x 16 cells, neighbours share their border nodes), the range of each
+// world coordinate's deviation from the rest grid, node (row, col) resting at (col h, 0, row h).
+// An interpolation over nodes of a region misses any node of it by at most the length of the
+// region's ranges' widths (the rest grid is linear, so it interpolates exactly), and the region's
+// world box is its rest box widened by the ranges: that is all the builder's coarse test needs.
+// A pyramid of 2^k x 2^k tile blocks answers a rectangle of tiles in one or two look-ups.
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "lod/node_positions.h"
+#include "shared/tile_bounds.h"
+
+namespace pond::lod {
+
+using shared::TileBounds;
+
+constexpr int kTileCells = POND_TILE_CELLS;
+
+// A rectangle of tiles, inclusive.
+struct TileRect {
+  int a0, a1;  // tile columns
+  int b0, b1;  // tile rows
+};
+
+class TileRanges {
+ public:
+  TileRanges() = default;
+  // `tiles`: tiles_along(cols) x tiles_along(rows) ranges in world units, element b * tiles_x + a,
+  // each min <= max (a tile with no finite node has none); `largest` bounds every |world coordinate|.
+  TileRanges(int rows, int cols, double spacing, std::vector<TileBounds> tiles, float largest);
+
+  int rows() const { return rows_; }
+  int cols() const { return cols_; }
+  int tiles_x() const { return tiles_x_; }
+  int tiles_y() const { return tiles_y_; }
+  double spacing() const { return spacing_; }
+  float largest() const { return largest_; }
+
+  // The tiles holding every node of columns [x0, x1] and rows [y0, y1] (inside the grid).
+  TileRect tiles_of(int x0, int x1, int y0, int y1) const;
+  // The ranges over the tiles of `r` (and possibly a few more when r is not aligned to its size).
+  TileBounds over(const TileRect& r) const;
+
+  // The pyramid: level k's cells are blocks of 2^k x 2^k tiles, cells_x(k) x cells_y(k) of them.
+  int levels() const { return static_cast<int>(levels_.size()); }
+  int cells_x(int k) const { return dims_[static_cast<std::size_t>(k)].first; }
+  int cells_y(int k) const { return dims_[static_cast<std::size_t>(k)].second; }
+  const TileBounds& cell(int k, int a, int b) const {
+    return levels_[static_cast<std::size_t>(k)][static_cast<std::size_t>(b) * static_cast<std::size_t>(cells_x(k)) +
+                                                static_cast<std::size_t>(a)];
+  }
+  // The level whose cells cover `r` in at most a few (2 x 2, or 2 x 3 for a 1 x 2 rectangle).
+  int level_for(const TileRect& r) const;
+
+ private:
+  int rows_ = 0, cols_ = 0, tiles_x_ = 0, tiles_y_ = 0;
+  double spacing_ = 1;
+  float largest_ = 0;
+  // levels_[k]: the ranges of 2^k x 2^k tile blocks, (dims_[k].first wide) row by row.
+  std::vector<std::vector<TileBounds>> levels_;
+  std::vector<std::pair<int, int>> dims_;
+};
+
+// From node positions, node by node (a file's state: O(nodes)). The rest grid's spacing is the mean
+// spacing along the first row; any spacing gives true ranges, a wrong one only wider ones.
+// Throws InputError naming the first node with a non-finite coordinate.
+TileRanges tile_ranges(const NodePositions& positions);
+
+// From the solvers' tile bounds (shared/tile_bounds.h: displacements in grid units) of a grid of
+// this spacing, in O(tiles): widened by the float rounding of the world conversion
+// (node_positions.h). Throws InputError when a bound is not finite.
+TileRanges tile_ranges(std::span<const TileBounds> displacement_bounds, int rows, int cols, float spacing);
+
+}  // namespace pond::lod

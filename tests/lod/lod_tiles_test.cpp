@@ -1,0 +1,228 @@
+// The parts of the top-down LOD builder: the tile ranges (every node inside its tiles' ranges, from a
+// file's positions and from the solver's tile bounds), the blocks' nested bounds (equal to the whole
+// grid's wherever a vertex's diamond lies inside its block), and the builder on the solver's bounds.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/errors.h"
+#include "lod/error_bounds.h"
+#include "lod/lod_builder.h"
+#include "lod/mesh_checker.h"
+#include "lod/position_copy.h"
+#include "lod/rippled_states.h"
+#include "lod/surface_blocks.h"
+#include "lod/tile_ranges.h"
+#include "scene/scene.h"
+#include "sim/cpu_solver.h"
+
+namespace pond::lod_test {
+namespace {
+
+// "" when every node's world deviation from the rest grid lies in each tile holding it, and in the
+// pyramid's cell over that tile; else the first node that does not.
+std::string ranges_problem(const lod::TileRanges& r, const lod::NodePositions& p) {
+  const double h = r.spacing();
+  for (int y = 0; y < p.rows; ++y)
+    for (int x = 0; x < p.cols; ++x) {
+      const auto w = lod::world_position(p, y, x);
+      const double d[3] = {w[0] - x * h, w[1], w[2] - y * h};
+      for (int b = std::max(0, (y - 1) / lod::kTileCells); b <= std::min(y / lod::kTileCells, r.tiles_y() - 1); ++b)
+        for (int a = std::max(0, (x - 1) / lod::kTileCells); a <= std::min(x / lod::kTileCells, r.tiles_x() - 1); ++a)
+          for (int k = 0; k < r.levels(); ++k) {
+            const lod::TileBounds& t = r.cell(k, a >> k, b >> k);
+            const double lo[3] = {t.min_x, t.min_y, t.min_z}, hi[3] = {t.max_x, t.max_y, t.max_z};
+            for (int c = 0; c < 3; ++c)
+              if (!(lo[c] <= d[c] && d[c] <= hi[c]))
+                return "node (" + std::to_string(y) + ", " + std::to_string(x) + ") axis " + std::to_string(c) +
+                       " at level " + std::to_string(k) + ": " + std::to_string(d[c]) + " outside [" +
+                       std::to_string(lo[c]) + ", " + std::to_string(hi[c]) + "]";
+          }
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(w[static_cast<std::size_t>(c)]) > r.largest()) return "largest is not the largest";
+    }
+  return "";
+}
+
+sim::CpuSolver rippled_solver(int rows, int cols, double spacing, std::uint32_t seed) {
+  scene::Scene s;
+  s.grid = {rows, cols, spacing};
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int k = 0; k < 6; ++k) {
+    sim::Perturbation p;
+    p.row = u(rng) * (rows - 1), p.col = u(rng) * (cols - 1), p.radius = 1 + 2 * u(rng), p.amplitude = 2 * u(rng) - 1;
+    s.perturbations.push_back(p);
+  }
+  sim::CpuSolver solver(sim::build_model(s), sim::Backend::scalar, 1);
+  solver.track_tile_bounds(true);
+  solver.advance(30);
+  return solver;
+}
+
+TEST(TileRanges, HoldEveryNodeOfAFilesPositions) {
+  for (auto [rows, cols] : {std::pair{2, 2}, {17, 17}, {18, 40}, {65, 65}, {100, 37}, {129, 300}}) {
+    const std::vector<float> s = analytic_ripples(rows, cols, 4, 0.7, 7u + static_cast<std::uint32_t>(rows));
+    const auto p = lod::interleaved_positions(s.data(), rows, cols);
+    EXPECT_EQ(ranges_problem(lod::tile_ranges(p), p), "") << rows << "x" << cols;
+  }
+}
+
+TEST(TileRanges, FromTheSolversBoundsHoldEveryNode) {
+  for (auto [rows, cols, spacing] : {std::tuple{33, 33, 1.0}, {50, 71, 0.5}, {97, 40, 2.0}}) {
+    const sim::CpuSolver solver = rippled_solver(rows, cols, spacing, 11);
+    const sim::WaterState& st = solver.state();
+    const auto p = lod::grid_displacements(st.ux.data(), st.uy.data(), st.uz.data(), rows, cols, float(spacing));
+    const lod::TileRanges r = lod::tile_ranges(solver.tile_bounds(), rows, cols, float(spacing));
+    EXPECT_EQ(ranges_problem(r, p), "") << rows << "x" << cols;
+  }
+}
+
+TEST(TileRanges, RejectNonFiniteInput) {
+  std::vector<float> s = flat_pond(20, 20);
+  s[6 * 45 + 1] = NAN;
+  EXPECT_THROW(lod::tile_ranges(lod::interleaved_positions(s.data(), 20, 20)), InputError);
+  std::vector<lod::TileBounds> bounds(4, lod::TileBounds{0, 0, 0, 0, 0, 0});
+  bounds[3].max_y = INFINITY;
+  EXPECT_THROW(lod::tile_ranges(bounds, 20, 20, 1.0f), InputError);
+  EXPECT_THROW(lod::tile_ranges(bounds, 40, 40, 1.0f), InternalError);  // 9 tiles, not 4
+}
+
+// The deviation of node n from t's interpolation (world units), n inside t (weights exact).
+double miss(const lod::SurfaceBlock& b, const lod::Tri& t, lod::Point n) {
+  const lod::Point a = t.apex, l = t.left, r = t.right;
+  const double det = double(l.x - a.x) * (r.y - a.y) - double(l.y - a.y) * (r.x - a.x);
+  const double wl = (double(n.x - a.x) * (r.y - a.y) - double(n.y - a.y) * (r.x - a.x)) / det;
+  const double wr = (double(l.x - a.x) * (n.y - a.y) - double(l.y - a.y) * (n.x - a.x)) / det;
+  const double wa = 1 - wl - wr;
+  const auto id = [&](lod::Point q) { return b.grid->id(q); };
+  double sum = 0;
+  for (const std::vector<float>* c : {&b.x, &b.y, &b.z}) {
+    const double e = (*c)[id(n)] - (wa * (*c)[id(a)] + wl * (*c)[id(l)] + wr * (*c)[id(r)]);
+    sum += e * e;
+  }
+  return std::sqrt(sum);
+}
+
+bool inside(const lod::Tri& t, lod::Point n) {
+  const auto side = [](lod::Point p, lod::Point q, lod::Point v) {
+    return (long long)(q.x - p.x) * (v.y - p.y) - (long long)(q.y - p.y) * (v.x - p.x);
+  };
+  const long long s0 = side(t.apex, t.left, n), s1 = side(t.left, t.right, n), s2 = side(t.right, t.apex, n);
+  return (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
+}
+
+// A block's nested bounds (error_bounds.h, over the block as a grid of its own): for every vertex v
+// and each triangle of v's diamond inside the block, every node of the triangle but its corners is
+// within bound(v) of its interpolation and has at least min_budget(v). And where v's descendants'
+// diamonds all lie inside the block (2h from its border) they are the whole grid's, bit for bit:
+// the block's diagonals follow the global hierarchy wherever it sits.
+TEST(SurfaceBlocks, NestedBoundsHoldAndMatchTheWholeGrids) {
+  for (auto [rows, cols] : {std::pair{129, 129}, {100, 77}, {65, 200}}) {
+    const std::vector<float> s = analytic_ripples(rows, cols, 5, 0.5, 3u);
+    const auto p = lod::interleaved_positions(s.data(), rows, cols);
+    const float largest = lod::tile_ranges(p).largest();
+    const lod::Camera cam{{cols / 2.0, 40, -30}, {cols / 2.0, 0, rows / 2.0}, 60, 1280, 720};
+    const std::size_t n = static_cast<std::size_t>(rows) * cols;
+    std::vector<float> x(n), y(n), z(n), budget(n);
+    lod::copy_positions(p, x.data(), y.data(), z.data());
+    const auto own = lod::soa_positions(x.data(), y.data(), z.data(), rows, cols);
+    lod::node_budgets(own, cam, 1.0, largest, budget.data());
+    std::vector<lod::NestedBound> whole(n, lod::kNothingProved);
+    const lod::GridHierarchy grid(rows, cols);
+    lod::nested_bounds(grid, own, largest, budget.data(), whole.data());
+
+    lod::SurfaceBlocks blocks(rows, cols);
+    blocks.begin(p, cam, 1.0, largest);
+    int compared = 0, held = 0, centres = 0;
+    const bool full_check = rows == 100;  // node by node on one grid (a few million nodes)
+    for (int by = 0; by * lod::kBlockCells < rows - 1; ++by)
+      for (int bx = 0; bx * lod::kBlockCells < cols - 1; ++bx) {
+        const lod::SurfaceBlock& b = blocks.block(bx, by);
+        const int bc = b.grid->cols(), br = b.grid->rows();
+        for (int ly = 0; ly < br; ++ly)
+          for (int lx = 0; lx < bc; ++lx) {
+            const lod::NestedBound& local = b.bounds[b.grid->id({lx, ly})];
+            if (!std::isfinite(local.error)) continue;  // a corner, or a hypotenuse leaving the grid
+            const int h = (lx | ly) & -(lx | ly);
+            if (lx - 2 * h >= 0 && ly - 2 * h >= 0 && lx + 2 * h < bc && ly + 2 * h < br) {
+              const lod::NestedBound& global = whole[grid.id({b.origin.x + lx, b.origin.y + ly})];
+              ASSERT_EQ(local.error, global.error) << rows << "x" << cols << " block " << bx << "," << by
+                                                   << " vertex " << lx << "," << ly;
+              ASSERT_EQ(local.min_budget, global.min_budget);
+              ++compared;
+            }
+            if (lx == lod::kBlockCells / 2 && ly == lx) {
+              // The block's centre: its diamond is the block and its hypotenuse the global
+              // hierarchy's diagonal there (either one, by the block's place), which the whole
+              // grid's pass cannot vouch for (its children's diamonds leave the block).
+              const lod::Diamond d = lod::GridHierarchy::diamond({b.origin.x + lx, b.origin.y + ly});
+              const auto at = [&](const std::vector<float>& c, lod::Point g) {
+                return c[b.grid->id({g.x - b.origin.x, g.y - b.origin.y})];
+              };
+              const std::size_t v = b.grid->id({lx, ly});
+              const float dx = b.x[v] - 0.5f * (at(b.x, d.end0) + at(b.x, d.end1));
+              const float dy = b.y[v] - 0.5f * (at(b.y, d.end0) + at(b.y, d.end1));
+              const float dz = b.z[v] - 0.5f * (at(b.z, d.end0) + at(b.z, d.end1));
+              float worst = 0;
+              for (lod::Point c : {lod::Point{0, ly}, lod::Point{bc - 1, ly}, lod::Point{lx, 0}, lod::Point{lx, br - 1}})
+                worst = std::max(worst, b.bounds[b.grid->id(c)].error);
+              const float slack = 16 * largest * std::numeric_limits<float>::epsilon();
+              EXPECT_EQ(local.error, (std::sqrt(dx * dx + dy * dy + dz * dz) + slack + worst) * (1 + 1e-5f))
+                  << rows << "x" << cols << " block " << bx << "," << by;
+              ++centres;
+            }
+            if (!full_check) continue;
+            const lod::Diamond d = lod::GridHierarchy::diamond({b.origin.x + lx, b.origin.y + ly});
+            for (lod::Point apex : d.parents) {
+              const lod::Tri t = b.local(lod::oriented(apex, d.end0, d.end1));
+              if (!b.grid->within_grid(t)) continue;  // the half outside the block
+              for (int ny = 0; ny < br; ++ny)
+                for (int nx = 0; nx < bc; ++nx) {
+                  const lod::Point q{nx, ny};
+                  if (!inside(t, q) || q == t.apex || q == t.left || q == t.right) continue;  // corners: drawn
+                  ASSERT_LE(miss(b, t, {nx, ny}), double(local.error) * (1 + 1e-6))
+                      << "block " << bx << "," << by << " vertex " << lx << "," << ly << " node " << nx << "," << ny;
+                  ASSERT_GE(b.budget[b.grid->id({nx, ny})], local.min_budget);
+                  ++held;
+                }
+            }
+          }
+      }
+    EXPECT_GT(compared, rows * cols / 8) << rows << "x" << cols;
+    if (full_check) EXPECT_GT(held, rows * cols);
+    EXPECT_GE(centres, 4);
+  }
+}
+
+// The live path: the solver's tile bounds and its displacements, as the renderer passes them.
+TEST(LodBuilder, BuildsFromTheSolversTileBounds) {
+  for (auto [rows, cols, spacing] : {std::tuple{129, 129, 1.0}, {90, 150, 0.5}}) {
+    const sim::CpuSolver solver = rippled_solver(rows, cols, spacing, 5);
+    const sim::WaterState& st = solver.state();
+    const auto p = lod::grid_displacements(st.ux.data(), st.uy.data(), st.uz.data(), rows, cols, float(spacing));
+    const lod::TileRanges r = lod::tile_ranges(solver.tile_bounds(), rows, cols, float(spacing));
+    const std::vector<float> world = sim::to_world_interleaved(st, solver.model());
+    const double cx = (cols - 1) * spacing / 2, cz = (rows - 1) * spacing / 2;
+    for (const CheckCamera& c : {CheckCamera{{cx, 20 * spacing, -10 * spacing}, {cx, 0, cz}, 60, 1280, 720},
+                                 CheckCamera{{cx, 2 * spacing, cz - 3 * spacing}, {cx, 0, cz + 5}, 60, 640, 480}}) {
+      lod::LodBuilder builder(rows, cols);
+      std::vector<std::uint32_t> out(builder.max_indices());
+      out.resize(builder.build(p, r, {c.eye, c.target, c.fovy_degrees, c.width, c.height}, 1.0, out));
+      EXPECT_EQ(topology_problem(out, rows, cols), "");
+      const ErrorReport e = screen_errors(out, rows, cols, world, c);
+      EXPECT_EQ(e.uncovered, 0u);
+      EXPECT_LE(e.max_error_px, 1.0);
+      // The culling reads the drawn vertices' world positions from the builder.
+      for (std::uint32_t v : out) ASSERT_EQ(builder.world_y()[v], world[6 * std::size_t(v) + 1]);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pond::lod_test
