@@ -73,6 +73,7 @@ int run_render(const RenderOptions& o) {
 
   gpu::GpuSolvers gpu_solvers(ctx);
   sim::Session session(scene::session_spec(scene), solver, gpu_solvers.factory());
+  session.track_tile_bounds(true);  // the LOD descends them instead of reading every node
   render::FrameLoop loop(ctx, scene, session, &gpu_solvers, render::RenderTarget::kFormat);
   std::optional<render::TreeDrawable> trees;  // the scene's wind trees, in the water's pass
   if (scene.tree) loop.add_drawable(trees.emplace(ctx, loop, *scene.tree));

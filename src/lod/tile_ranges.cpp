@@ -81,31 +81,40 @@ TileRanges tile_ranges(const NodePositions& p) {
   if (!std::isfinite(spacing)) spacing = 1;
   const int tx = tiles_on(p.cols), ty = tiles_on(p.rows);
   std::vector<TileBounds> tiles(static_cast<std::size_t>(tx) * static_cast<std::size_t>(ty));
-  double largest = 0;
-  for (int b = 0; b < ty; ++b)
-    for (int a = 0; a < tx; ++a) {
-      double lo[3] = {kInf, kInf, kInf}, hi[3] = {-kInf, -kInf, -kInf};
-      const int y1 = std::min(b * kTileCells + kTileCells, p.rows - 1);
-      const int x1 = std::min(a * kTileCells + kTileCells, p.cols - 1);
-      for (int y = b * kTileCells; y <= y1; ++y)
-        for (int x = a * kTileCells; x <= x1; ++x) {
-          const std::array<float, 3> w = world_position(p, y, x);
-          for (int c = 0; c < 3; ++c) {
-            const float v = w[static_cast<std::size_t>(c)];
-            if (!std::isfinite(v))
-              throw InputError("node " + std::to_string(std::size_t(y) * std::size_t(p.cols) + std::size_t(x)) +
-                               " (row " + std::to_string(y) + ", col " + std::to_string(x) +
-                               ") has a non-finite position");
-            largest = std::max(largest, double(std::abs(v)));
-            const double rest = c == 0 ? x * spacing : c == 2 ? y * spacing : 0.0;
-            const double d = double(v) - rest;
-            lo[c] = std::min(lo[c], d), hi[c] = std::max(hi[c], d);
-          }
+  // Row by row (a stream, not tile windows far apart), each row's nodes into its tiles' ranges.
+  std::vector<float> x(static_cast<std::size_t>(p.cols)), y(x.size()), z(x.size());
+  std::vector<double> lo(3 * static_cast<std::size_t>(tx)), hi(lo.size());
+  float largest = 0;
+  for (int b = 0; b < ty; ++b) {
+    std::fill(lo.begin(), lo.end(), kInf), std::fill(hi.begin(), hi.end(), -kInf);
+    for (int row = b * kTileCells; row <= std::min(b * kTileCells + kTileCells, p.rows - 1); ++row) {
+      const float row_largest = copy_window(p, row, 0, 1, p.cols, x.data(), y.data(), z.data());
+      if (!(row_largest <= std::numeric_limits<float>::max()))
+        for (int k = 0; k < p.cols; ++k)
+          if (!std::isfinite(x[k]) || !std::isfinite(y[k]) || !std::isfinite(z[k]))
+            throw InputError("node " + std::to_string(std::size_t(row) * std::size_t(p.cols) + std::size_t(k)) +
+                             " (row " + std::to_string(row) + ", col " + std::to_string(k) + ") has a non-finite position");
+      largest = std::max(largest, row_largest);
+      // Deviations in double: exact but for the rest position's rounding (~1e-16 relative).
+      const double rest_z = row * spacing;
+      for (int a = 0; a < tx; ++a) {
+        double* l = &lo[3 * static_cast<std::size_t>(a)];
+        double* h = &hi[3 * static_cast<std::size_t>(a)];
+        for (int k = a * kTileCells; k <= std::min(a * kTileCells + kTileCells, p.cols - 1); ++k) {
+          const double dx = double(x[k]) - k * spacing, dy = y[k], dz = double(z[k]) - rest_z;
+          l[0] = std::min(l[0], dx), h[0] = std::max(h[0], dx);
+          l[1] = std::min(l[1], dy), h[1] = std::max(h[1], dy);
+          l[2] = std::min(l[2], dz), h[2] = std::max(h[2], dz);
         }
-      tiles[static_cast<std::size_t>(b) * tx + a] = {down(lo[0]), down(lo[1]), down(lo[2]),
-                                                     up(hi[0]), up(hi[1]), up(hi[2])};
+      }
     }
-  return TileRanges(p.rows, p.cols, spacing, std::move(tiles), static_cast<float>(largest));
+    for (int a = 0; a < tx; ++a) {
+      const double* l = &lo[3 * static_cast<std::size_t>(a)];
+      const double* h = &hi[3 * static_cast<std::size_t>(a)];
+      tiles[static_cast<std::size_t>(b) * tx + a] = {down(l[0]), down(l[1]), down(l[2]), up(h[0]), up(h[1]), up(h[2])};
+    }
+  }
+  return TileRanges(p.rows, p.cols, spacing, std::move(tiles), largest);
 }
 
 TileRanges tile_ranges(std::span<const TileBounds> u, int rows, int cols, float spacing) {

@@ -117,7 +117,7 @@ struct FrameLoop::Impl {
   }
 
   void build_lod(Prepared& f) {
-    geometry.build_water(f.slot, water.positions(), f.camera, f.view_proj, f.view.lod_tolerance_px,
+    geometry.build_water(f.slot, water.positions(), water.tile_bounds(), f.camera, f.view_proj, f.view.lod_tolerance_px,
                          f.plan.shadow_rects, f.draws);
     f.stats.triangles = f.draws.water_triangles;
   }

@@ -93,7 +93,8 @@ void VisibleGeometry::cull_land(std::uint32_t slot, const std::array<float, 16>&
   }
 }
 
-void VisibleGeometry::build_water(std::uint32_t slot, const lod::NodePositions& positions, const lod::Camera& camera,
+void VisibleGeometry::build_water(std::uint32_t slot, const lod::NodePositions& positions,
+                                  std::span<const lod::TileBounds> tiles, const lod::Camera& camera,
                                   const std::array<float, 16>& view_proj, double tolerance_px,
                                   std::span<const view::PixelRect> rects, VisibleDraws& out) {
   out.water_rects.clear();
@@ -104,7 +105,10 @@ void VisibleGeometry::build_water(std::uint32_t slot, const lod::NodePositions& 
     out.water_triangles = full_index_count_ / 3;
     return;
   }
-  lod_count_ = lod_.build(positions, camera, tolerance_px, lod_indices_);
+  lod_count_ = tiles.empty()
+                   ? lod_.build(positions, camera, tolerance_px, lod_indices_)
+                   : lod_.build(positions, lod::tile_ranges(tiles, positions.rows, positions.cols, positions.grid_spacing),
+                                camera, tolerance_px, lod_indices_);
   view::cull_triangles(std::span(lod_indices_).first(lod_count_), {lod_.world_x(), lod_.world_y(), lod_.world_z()},
                        view_proj, camera.width, camera.height, rects, culled_);
   write(slots_[slot].water, "water LOD indices", slot);

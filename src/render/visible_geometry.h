@@ -44,9 +44,11 @@ class VisibleGeometry {
   void cull_land(std::uint32_t slot, const std::array<float, 16>& view_proj, int width, int height,
                  std::span<const view::PixelRect> rects, std::array<int, 2> mirror, VisibleDraws& out);
   // The water's: the LOD of `positions` within `tolerance_px` (0: the full mesh), culled likewise.
-  void build_water(std::uint32_t slot, const lod::NodePositions& positions, const lod::Camera& camera,
-                   const std::array<float, 16>& view_proj, double tolerance_px, std::span<const view::PixelRect> rects,
-                   VisibleDraws& out);
+  // `tiles`: the positions' tile bounds from the solver (empty: the builder computes its ranges from
+  // the positions, reading every node).
+  void build_water(std::uint32_t slot, const lod::NodePositions& positions, std::span<const lod::TileBounds> tiles,
+                   const lod::Camera& camera, const std::array<float, 16>& view_proj, double tolerance_px,
+                   std::span<const view::PixelRect> rects, VisibleDraws& out);
 
   // Bind the vertex and index buffers of the land, the mirrored walls, the water (slot's).
   void bind_land(const vk::raii::CommandBuffer& cmd, std::uint32_t slot) const;

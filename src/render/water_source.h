@@ -9,6 +9,7 @@
 // its last submission (in a frame, the one wait) and hands over its copy, or the state in place
 // where the state's memory is host-readable (lavapipe).
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "gpu/buffer.h"
@@ -34,12 +35,17 @@ class WaterSource {
   };
   // The state on the host, as the session's solver last changed it: the GPU solver waits here for
   // its last submission (which also finishes every frame submitted before it).
-  void sync() { displacements_ = session_.solver().displacements(); }
+  void sync() {
+    displacements_ = session_.solver().displacements();
+    tiles_ = session_.solver().tile_bounds();
+  }
   // The buffers frame slot `slot` (finished) draws the state sync() saw from.
   DrawBuffers prepare(std::uint32_t slot);
   // The positions of the state prepare() last saw, for the LOD builder: valid until the session
   // changes the state.
   lod::NodePositions positions() const;
+  // Their tile bounds (sim/solver.h), when the session's solver keeps them; else empty.
+  std::span<const shared::TileBounds> tile_bounds() const { return tiles_; }
 
  private:
   const gpu::Context& ctx_;
@@ -50,6 +56,7 @@ class WaterSource {
   };
   std::vector<SlotBuffers> cpu_;  // CPU solver: per slot, made on first use
   sim::HostDisplacements displacements_{};
+  std::span<const shared::TileBounds> tiles_;
 };
 
 }  // namespace pond::render

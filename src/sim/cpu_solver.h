@@ -44,9 +44,9 @@ class CpuSolver final : public Solver {
   // Whether to keep the tile bounds (shared/tile_bounds.h) of the current state: the step kernels
   // emit them, and the contact and perturb() keep them true. Off at first, so that nothing pays for
   // them while no one reads them; turning it on computes them from the state.
-  void track_tile_bounds(bool on);
+  void track_tile_bounds(bool on) override;
   // The current state's tile bounds, tile (a, b) at b * tiles_x + a; empty while not tracked.
-  const std::vector<TileBounds>& tile_bounds() const { return tile_bounds_; }
+  std::span<const TileBounds> tile_bounds() const override { return tile_bounds_; }
   const TileGrid& tile_grid() const { return tile_grid_; }
 
  private:

@@ -59,6 +59,7 @@ void Session::replace_solver(WaterModel model, const WaterState& state, std::int
   } else {
     next = std::make_unique<CpuSolver>(std::move(model), choice_.backend, choice_.threads);
   }
+  next->track_tile_bounds(track_tiles_);
   next->set_state(state, steps);
   solver_ = std::move(next);
   ++solver_generation_;

@@ -113,6 +113,11 @@ class Session {
   double simulated_seconds() const { return static_cast<double>(steps_done()) * water_.physics.dt; }
   WaterState state() const { return solver_->read_state(); }
   const Solver& solver() const { return *solver_; }
+  // Whether every solver of the session keeps its tile bounds (solver.h), for a renderer's LOD.
+  void track_tile_bounds(bool on) {
+    track_tiles_ = on;
+    solver_->track_tile_bounds(on);
+  }
   // Grows whenever solver() is replaced (a drawer holding its buffers must let go), and whenever
   // the state changes, respectively.
   std::uint64_t solver_generation() const { return solver_generation_; }
@@ -131,6 +136,7 @@ class Session {
   std::int64_t ripples_until_ = 0;  // the model holds the wind ripples of steps below this
   std::vector<std::optional<BodySpec>> held_;  // per body: its spec before drag_body() took it
   std::uint64_t clamp_reported_ = 0;           // bit b: clamp_notice() named body b
+  bool track_tiles_ = false;
   std::unique_ptr<Solver> solver_;
   tree::Wind wind_;
   std::array<double, 3> sun_;

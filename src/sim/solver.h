@@ -6,12 +6,14 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "sim/backends.h"
 #include "sim/model.h"
 #include "sim/state.h"
+#include "sim/tile_bounds.h"
 
 namespace pond::sim {
 
@@ -49,6 +51,12 @@ class Solver {
   // Replaces the bodies' models (the same number of bodies; their states stay): a kinematic
   // body's new path, a body turned floating or kinematic. InputError for another count.
   virtual void set_body_models(std::vector<BodyModel> bodies) = 0;
+  // Whether to keep the current state's tile bounds (shared/tile_bounds.h), which the LOD builder
+  // descends instead of reading every node; off by default, and then free.
+  virtual void track_tile_bounds(bool on) { (void)on; }
+  // Those bounds while tracked, valid as displacements() is; empty when not tracked or where the
+  // solver keeps none.
+  virtual std::span<const TileBounds> tile_bounds() const { return {}; }
   // What runs the steps, for messages: "avx2 x 2 threads", "gpu".
   virtual std::string engine() const = 0;
   // For a solver whose bit-identity with the CPU reference depends on the device: one line saying

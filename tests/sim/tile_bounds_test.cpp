@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <random>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,7 @@ using scene::Scene;
 
 // Checks the bounds of tile (a, b) against its nodes: each within, each bound attained, NaN-free,
 // no -0 bound. Returns "" or what is wrong.
-std::string check_tile(const std::vector<TileBounds>& bounds, const WaterState& s, const TileGrid& g, int a, int b) {
+std::string check_tile(std::span<const TileBounds> bounds, const WaterState& s, const TileGrid& g, int a, int b) {
   const TileBounds& t = bounds[static_cast<std::size_t>(b) * g.tiles_x + a];
   const float lo[3] = {t.min_x, t.min_y, t.min_z}, hi[3] = {t.max_x, t.max_y, t.max_z};
   const float* u[3] = {s.ux.data(), s.uy.data(), s.uz.data()};
@@ -161,7 +162,7 @@ std::vector<std::vector<TileBounds>> run_bounds(const WaterModel& m, Backend b, 
   std::vector<std::vector<TileBounds>> out;
   for (int step = 0; step < 12; ++step) {
     solver.advance(1);
-    out.push_back(solver.tile_bounds());
+    out.emplace_back(solver.tile_bounds().begin(), solver.tile_bounds().end());
     EXPECT_EQ(check_all(solver), "") << backend_name(b) << " x " << threads << ", step " << step;
   }
   hash = state_hash(solver.state(), m);

@@ -52,6 +52,7 @@ DemoApp::DemoApp(const DemoOptions& options, scene::Scene scene, Script script)
     throw RuntimeError("this window's swapchain images cannot be read back, so no screenshots can be taken");
   session_ = std::make_unique<sim::Session>(scene::session_spec(scene_with_settings()), sim::SolverChoice{},
                                             gpu_solvers_.factory());
+  session_->track_tile_bounds(true);  // the LOD descends them instead of reading every node
   stats_.solver = solver_label(session_->choice());
   build_loop();
   const vk::Extent2D e = swapchain_.extent();
