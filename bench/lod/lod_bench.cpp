@@ -28,7 +28,7 @@ struct Pond {
     if (!ranges_) ranges_ = pond::lod::tile_ranges(positions());
     return *ranges_;
   }
-  mutable std::optional<pond::lod::TileRanges> ranges_;
+  mutable std::optional<pond::lod::TileRanges> ranges_{};
 };
 
 const Pond& drops_everywhere(int side, double amplitude) {

@@ -46,6 +46,10 @@ bool LodBuilder::leaf_fits(const Tri& t, Point m) {
   const bool inside = grid_.within_grid(t);
   if (!inside && clip_to_grid(t, rows(), cols()).count < 3) return true;  // wholly outside the grid
   ++stats_.tested;
+  if (whole_) {
+    const SurfaceBlock& w = blocks_.whole();
+    return inside ? leaf_is_fine(w, t, m) : clipped_leaf_is_fine(w, clip_to_grid(t, rows(), cols()));
+  }
   const bool small = x1 - x0 <= kBlockCells && y1 - y0 <= kBlockCells;
   const int bx = x0 / kBlockCells, by = y0 / kBlockCells;
   // A small triangle whose block is made is judged on its nodes at once: sharper than the ranges.
@@ -227,8 +231,33 @@ std::size_t LodBuilder::build(const NodePositions& p, const TileRanges& ranges, 
   const std::size_t written = static_cast<std::size_t>(cursor - out.data());
   stats_.triangles = written / 3;
   stats_.blocks = blocks_.made();
+  stats_.whole = whole_;
   copy_nodes(p, out.first(written), x_.data(), y_.data(), z_.data());
+  // Frame to frame the view and the water change little: when the blocks this frame needed hold
+  // most of the grid's nodes, the next frame makes the whole grid in one pass instead.
+  const std::size_t needed = whole_ ? blocks_needed(out.first(written)) : blocks_.made();
+  const std::size_t block_nodes = static_cast<std::size_t>(kBlockCells + 1) * (kBlockCells + 1);
+  whole_ = needed * block_nodes * 10 > 6 * p.nodes();
   return written;
+}
+
+// The blocks holding a triangle of `triangles` small enough to lie in one: those the block path
+// would have made at least.
+std::size_t LodBuilder::blocks_needed(std::span<const std::uint32_t> triangles) {
+  needed_.assign(static_cast<std::size_t>(blocks_.blocks_x()) * static_cast<std::size_t>(blocks_.blocks_y()), 0);
+  std::size_t count = 0;
+  const std::uint32_t c = static_cast<std::uint32_t>(cols());
+  for (std::size_t k = 0; k + 2 < triangles.size(); k += 3) {
+    const std::uint32_t a = triangles[k], b = triangles[k + 1], d = triangles[k + 2];
+    const int x0 = static_cast<int>(std::min({a % c, b % c, d % c})), x1 = static_cast<int>(std::max({a % c, b % c, d % c}));
+    const int y0 = static_cast<int>(std::min({a / c, b / c, d / c})), y1 = static_cast<int>(std::max({a / c, b / c, d / c}));
+    if (x1 - x0 > kBlockCells || y1 - y0 > kBlockCells) continue;
+    std::uint8_t& seen = needed_[static_cast<std::size_t>(y0 / kBlockCells) * static_cast<std::size_t>(blocks_.blocks_x()) +
+                                 static_cast<std::size_t>(x0 / kBlockCells)];
+    count += seen == 0;
+    seen = 1;
+  }
+  return count;
 }
 
 // Depth first; entering each triangle at the hypotenuse end the previous one left at, the leaves

@@ -38,6 +38,7 @@ struct BuildStats {
   std::size_t tested = 0;        // candidate leaves tested
   std::size_t ranged = 0;        // accepted by the tile ranges (no node read)
   std::size_t blocks = 0;        // blocks of nodes read (surface_blocks.h)
+  bool whole = false;            // the whole grid read as one block instead
   std::size_t proved = 0;        // accepted by the nested bound alone
   std::size_t scanned = 0;       // needed an exact scan
   long long scanned_nodes = 0;   // nodes visited by exact scans
@@ -79,6 +80,7 @@ class LodBuilder {
   void activate(Point v);
   void mark(std::uint8_t& s, std::uint8_t bits, Point v);
   void emit(const Tri& t, bool enter_left, std::uint32_t*& out) const;
+  std::size_t blocks_needed(std::span<const std::uint32_t> triangles);
 
   GridHierarchy grid_;
   SurfaceBlocks blocks_;
@@ -90,6 +92,8 @@ class LodBuilder {
   std::vector<std::uint8_t> state_;  // per domain node: kActive | kExpanded* bits
   std::vector<std::uint32_t> marked_;  // the domain ids whose state this frame set
   std::vector<Tri> work_;
+  bool whole_ = false;                // this frame reads the whole grid (see build())
+  std::vector<std::uint8_t> needed_;  // blocks_needed()'s scratch
   BuildStats stats_;
 };
 

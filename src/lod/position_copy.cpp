@@ -116,19 +116,6 @@ float copy_window(const NodePositions& p, int row0, int col0, int rows, int wind
   return std::bit_cast<float>(largest);
 }
 
-void prefetch_window(const NodePositions& p, int row0, int col0, int rows, int cols) {
-  const bool interleaved = p.y == p.x + 1 && p.z == p.x + 2;
-  const std::size_t bytes = (static_cast<std::size_t>(cols - 1) * p.stride + 3) * sizeof(float);
-  for (int i = 0; i < rows; ++i) {
-    const std::size_t first = (static_cast<std::size_t>(row0 + i) * p.row_pitch + static_cast<std::size_t>(col0)) * p.stride;
-    for (const float* base : {p.x, p.y, p.z}) {
-      const char* at = reinterpret_cast<const char*>(base + first);
-      for (std::size_t b = 0; b < bytes; b += 64) _mm_prefetch(at + b, _MM_HINT_T0);
-      if (interleaved) break;  // one run holds all three
-    }
-  }
-}
-
 std::array<float, 3> world_position(const NodePositions& p, int row, int col) {
   const std::size_t s = (static_cast<std::size_t>(row) * p.row_pitch + static_cast<std::size_t>(col)) * p.stride;
   if (p.grid_spacing <= 0) return {p.x[s], p.y[s], p.z[s]};

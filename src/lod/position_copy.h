@@ -20,10 +20,6 @@ float copy_positions(const NodePositions& positions, float* x, float* y, float* 
 float copy_window(const NodePositions& positions, int row0, int col0, int rows, int cols, float* x, float* y,
                   float* z);
 
-// Asks the caches for the window's records ahead of copy_window (rows far apart in a large grid
-// are fetched in parallel instead of one after another).
-void prefetch_window(const NodePositions& positions, int row0, int col0, int rows, int cols);
-
 // Node (row, col)'s world position, as the copies compute it.
 std::array<float, 3> world_position(const NodePositions& positions, int row, int col);
 

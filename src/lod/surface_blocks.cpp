@@ -28,6 +28,7 @@ void SurfaceBlocks::begin(const NodePositions& positions, const Camera& camera, 
   used_ = 0;
   if (++frame_ == 0) {  // after 2^32 frames: every stamp would look current
     std::fill(made_in_.begin(), made_in_.end(), 0u);
+    whole_made_in_ = 0;
     frame_ = 1;
   }
 }
@@ -43,16 +44,21 @@ const SurfaceBlock& SurfaceBlocks::block(int bx, int by) {
   if (made_in_[k] == frame_) return *pool_[slot_[k]];
   if (used_ == pool_.size()) pool_.push_back(std::make_unique<SurfaceBlock>());
   SurfaceBlock& b = *pool_[used_];
-  make(b, bx, by);
+  const Point origin{bx * kBlockCells, by * kBlockCells};
+  make(b, origin, std::min(kBlockCells + 1, rows_ - origin.y), std::min(kBlockCells + 1, cols_ - origin.x));
   made_in_[k] = frame_;
   slot_[k] = static_cast<std::uint32_t>(used_++);
   return b;
 }
 
-void SurfaceBlocks::make(SurfaceBlock& b, int bx, int by) {
-  b.origin = {bx * kBlockCells, by * kBlockCells};
-  const int cols = std::min(kBlockCells + 1, cols_ - b.origin.x), rows = std::min(kBlockCells + 1, rows_ - b.origin.y);
-  prefetch_window(positions_, b.origin.y, b.origin.x, rows, cols);
+const SurfaceBlock& SurfaceBlocks::whole() {
+  if (whole_made_in_ != frame_) make(whole_, {0, 0}, rows_, cols_);
+  whole_made_in_ = frame_;
+  return whole_;
+}
+
+void SurfaceBlocks::make(SurfaceBlock& b, Point origin, int rows, int cols) {
+  b.origin = origin;
   b.grid = shape(rows, cols);
   const std::size_t n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
   for (std::vector<float>* v : {&b.x, &b.y, &b.z, &b.budget}) v->resize(n + kScanOverread);
@@ -66,7 +72,9 @@ void SurfaceBlocks::make(SurfaceBlock& b, int bx, int by) {
       }
   const NodePositions own = b.positions();
   node_budgets(own, camera_, tolerance_, largest_, b.budget.data());
-  b.bounds.assign(n, kNothingProved);
+  // The vertices nested_bounds() leaves alone depend on the shape only: set them on a change of shape.
+  if (b.bounds.size() != n || b.shaped_for != b.grid) b.bounds.assign(n, kNothingProved);
+  b.shaped_for = b.grid;
   nested_bounds(*b.grid, own, largest_, b.budget.data(), b.bounds.data(), b.origin);
 }
 

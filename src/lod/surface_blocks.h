@@ -4,7 +4,8 @@
 // the nodes' world positions, budgets and nested error bounds (error_bounds.h) in block-local
 // coordinates. A block's nested bounds are those of the block as a grid of its own: a vertex on
 // its border is bounded over the part of its diamond inside the block, which is the only part a
-// triangle of this block (every triangle it is asked about lies in it) needs.
+// triangle of this block (every triangle it is asked about lies in it) needs. Or the whole grid as
+// one block, when most of it is needed.
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -28,6 +29,7 @@ struct SurfaceBlock {
   const GridHierarchy* grid;  // its nodes as a grid of their own (for ids and clipping)
   std::vector<float> x, y, z, budget;  // by local id, kScanOverread past the last node
   std::vector<NestedBound> bounds;
+  const GridHierarchy* shaped_for = nullptr;  // the shape `bounds` was last set up for
 
   NodePositions positions() const { return soa_positions(x.data(), y.data(), z.data(), grid->rows(), grid->cols()); }
   Tri local(const Tri& t) const {
@@ -41,10 +43,14 @@ class SurfaceBlocks {
   SurfaceBlocks(int rows, int cols);
 
   int blocks_x() const { return blocks_x_; }
+  int blocks_y() const { return blocks_y_; }
   // Forgets the last frame's blocks; `largest` bounds every |world coordinate| of `positions`.
   void begin(const NodePositions& positions, const Camera& camera, double tolerance_px, float largest);
   // Block (bx, by), made on first use this frame. Throws InputError on a non-finite position in it.
   const SurfaceBlock& block(int bx, int by);
+  // The whole grid as one block, made on first use this frame: the cheaper way when most blocks are
+  // needed (one pass, no border twice, no per-block set-up). Its nested bounds are the grid's own.
+  const SurfaceBlock& whole();
   std::size_t made() const { return used_; }
   bool made(int bx, int by) const {
     return made_in_[static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_x_) + static_cast<std::size_t>(bx)] == frame_;
@@ -52,7 +58,7 @@ class SurfaceBlocks {
 
  private:
   const GridHierarchy* shape(int rows, int cols);
-  void make(SurfaceBlock& b, int bx, int by);
+  void make(SurfaceBlock& b, Point origin, int rows, int cols);
 
   int rows_, cols_, blocks_x_, blocks_y_;
   NodePositions positions_;
@@ -64,6 +70,8 @@ class SurfaceBlocks {
   std::vector<std::uint32_t> slot_;     // per block: its slot in pool_ when made this frame
   std::vector<std::unique_ptr<SurfaceBlock>> pool_;
   std::size_t used_ = 0;
+  SurfaceBlock whole_;
+  std::uint32_t whole_made_in_ = 0;
   std::map<std::pair<int, int>, std::unique_ptr<GridHierarchy>> shapes_;
 };
 
