@@ -1,7 +1,8 @@
 // The LOD builder's contract on large ponds (1025² and 2049²): rain, a storm and a calm pond with
-// one splash, seen from above, grazing and from inside the pond, at 1280x720 and tau = 1 px. Every
-// left-out node in view within tau of its triangle, no cracks, no T-junctions (the independent
-// checkers of mesh_checker.h). Label `large`: the sanitizer build leaves them out (minutes there).
+// one splash, and analytic ripples at 4097², seen from above, grazing and from inside the pond, at
+// 1280x720 and tau = 1 px. Every left-out node in view within tau of its triangle, no cracks, no
+// T-junctions (the independent checkers of mesh_checker.h). Label `large`: the sanitizer build
+// leaves them out (minutes there).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -39,8 +40,9 @@ const std::vector<float>& state(int side, const std::string& kind) {
   auto it = cache.find({side, kind});
   if (it != cache.end()) return it->second;
   const int drops = side * side / 160;
-  std::vector<float> s = kind == "splash" ? one_splash(side)
-                                          : simulated_pond(side, side, drops, drops / 20, 15, 1, kind == "rain" ? 0.1 : 1.0);
+  std::vector<float> s = kind == "splash"    ? one_splash(side)
+                         : kind == "ripples" ? analytic_ripples(side, side, 24, 6.0, 4097u)
+                                             : simulated_pond(side, side, drops, drops / 20, 15, 1, kind == "rain" ? 0.1 : 1.0);
   return cache.emplace(std::pair{side, kind}, std::move(s)).first->second;
 }
 
@@ -78,6 +80,8 @@ TEST(LodLarge, OneSplash1025) { check_every_view(1025, "splash"); }
 TEST(LodLarge, Rain2049) { check_every_view(2049, "rain"); }
 TEST(LodLarge, Storm2049) { check_every_view(2049, "storm"); }
 TEST(LodLarge, OneSplash2049) { check_every_view(2049, "splash"); }
+// The largest size the issue names, on waves no benchmark uses (analytic, not simulated: cheap).
+TEST(LodLarge, Ripples4097) { check_every_view(4097, "ripples"); }
 
 }  // namespace
 }  // namespace pond::lod_test
