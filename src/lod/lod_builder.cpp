@@ -232,7 +232,14 @@ std::size_t LodBuilder::build(const NodePositions& p, const TileRanges& ranges, 
   stats_.triangles = written / 3;
   stats_.blocks = blocks_.made();
   stats_.whole = whole_;
-  copy_nodes(p, out.first(written), x_.data(), y_.data(), z_.data());
+  if (whole_) {
+    const SurfaceBlock& w = blocks_.whole();
+    world_[0] = std::span(w.x).first(p.nodes()), world_[1] = std::span(w.y).first(p.nodes());
+    world_[2] = std::span(w.z).first(p.nodes());
+  } else {
+    copy_nodes(p, out.first(written), x_.data(), y_.data(), z_.data());
+    world_[0] = x_, world_[1] = y_, world_[2] = z_;
+  }
   // Frame to frame the view and the water change little: when the blocks this frame needed hold
   // most of the grid's nodes, the next frame makes the whole grid in one pass instead.
   const std::size_t needed = whole_ ? blocks_needed(out.first(written)) : blocks_.made();

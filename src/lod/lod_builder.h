@@ -68,9 +68,9 @@ class LodBuilder {
   const BuildStats& stats() const { return stats_; }
   // The world positions of the vertices of the last build()'s triangles, by node index
   // (row * cols + col); other entries are stale.
-  std::span<const float> world_x() const { return x_; }
-  std::span<const float> world_y() const { return y_; }
-  std::span<const float> world_z() const { return z_; }
+  std::span<const float> world_x() const { return world_[0]; }
+  std::span<const float> world_y() const { return world_[1]; }
+  std::span<const float> world_z() const { return world_[2]; }
   const GridHierarchy& grid() const { return grid_; }
 
  private:
@@ -88,7 +88,8 @@ class LodBuilder {
   NodePositions positions_;             // this frame's
   std::optional<BoxBudget> box_budget_;  // this frame's
   float largest_ = 0;  // this frame's bound on every |coordinate|
-  std::vector<float> x_, y_, z_;  // the drawn vertices' world positions
+  std::vector<float> x_, y_, z_;  // the drawn vertices' world positions (read in blocks)
+  std::span<const float> world_[3];  // those, or the whole grid's when it was read whole
   std::vector<std::uint8_t> state_;  // per domain node: kActive | kExpanded* bits
   std::vector<std::uint32_t> marked_;  // the domain ids whose state this frame set
   std::vector<Tri> work_;

@@ -245,6 +245,10 @@ TEST(LodBuilder, ReadsTheWholeGridWhileMostOfItIsNeeded) {
     const ErrorReport e = screen_errors(tris, side, side, s, c);
     EXPECT_EQ(e.uncovered, 0u) << what;
     EXPECT_LE(e.max_error_px, 1.0) << what;
+    for (std::uint32_t v : tris) {  // what the frame's culling reads, either way
+      EXPECT_EQ(builder.world_x()[v], s[6 * std::size_t(v)]) << what;
+      EXPECT_EQ(builder.world_z()[v], s[6 * std::size_t(v) + 2]) << what;
+    }
     return tris.size() / 3;
   };
   const std::size_t in_blocks = build(whole_pond, "first build");
