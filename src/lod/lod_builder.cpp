@@ -44,19 +44,19 @@ bool LodBuilder::leaf_fits(const Tri& t, Point m) {
   const int x0 = std::min({t.apex.x, t.left.x, t.right.x}), x1 = std::max({t.apex.x, t.left.x, t.right.x});
   const int y0 = std::min({t.apex.y, t.left.y, t.right.y}), y1 = std::max({t.apex.y, t.left.y, t.right.y});
   const bool inside = grid_.within_grid(t);
-  if (!inside && clip_to_grid(t, rows(), cols()).count < 3) return true;  // wholly outside the grid
+  GridPolygon clipped;  // t's part in the grid, when it reaches past it
+  if (!inside && (clipped = clip_to_grid(t, rows(), cols())).count < 3) return true;  // wholly outside
   ++stats_.tested;
   if (whole_) {
     const SurfaceBlock& w = blocks_.whole();
-    return inside ? leaf_is_fine(w, t, m) : clipped_leaf_is_fine(w, clip_to_grid(t, rows(), cols()));
+    return inside ? leaf_is_fine(w, t, m) : clipped_leaf_is_fine(w, clipped);
   }
   const bool small = x1 - x0 <= kBlockCells && y1 - y0 <= kBlockCells;
   const int bx = x0 / kBlockCells, by = y0 / kBlockCells;
   // A small triangle whose block is made is judged on its nodes at once: sharper than the ranges.
   if (!(small && blocks_.made(bx, by))) {
-    GridPolygon corners;
+    GridPolygon corners = clipped;
     if (inside) corners.count = 3, corners.corner[0] = t.apex, corners.corner[1] = t.left, corners.corner[2] = t.right;
-    else corners = clip_to_grid(t, rows(), cols());
     if (RangeProof(*ranges_, *box_budget_, positions_).proves(x0, std::min(x1, cols() - 1), y0,
                                                                std::min(y1, rows() - 1), corners)) {
       ++stats_.ranged;
