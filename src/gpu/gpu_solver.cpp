@@ -72,6 +72,7 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, bool drawn)
   // The host's copies: the displacements unless the state is read in place, and the bodies.
   ring_ = std::make_unique<SubmissionRing>(ctx_, state_[0].mapped ? 0 : 3 * stride_ * sizeof(float),
                                            model_.bodies.size() * sizeof(sim::BodyState));
+  tile_grid_ = sim::TileGrid(model_.rows, model_.cols);
   set_state(sim::rest_state(model_), 0);
 }
 
@@ -161,7 +162,9 @@ void GpuSolver::submit(std::int64_t steps, bool publish) const {
   if (contact_ && steps > 0) contact_->write_schedule(step_, steps, region);
   const std::int64_t first_step = step_;
   for (std::int64_t k = 0; k < steps; ++k) record_step(cmd, region, first_step);
-  if (publish) kernels_->record_normals(cmd, cur_);
+  // The normals (with the tile bounds where tracked) last: of the state every dispatch left.
+  if (publish && tiles_) tiles_->record(cmd, cur_);
+  else if (publish) kernels_->record_normals(cmd, cur_);
   s.published = publish;
   record_copies(cmd, s);
   ring_->submit();
@@ -313,6 +316,27 @@ sim::Normals GpuSolver::normals() const {
     n.z.push_back(v[4 * k + 2]);
   }
   return n;
+}
+
+void GpuSolver::track_tile_bounds(bool on) {
+  if (on == static_cast<bool>(tiles_)) return;
+  if (!on) {
+    ctx_.queue().waitIdle();  // a renderer's frames in flight may read the bounds
+    tiles_.reset();
+    return;
+  }
+  tiles_ = std::make_unique<TileKernels>(ctx_, model_, *kernels_, normals_,
+                                         model_.math == sim::MathMode::exact && ctx_.denorm_preserve());
+  submit(0, true);  // the current state's bounds (and its splashes)
+}
+
+std::vector<sim::TileBounds> GpuSolver::tile_bounds() const {
+  if (!tiles_) return {};
+  published();  // the bounds of the current state
+  const Buffer staging = copy_to_host(tiles_->bounds(), "tile bounds readback");
+  std::vector<sim::TileBounds> out(tile_grid_.tiles());
+  std::memcpy(out.data(), staging.mapped, out.size() * sizeof(sim::TileBounds));
+  return out;
 }
 
 void GpuSolver::set_body_models(std::vector<sim::BodyModel> bodies) {
