@@ -60,8 +60,8 @@
 
 // Bindings of water_tiles.comp: the tile columns above in, the tile bounds out (TileBounds[],
 // tile (a, b) at b * tiles_x + a).
-#define POND_TILES_BINDING_COLUMNS 0
-#define POND_TILES_BINDING_BOUNDS 1
+#define POND_TILES_BINDING_COLUMNS 0  // uniform texel buffer, R32_SFLOAT view of the tile columns
+#define POND_TILES_BINDING_BOUNDS 1   // storage buffer: TileBounds[]
 #define POND_TILES_BINDINGS 2
 #define POND_TILES_LOCAL_X 64  // tiles per workgroup of water_tiles.comp
 

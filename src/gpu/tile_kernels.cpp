@@ -14,6 +14,11 @@ std::vector<DT> normals_tiles_bindings() {
   b[POND_NORMALS_BINDING_STATE] = DT::eUniformTexelBuffer;
   return b;
 }
+std::vector<DT> tiles_bindings() {
+  std::vector<DT> b(POND_TILES_BINDINGS, DT::eStorageBuffer);
+  b[POND_TILES_BINDING_COLUMNS] = DT::eUniformTexelBuffer;
+  return b;
+}
 
 }  // namespace
 
@@ -22,17 +27,20 @@ TileKernels::TileKernels(const Context& ctx, const sim::WaterModel& model, const
     : ctx_(ctx), water_(water), grid_(model.rows, model.cols) {
   const vk::DeviceSize bound_bytes = sizeof(TileBounds);
   columns_ = create_buffer(ctx_, grid_.tiles_y * static_cast<vk::DeviceSize>(model.cols) * bound_bytes,
-                           BU::eStorageBuffer, MemoryUse::device, "tile columns");
+                           BU::eStorageBuffer | BU::eUniformTexelBuffer, MemoryUse::device, "tile columns");
+  // Read by the merge through an R32F view, as the state (fewer texels than the state's view).
+  columns_r32_ = create_texel_view(ctx_, columns_, vk::Format::eR32Sfloat, "the tile columns");
   bounds_ = create_buffer(ctx_, grid_.tiles() * bound_bytes,
                           BU::eStorageBuffer | BU::eTransferSrc, MemoryUse::device, "tile bounds");
   const SpecConstant local_x[] = {{POND_SPEC_NORMALS_LOCAL_X, water_.normals_local_x()}};
   normals_pipe_ = create_compute_pipeline(ctx_, water_normals_tiles_spirv(denorm_preserve), normals_tiles_bindings(),
                                           sizeof(NormalsPush), local_x, "water_normals (tile columns)");
-  tiles_pipe_ = create_compute_pipeline(ctx_, water_tiles_spirv(denorm_preserve), POND_TILES_BINDINGS,
+  tiles_pipe_ = create_compute_pipeline(ctx_, water_tiles_spirv(denorm_preserve), tiles_bindings(),
                                         sizeof(TilesPush), {}, "water_tiles");
 
-  const vk::DescriptorPoolSize sizes[] = {{.type = DT::eUniformTexelBuffer, .descriptorCount = 2},
-                                          {.type = DT::eStorageBuffer, .descriptorCount = 2 * 2 + POND_TILES_BINDINGS}};
+  // Two normals sets (the state's view; normals, columns) and the merge's (the columns' view; bounds).
+  const vk::DescriptorPoolSize sizes[] = {{.type = DT::eUniformTexelBuffer, .descriptorCount = 2 + 1},
+                                          {.type = DT::eStorageBuffer, .descriptorCount = 2 * 2 + 1}};
   pool_ = vk::raii::DescriptorPool(ctx_.device(),
                                    vk::DescriptorPoolCreateInfo{.flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
                                                                 .maxSets = 3, .poolSizeCount = 2, .pPoolSizes = sizes});
@@ -58,9 +66,10 @@ TileKernels::TileKernels(const Context& ctx, const sim::WaterModel& model, const
          .descriptorType = DT::eStorageBuffer, .pBufferInfo = &columns_info}};
     ctx_.device().updateDescriptorSets(writes, nullptr);
   }
+  const vk::BufferView columns_view = *columns_r32_;
   const vk::WriteDescriptorSet writes[] = {
       {.dstSet = *tiles_set_, .dstBinding = POND_TILES_BINDING_COLUMNS, .descriptorCount = 1,
-       .descriptorType = DT::eStorageBuffer, .pBufferInfo = &columns_info},
+       .descriptorType = DT::eUniformTexelBuffer, .pTexelBufferView = &columns_view},
       {.dstSet = *tiles_set_, .dstBinding = POND_TILES_BINDING_BOUNDS, .descriptorCount = 1,
        .descriptorType = DT::eStorageBuffer, .pBufferInfo = &bounds_info}};
   ctx_.device().updateDescriptorSets(writes, nullptr);

@@ -41,6 +41,7 @@ class TileKernels {
   vk::raii::DescriptorPool pool_ = nullptr;
   std::vector<vk::raii::DescriptorSet> normals_sets_;  // [c]: state c
   vk::raii::DescriptorSet tiles_set_ = nullptr;
+  vk::raii::BufferView columns_r32_ = nullptr;
 };
 
 }  // namespace pond::gpu
