@@ -96,18 +96,10 @@ void GpuSolver::create_buffers() {
   upload(ctx_, reach_, std::as_bytes(std::span(&zero, 1)));
 }
 
-// Where every device-local memory type the state could be in is also host-visible, cached and
-// coherent (lavapipe: the "GPU" memory is the CPU's), the state stays mapped and the host reads
-// the displacements in place instead of a copy of them (displacements()).
+// Where the state's memory is host-readable in place (lavapipe), the state stays mapped and the
+// host reads the displacements there instead of a copy of them (displacements()).
 void GpuSolver::map_state_where_host_readable() {
-  using MP = vk::MemoryPropertyFlagBits;
-  const vk::MemoryPropertyFlags host = MP::eHostVisible | MP::eHostCached | MP::eHostCoherent;
-  const vk::PhysicalDeviceMemoryProperties props = ctx_.physical().getMemoryProperties();
-  const std::uint32_t bits = state_[0].buffer.getMemoryRequirements().memoryTypeBits;
-  for (std::uint32_t t = 0; t < props.memoryTypeCount; ++t) {
-    const vk::MemoryPropertyFlags flags = props.memoryTypes[t].propertyFlags;
-    if ((bits >> t & 1u) && (flags & MP::eDeviceLocal) && (flags & host) != host) return;
-  }
+  if (!host_readable_in_place(ctx_, state_[0])) return;
   for (Buffer& b : state_) b.mapped = b.memory.mapMemory(0, VK_WHOLE_SIZE);
 }
 
@@ -163,7 +155,7 @@ void GpuSolver::submit(std::int64_t steps, bool publish) const {
   const std::int64_t first_step = step_;
   for (std::int64_t k = 0; k < steps; ++k) record_step(cmd, region, first_step);
   // The normals (with the tile bounds where tracked) last: of the state every dispatch left.
-  if (publish && tiles_) tiles_->record(cmd, cur_);
+  if (publish && tiles_) tiles_->record(cmd, cur_, region);
   else if (publish) kernels_->record_normals(cmd, cur_);
   s.published = publish;
   record_copies(cmd, s);
@@ -326,17 +318,15 @@ void GpuSolver::track_tile_bounds(bool on) {
     return;
   }
   tiles_ = std::make_unique<TileKernels>(ctx_, model_, *kernels_, normals_,
-                                         model_.math == sim::MathMode::exact && ctx_.denorm_preserve());
+                                         model_.math == sim::MathMode::exact && ctx_.denorm_preserve(),
+                                         SubmissionRing::kSize);
   submit(0, true);  // the current state's bounds (and its splashes)
 }
 
-std::vector<sim::TileBounds> GpuSolver::tile_bounds() const {
+std::span<const sim::TileBounds> GpuSolver::tile_bounds() const {
   if (!tiles_) return {};
-  published();  // the bounds of the current state
-  const Buffer staging = copy_to_host(tiles_->bounds(), "tile bounds readback");
-  std::vector<sim::TileBounds> out(tile_grid_.tiles());
-  std::memcpy(out.data(), staging.mapped, out.size() * sizeof(sim::TileBounds));
-  return out;
+  const Submission& s = published();  // the bounds of the current state
+  return tiles_->host_bounds(ring_->index_of(s));
 }
 
 void GpuSolver::set_body_models(std::vector<sim::BodyModel> bodies) {

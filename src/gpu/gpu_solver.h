@@ -15,6 +15,7 @@
 //    inversesqrt, contraction allowed) is the same pipeline with a specialization constant.
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -75,10 +76,10 @@ class GpuSolver : public sim::Solver {
   // the tile bounds (shared/tile_bounds.h) of its state, with sim::compute_tile_bounds's bits.
   // Off by default: the plain normals pass, no buffers. Switching on submits the current state's
   // bounds; switching off waits for the queue (frames in flight may read them).
-  void track_tile_bounds(bool on);
-  // The current state's tile bounds, tile (a, b) at b * tiles_x + a, read back (waits); empty
-  // while not tracked.
-  std::vector<sim::TileBounds> tile_bounds() const;
+  void track_tile_bounds(bool on) override;
+  // The current state's tile bounds on the host, tile (a, b) at b * tiles_x + a, valid as
+  // displacements() is (it waits for the last submission, as that does); empty while not tracked.
+  std::span<const sim::TileBounds> tile_bounds() const override;
   // The same in the GPU's buffer as the last submission left it (a renderer copies or binds it;
   // as normals_buffer(): storage, transfer source), and their grid; null while not tracked.
   const Buffer* tile_bounds_buffer() const { return tiles_ ? &tiles_->bounds() : nullptr; }

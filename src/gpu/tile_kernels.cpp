@@ -1,5 +1,7 @@
 #include "gpu/tile_kernels.h"
 
+#include <string>
+
 #include "gpu/shaders.h"
 #include "gpu/water_layout.h"
 
@@ -23,7 +25,7 @@ std::vector<DT> tiles_bindings() {
 }  // namespace
 
 TileKernels::TileKernels(const Context& ctx, const sim::WaterModel& model, const WaterKernels& water,
-                         const Buffer& normals, bool denorm_preserve)
+                         const Buffer& normals, bool denorm_preserve, std::uint32_t slots)
     : ctx_(ctx), water_(water), grid_(model.rows, model.cols) {
   const vk::DeviceSize bound_bytes = sizeof(TileBounds);
   columns_ = create_buffer(ctx_, grid_.tiles_y * static_cast<vk::DeviceSize>(model.cols) * bound_bytes,
@@ -32,6 +34,14 @@ TileKernels::TileKernels(const Context& ctx, const sim::WaterModel& model, const
   columns_r32_ = create_texel_view(ctx_, columns_, vk::Format::eR32Sfloat, "the tile columns");
   bounds_ = create_buffer(ctx_, grid_.tiles() * bound_bytes,
                           BU::eStorageBuffer | BU::eTransferSrc, MemoryUse::device, "tile bounds");
+  if (host_readable_in_place(ctx_, bounds_)) {
+    bounds_.mapped = bounds_.memory.mapMemory(0, VK_WHOLE_SIZE);
+  } else {
+    for (std::uint32_t k = 0; k < slots; ++k)
+      host_.push_back(create_buffer(ctx_, bounds_.size, BU::eTransferDst, MemoryUse::readback,
+                                    "tile bounds readback " + std::to_string(k)));
+  }
+  host_seen_.assign(slots, false);
   const SpecConstant local_x[] = {{POND_SPEC_NORMALS_LOCAL_X, water_.normals_local_x()}};
   normals_pipe_ = create_compute_pipeline(ctx_, water_normals_tiles_spirv(denorm_preserve), normals_tiles_bindings(),
                                           sizeof(NormalsPush), local_x, "water_normals (tile columns)");
@@ -75,7 +85,7 @@ TileKernels::TileKernels(const Context& ctx, const sim::WaterModel& model, const
   ctx_.device().updateDescriptorSets(writes, nullptr);
 }
 
-void TileKernels::record(const vk::raii::CommandBuffer& cmd, int c) const {
+void TileKernels::record(const vk::raii::CommandBuffer& cmd, int c, std::uint32_t slot) const {
   water_.record_normals_with(cmd, normals_pipe_, normals_sets_[c]);  // its barrier after: columns readable
   const TilesPush push{.cols = static_cast<std::uint32_t>(grid_.cols), .tiles_x = static_cast<std::uint32_t>(grid_.tiles_x),
                        .tiles = static_cast<std::uint32_t>(grid_.tiles())};
@@ -83,6 +93,17 @@ void TileKernels::record(const vk::raii::CommandBuffer& cmd, int c) const {
   cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *tiles_pipe_.layout, 0, *tiles_set_, nullptr);
   cmd.pushConstants<TilesPush>(*tiles_pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
   cmd.dispatch(group_count(push.tiles, POND_TILES_LOCAL_X), 1, 1);
+  host_seen_[slot] = false;  // a new copy
+  if (host_.empty()) return;
+  WaterKernels::record_barrier(cmd);
+  cmd.copyBuffer(*bounds_.buffer, *host_[slot].buffer, vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = bounds_.size});
+}
+
+std::span<const TileBounds> TileKernels::host_bounds(std::uint32_t slot) const {
+  if (host_.empty()) return {static_cast<const TileBounds*>(bounds_.mapped), grid_.tiles()};
+  if (!host_seen_[slot]) host_[slot].invalidate(ctx_);
+  host_seen_[slot] = true;
+  return {static_cast<const TileBounds*>(host_[slot].mapped), grid_.tiles()};
 }
 
 }  // namespace pond::gpu

@@ -6,6 +6,8 @@
 // pass runs last in a submission, after the steps, the contact and the splashes, so nothing moves
 // a node between the bounds and the state they describe.
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "gpu/buffer.h"
@@ -20,14 +22,17 @@ namespace pond::gpu {
 class TileKernels {
  public:
   // For the solver's kernels (their views of the state) and normals buffer, which must outlive
-  // this, as the context.
+  // this, as the context; `slots`: the submissions that may be in flight (each its host copy).
   TileKernels(const Context& ctx, const sim::WaterModel& model, const WaterKernels& water, const Buffer& normals,
-              bool denorm_preserve);
+              bool denorm_preserve, std::uint32_t slots);
 
   // The normals of state c with the tile bounds (for WaterKernels::record_normals, with its
-  // barriers before and after the normals). The submission's closing barrier must follow, which
-  // makes the bounds visible to later commands and transfers (GpuSolver::record_copies).
-  void record(const vk::raii::CommandBuffer& cmd, int c) const;
+  // barriers before and after the normals), and their copy for the host into `slot`'s where the
+  // bounds are not read in place. The submission's closing barrier must follow, which makes them
+  // visible to the host, later commands and transfers (GpuSolver::record_copies).
+  void record(const vk::raii::CommandBuffer& cmd, int c, std::uint32_t slot) const;
+  // The bounds the submission of `slot` left, on the host (it must have finished).
+  std::span<const TileBounds> host_bounds(std::uint32_t slot) const;
 
   // Tile (a, b) at b * tiles_x + a; storage and transfer source.
   const Buffer& bounds() const { return bounds_; }
@@ -37,6 +42,10 @@ class TileKernels {
   const WaterKernels& water_;
   sim::TileGrid grid_;
   Buffer columns_, bounds_;  // columns_: per tile row b and column j at b * cols + j
+  // Per slot, the host's copy of bounds_ (none where bounds_ is mapped: read in place, lavapipe),
+  // and whether it was invalidated since its submission finished.
+  std::vector<Buffer> host_;
+  mutable std::vector<bool> host_seen_;
   ComputePipeline normals_pipe_, tiles_pipe_;
   vk::raii::DescriptorPool pool_ = nullptr;
   std::vector<vk::raii::DescriptorSet> normals_sets_;  // [c]: state c

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <random>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,7 @@ namespace {
 using sim::TileBounds;
 
 // "" when `got` has the bits of `want`, else the first differing tile and both.
-std::string compare(const std::vector<TileBounds>& got, const std::vector<TileBounds>& want, const sim::TileGrid& g) {
+std::string compare(std::span<const TileBounds> got, std::span<const TileBounds> want, const sim::TileGrid& g) {
   if (got.size() != want.size())
     return "size " + std::to_string(got.size()) + ", expected " + std::to_string(want.size());
   for (std::size_t t = 0; t < got.size(); ++t)
@@ -102,7 +103,7 @@ TEST_F(GpuTest, TileBoundsEqualTheReferenceAndTheCpuAfterEveryFrame) {
         cpu.advance(steps);
         const sim::WaterState state = gpu.read_state();
         ASSERT_EQ(sim::state_hash(state, m), sim::state_hash(cpu.state(), m)) << what << ": not the CPU's state";
-        const std::vector<TileBounds> bounds = gpu.tile_bounds();
+        const std::span<const TileBounds> bounds = gpu.tile_bounds();
         EXPECT_EQ(compare(bounds, sim::compute_tile_bounds(state, g), g), "") << what << " after " << cpu.steps_done();
         EXPECT_EQ(compare(bounds, cpu.tile_bounds(), g), "") << what << " after " << cpu.steps_done();
         for (const TileBounds& t : bounds) moved = moved || t.max_y > t.min_y;
