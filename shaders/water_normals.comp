@@ -13,10 +13,15 @@
 // of a group are consecutive columns, so each gather reads one contiguous run. The workgroup
 // width is a specialization constant: the solver spans the row in as few, as evenly filled groups
 // as it can (257 columns: 2 x 136, not 5 x 64 with one column in the last).
+//
+// The tile variant (POND_NORMALS_TILES, only while the tile bounds are tracked: gpu/tile_kernels.h)
+// also widens each column's bounds over its strip, which is a tile row, plus the row below it that
+// the window already holds (the tile's shared border): water_tiles.comp merges them into tiles.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_spirv_intrinsics : require
 
 #include "shared/exact_math.h"
+#include "shared/tile_bounds.h"
 #include "shared/water_gpu.h"
 
 spirv_execution_mode(capabilities = [4466], 4461, 32);  // SignedZeroInfNanPreserve, 32-bit floats
@@ -30,6 +35,15 @@ layout(local_size_x_id = POND_SPEC_NORMALS_LOCAL_X) in;
 layout(set = 0, binding = POND_NORMALS_BINDING_STATE) uniform samplerBuffer state;  // R32F: float n
 layout(std430, set = 0, binding = POND_NORMALS_BINDING_NORMALS) restrict writeonly buffer Normals { vec4 normals[]; };
 layout(push_constant) uniform Push { NormalsPush p; };
+#ifdef POND_NORMALS_TILES
+#if POND_NORMALS_ROWS_PER_INVOCATION != POND_TILE_CELLS
+#error "a strip of the normals must be a tile row"
+#endif
+layout(std430, set = 0, binding = POND_NORMALS_BINDING_TILE_COLUMNS) restrict writeonly buffer TileColumns {
+  TileBounds tile_columns[];
+};
+TileBounds node_bounds(vec3 u) { return TileBounds(u.x, u.y, u.z, u.x, u.y, u.z); }
+#endif
 
 vec3 load_u(uint n) {
   return vec3(texelFetch(state, int(n)).x, texelFetch(state, int(p.stride + n)).x,
@@ -46,7 +60,14 @@ void main() {
   // The window: rows i0 = max(i-1, 0) and i of column j (i1 = min(i+1, rows-1) is fetched per row).
   vec3 down = load_u((first > 0u ? first - 1u : 0u) * P + j);
   vec3 mid = load_u(first * P + j);
+#ifdef POND_NORMALS_TILES
+  const float inf = uintBitsToFloat(0x7f800000u), minus_inf = uintBitsToFloat(0xff800000u);
+  TileBounds column = TileBounds(inf, inf, inf, minus_inf, minus_inf, minus_inf);
+#endif
   for (uint i = first; i < last; ++i) {
+#ifdef POND_NORMALS_TILES
+    column = bounds_widened(column, node_bounds(mid));  // row i
+#endif
     const uint i1 = min(i + 1u, p.rows - 1u), i0 = i > 0u ? i - 1u : 0u;
     const vec3 up = i1 == i ? mid : load_u(i1 * P + j);
     // Position differences = displacement differences + the rest offset (i1 - i0 or j1 - j0),
@@ -66,4 +87,10 @@ void main() {
     down = mid;
     mid = up;
   }
+#ifdef POND_NORMALS_TILES
+  // mid is row min(last, rows - 1): the next strip's first row, the tile's border. A grid of
+  // 16k + 1 rows has one strip more than tile rows, its one row the last tile row's border.
+  if (last < p.rows) column = bounds_widened(column, node_bounds(mid));
+  if (gl_GlobalInvocationID.y < tiles_along(p.rows)) tile_columns[gl_GlobalInvocationID.y * C + j] = column;
+#endif
 }

@@ -1,14 +1,17 @@
 // GPU solver speed on the device pond chooses (lavapipe here): node-steps per second at 256²,
 // 512², 1024², exact and fast math; the cost of one dispatch (1,000 substeps of an 8x8 grid, one
 // command buffer); and the scalar CPU backend on one thread at 1024² in the same run, for the
-// ratio, also alternated with the GPU within one benchmark (BM_GpuVsCpuScalarRatio). Validation is
-// off (it would measure the layer).
+// ratio, also alternated with the GPU within one benchmark (BM_GpuVsCpuScalarRatio); the tile
+// bounds' cost per frame (BM_GpuTileBoundsCost). Validation is off (it would measure the layer).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstddef>
 #include <cstdlib>
 #include <ctime>
 #include <memory>
+#include <vector>
 
 #include "gpu/context.h"
 #include "gpu/headless.h"
@@ -141,6 +144,51 @@ void BM_GpuVsCpuScalarRatio(benchmark::State& state) {
   state.counters["cpu-cores"] = cpu_cpu / cpu_wall;
 }
 BENCHMARK(BM_GpuVsCpuScalarRatio)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(5.0);
+
+// The tile bounds' cost (GpuSolver::track_tile_bounds): frames of a drawn solver (one step, then
+// the normals, which the bounds ride on), tracking off and on in two solvers of one scene,
+// alternated within every iteration (which goes first alternates too) so both see the same load.
+// Counters: the median milliseconds of a frame off and on (every frame timed on its own), wall
+// clock and process CPU time (every thread's: llvmpipe's workers; less moved by other jobs on a
+// shared machine), and their ratios.
+void BM_GpuTileBoundsCost(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const sim::WaterModel model = square_pond(n, 1, sim::MathMode::exact);
+  gpu::GpuSolver off(context(), model, true), on(context(), model, true);
+  on.track_tile_bounds(true);
+  for (gpu::GpuSolver* s : {&off, &on}) {
+    s->advance(8);  // warm-up: pipelines compiled, pages touched
+    s->finish();
+  }
+  using Clock = std::chrono::steady_clock;
+  std::vector<double> wall[2], cpu[2];  // [0] off, [1] on
+  auto frame = [&](gpu::GpuSolver& s, int k) {
+    const auto t0 = Clock::now();
+    const double c0 = process_cpu_seconds();
+    s.advance(1);
+    s.finish();
+    cpu[k].push_back(1e3 * (process_cpu_seconds() - c0));
+    wall[k].push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+  };
+  bool on_first = false;
+  for (auto _ : state) {
+    if (on_first) frame(on, 1);
+    frame(off, 0);
+    if (!on_first) frame(on, 1);
+    on_first = !on_first;
+  }
+  auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  state.counters["off-ms"] = median(wall[0]);
+  state.counters["on-ms"] = median(wall[1]);
+  state.counters["on/off"] = median(wall[1]) / median(wall[0]);
+  state.counters["off-cpu-ms"] = median(cpu[0]);
+  state.counters["on-cpu-ms"] = median(cpu[1]);
+  state.counters["on/off-cpu"] = median(cpu[1]) / median(cpu[0]);
+}
+BENCHMARK(BM_GpuTileBoundsCost)->Arg(257)->Arg(1025)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

@@ -146,16 +146,6 @@ POND_BODY_FN float inv_exact(float x) {
   return inv;
 }
 
-// x with a zero made +0: the sign of a zero velocity may differ between two compilers' equivalent
-// expressions, and it is part of the compared bits. On the bits, since a compiler may drop x + 0.0.
-POND_BODY_FN float plus_zero(float x) {
-#ifdef __cplusplus
-  return std::bit_cast<std::uint32_t>(x) == 0x80000000u ? 0.0f : x;
-#else
-  return floatBitsToUint(x) == 0x80000000u ? 0.0 : x;
-#endif
-}
-
 // A body's state with every zero made +0 (plus_zero).
 POND_BODY_FN BodyState canonical_body(BodyState b) {
   b.x = plus_zero(b.x);

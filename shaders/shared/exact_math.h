@@ -63,6 +63,11 @@ POND_FN POND_PRECISE float spring_factor(float l2, float rest, int steps) {
   return 1.0f - s;
 }
 
+// x with a zero made +0: the sign of a zero may differ between two compilers' equivalent
+// expressions, and it is part of the compared bits. On the bits, since a compiler may drop x + 0.0
+// (lavapipe does, SignedZeroInfNanPreserve or not).
+POND_FN float plus_zero(float x) { return floatBitsToUint(x) == 0x80000000u ? 0.0f : x; }
+
 #ifdef __cplusplus
 }  // namespace pond::shared
 #endif

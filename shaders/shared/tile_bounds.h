@@ -37,10 +37,29 @@ POND_TILE_FN uint tiles_along(uint nodes) { return nodes > 1u ? (nodes + uint(PO
 // skipped. (This is x86's minps(v, acc) and maxps(v, acc).)
 POND_TILE_FN float bound_below(float acc, float v) { return v < acc ? v : acc; }
 POND_TILE_FN float bound_above(float acc, float v) { return v > acc ? v : acc; }
-// A finished bound with -0 as +0 (IEEE: -0 + +0 = +0; every other value is unchanged).
-POND_TILE_FN float bound_canonical(float bound) {
-  POND_PRECISE float b = bound + 0.0f;
-  return b;
+// A finished bound with -0 as +0, every other value unchanged (what IEEE's bound + 0 gives, on the
+// bits: exact_math.h's plus_zero).
+POND_TILE_FN float bound_canonical(float bound) { return plus_zero(bound); }
+
+// t widened by the bounds `by` (or by one node: {x, y, z, x, y, z}), and t with its zeros made +0:
+// the two steps every backend builds a tile from (C++ and GLSL alike pass structs by value here).
+POND_TILE_FN TileBounds bounds_widened(TileBounds t, TileBounds by) {
+  t.min_x = bound_below(t.min_x, by.min_x);
+  t.min_y = bound_below(t.min_y, by.min_y);
+  t.min_z = bound_below(t.min_z, by.min_z);
+  t.max_x = bound_above(t.max_x, by.max_x);
+  t.max_y = bound_above(t.max_y, by.max_y);
+  t.max_z = bound_above(t.max_z, by.max_z);
+  return t;
+}
+POND_TILE_FN TileBounds bounds_canonical(TileBounds t) {
+  t.min_x = bound_canonical(t.min_x);
+  t.min_y = bound_canonical(t.min_y);
+  t.min_z = bound_canonical(t.min_z);
+  t.max_x = bound_canonical(t.max_x);
+  t.max_y = bound_canonical(t.max_y);
+  t.max_z = bound_canonical(t.max_z);
+  return t;
 }
 
 #ifdef __cplusplus

@@ -16,6 +16,7 @@
 //    other; node = row * pitch + col, as the state.
 //  - normals: one vec4 per node (nx, ny, nz, 0), compact: node row * cols + col, the LOD's index
 //    buffer's numbering, which the water vertex shader reads them by.
+//  - tile columns and tile bounds (only while tracked): shared/tile_bounds.h's TileBounds, 24 bytes.
 #ifndef POND_WATER_GPU_H
 #define POND_WATER_GPU_H
 
@@ -52,6 +53,17 @@
 #define POND_NORMALS_BINDING_STATE 0    // uniform texel buffer, R32_SFLOAT view of the state
 #define POND_NORMALS_BINDING_NORMALS 1  // storage buffer: the normals, vec4[]
 #define POND_NORMALS_BINDINGS 2
+// The normals' tile variant (POND_NORMALS_TILES, shared/tile_bounds.h; on request only) also has:
+#define POND_NORMALS_BINDING_TILE_COLUMNS 2  // storage buffer: TileBounds[], column j's bounds over tile
+                                             // row b's nodes at b * cols + j
+#define POND_NORMALS_TILES_BINDINGS 3
+
+// Bindings of water_tiles.comp: the tile columns above in, the tile bounds out (TileBounds[],
+// tile (a, b) at b * tiles_x + a).
+#define POND_TILES_BINDING_COLUMNS 0  // uniform texel buffer, R32_SFLOAT view of the tile columns
+#define POND_TILES_BINDING_BOUNDS 1   // storage buffer: TileBounds[]
+#define POND_TILES_BINDINGS 2
+#define POND_TILES_LOCAL_X 64  // tiles per workgroup of water_tiles.comp
 
 #ifdef __cplusplus
 #define POND_GPU_CONST inline constexpr
@@ -99,6 +111,13 @@ struct NormalsPush {
   uint cols;
   uint stride;
   uint pitch;  // nodes between two rows of the state (the normals are compact: row * cols + col)
+};
+
+// Push constants of water_tiles.comp.
+struct TilesPush {
+  uint cols;     // nodes along a row (the tile columns' row length)
+  uint tiles_x;  // tiles along a row
+  uint tiles;    // tiles_x * tiles_y
 };
 
 #ifdef __cplusplus

@@ -98,4 +98,15 @@ vk::raii::BufferView create_texel_view(const Context& ctx, const Buffer& buffer,
                                                                      .offset = 0, .range = VK_WHOLE_SIZE});
 }
 
+bool host_readable_in_place(const Context& ctx, const Buffer& b) {
+  const vk::MemoryPropertyFlags host = MP::eHostVisible | MP::eHostCached | MP::eHostCoherent;
+  const vk::PhysicalDeviceMemoryProperties props = ctx.physical().getMemoryProperties();
+  const std::uint32_t bits = b.buffer.getMemoryRequirements().memoryTypeBits;
+  for (std::uint32_t t = 0; t < props.memoryTypeCount; ++t) {
+    const vk::MemoryPropertyFlags flags = props.memoryTypes[t].propertyFlags;
+    if ((bits >> t & 1u) && (flags & MP::eDeviceLocal) && (flags & host) != host) return false;
+  }
+  return true;
+}
+
 }  // namespace pond::gpu

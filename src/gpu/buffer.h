@@ -49,6 +49,10 @@ Buffer create_buffer(const Context& ctx, vk::DeviceSize size, vk::BufferUsageFla
 // 65536 on every device; a 257^2 grid's state needs more).
 vk::raii::BufferView create_texel_view(const Context& ctx, const Buffer& buffer, vk::Format format, const char* what);
 
+// Whether the host can read device buffer `b` in place: every device-local memory type it could be
+// in is also host-visible, cached and coherent (lavapipe: the "GPU" memory is the CPU's).
+bool host_readable_in_place(const Context& ctx, const Buffer& b);
+
 // Fills a device buffer from host bytes through a temporary upload buffer (waits for the copy).
 void upload(const Context& ctx, const Buffer& dst, std::span<const std::byte> bytes);
 

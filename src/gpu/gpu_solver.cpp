@@ -72,6 +72,7 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, bool drawn)
   // The host's copies: the displacements unless the state is read in place, and the bodies.
   ring_ = std::make_unique<SubmissionRing>(ctx_, state_[0].mapped ? 0 : 3 * stride_ * sizeof(float),
                                            model_.bodies.size() * sizeof(sim::BodyState));
+  tile_grid_ = sim::TileGrid(model_.rows, model_.cols);
   set_state(sim::rest_state(model_), 0);
 }
 
@@ -95,18 +96,10 @@ void GpuSolver::create_buffers() {
   upload(ctx_, reach_, std::as_bytes(std::span(&zero, 1)));
 }
 
-// Where every device-local memory type the state could be in is also host-visible, cached and
-// coherent (lavapipe: the "GPU" memory is the CPU's), the state stays mapped and the host reads
-// the displacements in place instead of a copy of them (displacements()).
+// Where the state's memory is host-readable in place (lavapipe), the state stays mapped and the
+// host reads the displacements there instead of a copy of them (displacements()).
 void GpuSolver::map_state_where_host_readable() {
-  using MP = vk::MemoryPropertyFlagBits;
-  const vk::MemoryPropertyFlags host = MP::eHostVisible | MP::eHostCached | MP::eHostCoherent;
-  const vk::PhysicalDeviceMemoryProperties props = ctx_.physical().getMemoryProperties();
-  const std::uint32_t bits = state_[0].buffer.getMemoryRequirements().memoryTypeBits;
-  for (std::uint32_t t = 0; t < props.memoryTypeCount; ++t) {
-    const vk::MemoryPropertyFlags flags = props.memoryTypes[t].propertyFlags;
-    if ((bits >> t & 1u) && (flags & MP::eDeviceLocal) && (flags & host) != host) return;
-  }
+  if (!host_readable_in_place(ctx_, state_[0])) return;
   for (Buffer& b : state_) b.mapped = b.memory.mapMemory(0, VK_WHOLE_SIZE);
 }
 
@@ -161,7 +154,9 @@ void GpuSolver::submit(std::int64_t steps, bool publish) const {
   if (contact_ && steps > 0) contact_->write_schedule(step_, steps, region);
   const std::int64_t first_step = step_;
   for (std::int64_t k = 0; k < steps; ++k) record_step(cmd, region, first_step);
-  if (publish) kernels_->record_normals(cmd, cur_);
+  // The normals (with the tile bounds where tracked) last: of the state every dispatch left.
+  if (publish && tiles_) tiles_->record(cmd, cur_, region);
+  else if (publish) kernels_->record_normals(cmd, cur_);
   s.published = publish;
   record_copies(cmd, s);
   ring_->submit();
@@ -313,6 +308,25 @@ sim::Normals GpuSolver::normals() const {
     n.z.push_back(v[4 * k + 2]);
   }
   return n;
+}
+
+void GpuSolver::track_tile_bounds(bool on) {
+  if (on == static_cast<bool>(tiles_)) return;
+  if (!on) {
+    ctx_.queue().waitIdle();  // a renderer's frames in flight may read the bounds
+    tiles_.reset();
+    return;
+  }
+  tiles_ = std::make_unique<TileKernels>(ctx_, model_, *kernels_, normals_,
+                                         model_.math == sim::MathMode::exact && ctx_.denorm_preserve(),
+                                         SubmissionRing::kSize);
+  submit(0, true);  // the current state's bounds (and its splashes)
+}
+
+std::span<const sim::TileBounds> GpuSolver::tile_bounds() const {
+  if (!tiles_) return {};
+  const Submission& s = published();  // the bounds of the current state
+  return tiles_->host_bounds(ring_->index_of(s));
 }
 
 void GpuSolver::set_body_models(std::vector<sim::BodyModel> bodies) {

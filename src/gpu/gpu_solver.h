@@ -15,6 +15,7 @@
 //    inversesqrt, contraction allowed) is the same pipeline with a specialization constant.
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,7 @@
 #include "gpu/buffer.h"
 #include "gpu/context.h"
 #include "gpu/submission_ring.h"
+#include "gpu/tile_kernels.h"
 #include "gpu/water_kernels.h"
 #include "gpu/water_layout.h"
 #include "sim/model.h"
@@ -70,6 +72,19 @@ class GpuSolver : public sim::Solver {
   const Buffer& normals_buffer() const { return normals_; }
   const Buffer* bodies_buffer() const { return contact_ ? &contact_->bodies() : nullptr; }
 
+  // Whether every submission that publishes (as above; readers that wait make one) also leaves
+  // the tile bounds (shared/tile_bounds.h) of its state, with sim::compute_tile_bounds's bits.
+  // Off by default: the plain normals pass, no buffers. Switching on submits the current state's
+  // bounds; switching off waits for the queue (frames in flight may read them).
+  void track_tile_bounds(bool on) override;
+  // The current state's tile bounds on the host, tile (a, b) at b * tiles_x + a, valid as
+  // displacements() is (it waits for the last submission, as that does); empty while not tracked.
+  std::span<const sim::TileBounds> tile_bounds() const override;
+  // The same in the GPU's buffer as the last submission left it (a renderer copies or binds it;
+  // as normals_buffer(): storage, transfer source), and their grid; null while not tracked.
+  const Buffer* tile_bounds_buffer() const { return tiles_ ? &tiles_->bounds() : nullptr; }
+  const sim::TileGrid& tile_grid() const { return tile_grid_; }
+
   static constexpr std::int64_t kMaxDispatchesPerSubmit = 4096;
 
  private:
@@ -101,6 +116,8 @@ class GpuSolver : public sim::Solver {
   std::vector<std::uint32_t> table_first_;  // first entry of each perturbation in table_
   std::unique_ptr<WaterKernels> kernels_;
   std::unique_ptr<BodyContact> contact_;  // with bodies only: after each substep
+  sim::TileGrid tile_grid_;
+  std::unique_ptr<TileKernels> tiles_;    // while the tile bounds are tracked: with the normals
   std::unique_ptr<SubmissionRing> ring_;
   // Mutable: the const readers submit the queued splashes first (flush_splashes()).
   mutable std::vector<PerturbEntry> splash_entries_;          // queued, node = row * pitch + col

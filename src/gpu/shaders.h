@@ -11,6 +11,9 @@ namespace pond::gpu {
 std::span<const std::uint32_t> water_step_spirv(bool int64_stores, bool denorm_preserve);
 std::span<const std::uint32_t> water_perturb_spirv(bool denorm_preserve);
 std::span<const std::uint32_t> water_normals_spirv(bool denorm_preserve);
+// The normals that also write the tile bounds' columns, and the tiles from those (tile_kernels.h).
+std::span<const std::uint32_t> water_normals_tiles_spirv(bool denorm_preserve);
+std::span<const std::uint32_t> water_tiles_spirv(bool denorm_preserve);
 std::span<const std::uint32_t> water_contact_spirv(bool denorm_preserve);
 
 }  // namespace pond::gpu

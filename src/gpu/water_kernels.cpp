@@ -187,15 +187,16 @@ void WaterKernels::record_perturb(const vk::raii::CommandBuffer& cmd, int c, int
   cmd.dispatch(group_count(push.count, POND_PERTURB_LOCAL_X), 1, 1);
 }
 
-void WaterKernels::record_normals(const vk::raii::CommandBuffer& cmd, int c) const {
+void WaterKernels::record_normals_with(const vk::raii::CommandBuffer& cmd, const ComputePipeline& pipe,
+                                       const vk::raii::DescriptorSet& set) const {
   const NormalsPush push{.rows = static_cast<std::uint32_t>(model_.rows),
                          .cols = static_cast<std::uint32_t>(model_.cols),
                          .stride = static_cast<std::uint32_t>(stride_),
                          .pitch = static_cast<std::uint32_t>(pitch_)};
   record_barrier(cmd);
-  cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *normals_pipe_.pipeline);
-  cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *normals_pipe_.layout, 0, *normals_sets_[c], nullptr);
-  cmd.pushConstants<NormalsPush>(*normals_pipe_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
+  cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipe.pipeline);
+  cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipe.layout, 0, *set, nullptr);
+  cmd.pushConstants<NormalsPush>(*pipe.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
   cmd.dispatch(group_count(push.cols, normals_local_x_), group_count(push.rows, POND_NORMALS_ROWS_PER_INVOCATION), 1);
   using S = vk::PipelineStageFlagBits2;
   using A = vk::AccessFlagBits2;

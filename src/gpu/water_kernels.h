@@ -42,7 +42,14 @@ class WaterKernels {
   void bind_splash_table(std::uint32_t index, const Buffer& table);
   // The normals of state c; a barrier before it (after every earlier compute or transfer write)
   // and after it (ready for the vertex shader, the caustics' compute reads and transfers).
-  void record_normals(const vk::raii::CommandBuffer& cmd, int c) const;
+  void record_normals(const vk::raii::CommandBuffer& cmd, int c) const {
+    record_normals_with(cmd, normals_pipe_, normals_sets_[c]);
+  }
+  // The same with a variant of the normals shader and its set (its first bindings the plain
+  // one's, for state c): the tile bounds' (gpu/tile_kernels.h).
+  void record_normals_with(const vk::raii::CommandBuffer& cmd, const ComputePipeline& pipe,
+                           const vk::raii::DescriptorSet& set) const;
+  std::uint32_t normals_local_x() const { return normals_local_x_; }  // its workgroup width
   // Compute and transfer writes before it made visible to compute and transfer after it (also
   // across submissions on the queue).
   static void record_barrier(const vk::raii::CommandBuffer& cmd);

@@ -4,6 +4,7 @@
 // silently disagree with the other.
 #include <cstddef>
 
+#include "shared/tile_bounds.h"
 #include "shared/water_gpu.h"
 
 namespace pond::gpu {
@@ -12,6 +13,8 @@ using shared::NormalsPush;
 using shared::PerturbEntry;
 using shared::PerturbPush;
 using shared::StepPush;
+using shared::TileBounds;
+using shared::TilesPush;
 
 static_assert(sizeof(StepPush) == 36);
 static_assert(offsetof(StepPush, rows) == 0 && offsetof(StepPush, cols) == 4 && offsetof(StepPush, stride) == 8 &&
@@ -23,6 +26,11 @@ static_assert(sizeof(PerturbPush) == 20 && offsetof(PerturbPush, first) == 0 && 
               offsetof(PerturbPush, stride) == 8 && offsetof(PerturbPush, target) == 12 &&
               offsetof(PerturbPush, mode) == 16);
 static_assert(sizeof(NormalsPush) == 16 && offsetof(NormalsPush, stride) == 8 && offsetof(NormalsPush, pitch) == 12);
+static_assert(sizeof(TilesPush) == 12 && offsetof(TilesPush, tiles_x) == 4 && offsetof(TilesPush, tiles) == 8);
+static_assert(sizeof(TileBounds) == 24 && offsetof(TileBounds, min_y) == 4 && offsetof(TileBounds, max_x) == 12 &&
+              offsetof(TileBounds, max_z) == 20);
+// The normals' strip of rows is a tile row: their tile variant writes each column's bounds over it.
+static_assert(POND_NORMALS_ROWS_PER_INVOCATION == POND_TILE_CELLS);
 
 // Components of the state buffer (structure of arrays), in the order of the shared header.
 enum StateComponent : unsigned { kUx = 0, kUy, kUz, kVx, kVy, kVz, kComponents };

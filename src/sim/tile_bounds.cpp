@@ -10,9 +10,7 @@ constexpr int kCells = POND_TILE_CELLS;
 
 TileBounds node_bounds(const WaterState& s, std::size_t n) { return {s.ux[n], s.uy[n], s.uz[n], s.ux[n], s.uy[n], s.uz[n]}; }
 
-void make_canonical(TileBounds& t) {
-  for (float* b : {&t.min_x, &t.min_y, &t.min_z, &t.max_x, &t.max_y, &t.max_z}) *b = shared::bound_canonical(*b);
-}
+void make_canonical(TileBounds& t) { t = shared::bounds_canonical(t); }
 
 // The tiles holding node index k of a side of `tiles` tiles: k / 16, and the one before where k
 // is a shared border.

@@ -18,14 +18,7 @@ inline constexpr float kInf = std::numeric_limits<float>::infinity();
 inline constexpr TileBounds kNoNodes{kInf, kInf, kInf, -kInf, -kInf, -kInf};
 
 // t widened by the bounds `by` (or by one node: {x, y, z, x, y, z}), by the shared rules.
-inline void widen(TileBounds& t, const TileBounds& by) {
-  t.min_x = shared::bound_below(t.min_x, by.min_x);
-  t.min_y = shared::bound_below(t.min_y, by.min_y);
-  t.min_z = shared::bound_below(t.min_z, by.min_z);
-  t.max_x = shared::bound_above(t.max_x, by.max_x);
-  t.max_y = shared::bound_above(t.max_y, by.max_y);
-  t.max_z = shared::bound_above(t.max_z, by.max_z);
-}
+inline void widen(TileBounds& t, const TileBounds& by) { t = shared::bounds_widened(t, by); }
 
 // A rectangle of nodes, inclusive.
 struct NodeRect {

@@ -111,5 +111,19 @@ TEST(SpirvTest, PerturbAndNormalsAreExact) {
   }
 }
 
+// The tile bounds' shaders (gpu/tile_kernels.h): the normals' variant as exact as the normals; the
+// merge only compares and selects, with NaN compares kept (SignedZeroInfNanPreserve).
+TEST(SpirvTest, TileBoundsShadersAreExact) {
+  for (const bool denorm : {false, true}) {
+    const std::string text = disassemble(gpu::water_normals_tiles_spirv(denorm), "water_normals_tiles", false, false);
+    expect_exact(inspect(text), "water_normals_tiles");
+    EXPECT_NE(text.find("TileColumns"), std::string::npos) << "not the tile variant";
+    const Findings tiles = inspect(disassemble(gpu::water_tiles_spirv(denorm), "water_tiles", false, false));
+    EXPECT_TRUE(tiles.forbidden.empty());
+    EXPECT_TRUE(tiles.contracted.empty());
+    EXPECT_TRUE(tiles.signed_zero_preserve);
+  }
+}
+
 }  // namespace
 }  // namespace pond::test
