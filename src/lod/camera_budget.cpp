@@ -60,11 +60,14 @@ ViewBasis view_basis(const Camera& c) {
   return b;
 }
 
-BoxBudget::BoxBudget(const Camera& c, double tolerance_px, float largest) : basis_(view_basis(c)) {
+BudgetTerms budget_terms(const Camera& c, double tolerance_px, float largest) {
+  BudgetTerms t;
+  t.basis = view_basis(c);
   const double eye_max = std::max({std::abs(c.eye[0]), std::abs(c.eye[1]), std::abs(c.eye[2])});
-  delta_ = 32 * std::max(double(largest), eye_max) * std::numeric_limits<float>::epsilon();
-  per_depth_ = tolerance_px / basis_.pixels_per_radian * kBudgetShrink;
-  tx_ = basis_.tan_x * (1 + kFrustumSlack), ty_ = basis_.tan_y * (1 + kFrustumSlack);
+  t.delta = 32 * std::max(double(largest), eye_max) * std::numeric_limits<float>::epsilon();
+  t.per_depth = tolerance_px / t.basis.pixels_per_radian * kBudgetShrink;
+  t.tan_x = t.basis.tan_x * (1 + kFrustumSlack), t.tan_y = t.basis.tan_y * (1 + kFrustumSlack);
+  return t;
 }
 
 double BoxBudget::least(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
@@ -73,32 +76,28 @@ double BoxBudget::least(const std::array<double, 3>& lo, const std::array<double
   // by a margin far above the double rounding here and the float rounding of node_budgets.
   double least_depth = std::numeric_limits<double>::infinity();
   bool in[5] = {false, false, false, false, false};
-  const double margin = 4 * delta_ * (1 + tx_ + ty_);
+  const double margin = 4 * t_.delta * (1 + t_.tan_x + t_.tan_y);
   for (int k = 0; k < 8; ++k) {
     const Vec corner{k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]};
-    const Vec d = sub(corner, basis_.eye);
-    const double depth = dot(d, basis_.forward), sx = dot(d, basis_.right), sy = dot(d, basis_.up);
+    const Vec d = sub(corner, t_.basis.eye);
+    const double depth = dot(d, t_.basis.forward), sx = dot(d, t_.basis.right), sy = dot(d, t_.basis.up);
     least_depth = std::min(least_depth, depth);
     in[0] |= depth > -margin;
-    in[1] |= tx_ * depth - sx > -margin, in[2] |= tx_ * depth + sx > -margin;
-    in[3] |= ty_ * depth - sy > -margin, in[4] |= ty_ * depth + sy > -margin;
+    in[1] |= t_.tan_x * depth - sx > -margin, in[2] |= t_.tan_x * depth + sx > -margin;
+    in[3] |= t_.tan_y * depth - sy > -margin, in[4] |= t_.tan_y * depth + sy > -margin;
   }
   // Looking along +-y the roll is free (view_basis): only the depth plane culls.
-  const bool outside = !in[0] || (!basis_.cone && (!in[1] || !in[2] || !in[3] || !in[4]));
+  const bool outside = !in[0] || (!t_.basis.cone && (!in[1] || !in[2] || !in[3] || !in[4]));
   if (outside) return std::numeric_limits<double>::infinity();
-  return per_depth_ * std::max(least_depth - delta_, 0.0);
+  return t_.per_depth * std::max(least_depth - t_.delta, 0.0);
 }
 
-void node_budgets(const NodePositions& p, const Camera& c, double tolerance_px, float largest,
-                  float* budget) {
-  const ViewBasis b = view_basis(c);
-  const double eye_max = std::max({std::abs(b.eye[0]), std::abs(b.eye[1]), std::abs(b.eye[2])});
-  const float delta = static_cast<float>(32 * std::max(double(largest), eye_max) *
-                                         std::numeric_limits<float>::epsilon());
-  const float tx = static_cast<float>(b.tan_x * (1 + kFrustumSlack));
-  const float ty = static_cast<float>(b.tan_y * (1 + kFrustumSlack));
+void node_budgets(const NodePositions& p, const BudgetTerms& t, float* budget) {
+  const ViewBasis& b = t.basis;
+  const float delta = static_cast<float>(t.delta);
+  const float tx = static_cast<float>(t.tan_x), ty = static_cast<float>(t.tan_y);
   const float cone2 = tx * tx + ty * ty;
-  const float per_depth = static_cast<float>(tolerance_px / b.pixels_per_radian * kBudgetShrink);
+  const float per_depth = static_cast<float>(t.per_depth);
   const float infinite = std::numeric_limits<float>::infinity();
   const float ex = float(b.eye[0]), ey = float(b.eye[1]), ez = float(b.eye[2]);
   const float f0 = float(b.forward[0]), f1 = float(b.forward[1]), f2 = float(b.forward[2]);

@@ -33,24 +33,32 @@ struct ViewBasis {
 };
 ViewBasis view_basis(const Camera& camera);
 
+// One frame's budget terms, from the camera, tau and `largest` (a bound on every |coordinate|):
+// depth and screen offsets computed in float are known within delta = 32 eps max(largest, |eye|),
+// so the frustum is widened (by kFrustumSlack and delta) and the depth lowered by delta before
+// the budget per_depth * depth is taken.
+struct BudgetTerms {
+  ViewBasis basis;
+  double delta = 0, per_depth = 0;  // per_depth: tau / K, shrunk past the products' rounding
+  double tan_x = 0, tan_y = 0;      // the widened frustum's half extents at depth 1
+};
+BudgetTerms budget_terms(const Camera& camera, double tolerance_px, float largest);
+
 // The least budget of any node in a world box: +infinity when the box lies wholly outside the
-// frustum (widened as the node budgets' is), else tau * (its least depth) / K, lowered by `delta`
-// (as node_budgets: `largest` bounds every |coordinate|), never below 0. In double.
+// frustum (widened as the node budgets' is), else per_depth * (its least depth - delta), never
+// below 0. In double.
 class BoxBudget {
  public:
-  BoxBudget(const Camera& camera, double tolerance_px, float largest);
+  explicit BoxBudget(const BudgetTerms& terms) : t_(terms) {}
   double least(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const;
 
  private:
-  ViewBasis basis_;
-  double per_depth_, delta_, tx_, ty_;
+  BudgetTerms t_;
 };
 
 // Writes budget[n] (world units) for every node of `positions` (stride 1). Computed in float
-// (vectorized) and kept conservative: `largest` must bound every |coordinate| of the positions;
-// depth and screen offsets are then known within delta = 32 eps max(largest, |eye|), so the
-// frustum is widened and the depth lowered by delta before the budget is taken.
-void node_budgets(const NodePositions& positions, const Camera& camera, double tolerance_px,
-                  float largest, float* budget);
+// (vectorized) and kept conservative, with `terms` (of a `largest` bounding every |coordinate| of
+// the positions).
+void node_budgets(const NodePositions& positions, const BudgetTerms& terms, float* budget);
 
 }  // namespace pond::lod

@@ -179,8 +179,7 @@ void LodBuilder::activate(Point v) {
 
 std::size_t LodBuilder::build(const NodePositions& p, const Camera& camera, double tolerance_px,
                               std::span<std::uint32_t> out) {
-  validate(camera, tolerance_px);
-  if (p.rows != rows() || p.cols != cols()) return build(p, TileRanges(), camera, tolerance_px, out);  // throws
+  validate(camera, tolerance_px);  // a bad camera before reading every node
   return build(p, tile_ranges(p), camera, tolerance_px, out);
 }
 
@@ -202,8 +201,9 @@ std::size_t LodBuilder::build(const NodePositions& p, const TileRanges& ranges, 
   ranges_ = &ranges;
   positions_ = p;
   largest_ = ranges.largest();
-  box_budget_.emplace(camera, tolerance_px, largest_);
-  blocks_.begin(p, camera, tolerance_px, largest_);
+  const BudgetTerms terms = budget_terms(camera, tolerance_px, largest_);
+  box_budget_.emplace(terms);
+  blocks_.begin(p, terms, largest_);
 
   for (std::uint32_t id : marked_) state_[id] = 0;
   marked_.clear();

@@ -2,10 +2,15 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
+#include <string>
 
 #include <emmintrin.h>  // SSE2: four interleaved records at a time
+
+#include "core/errors.h"
 
 namespace pond::lod {
 namespace {
@@ -114,6 +119,19 @@ float copy_window(const NodePositions& p, int row0, int col0, int rows, int wind
     largest = std::max(largest, copy_records(p.x + from, p.y + from, p.z + from, stride, cols, x + to, y + to, z + to));
   }
   return std::bit_cast<float>(largest);
+}
+
+float copy_finite_window(const NodePositions& p, int row0, int col0, int rows, int cols, float* x, float* y,
+                         float* z) {
+  const float largest = copy_window(p, row0, col0, rows, cols, x, y, z);
+  if (largest <= std::numeric_limits<float>::max()) return largest;  // false for inf and NaN
+  for (int k = 0; k < rows * cols; ++k)
+    if (!std::isfinite(x[k]) || !std::isfinite(y[k]) || !std::isfinite(z[k])) {
+      const std::size_t row = static_cast<std::size_t>(row0 + k / cols), col = static_cast<std::size_t>(col0 + k % cols);
+      throw InputError("node " + std::to_string(row * static_cast<std::size_t>(p.cols) + col) + " (row " +
+                       std::to_string(row) + ", col " + std::to_string(col) + ") has a non-finite position");
+    }
+  return largest;
 }
 
 std::array<float, 3> world_position(const NodePositions& p, int row, int col) {

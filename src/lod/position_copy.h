@@ -20,6 +20,11 @@ float copy_positions(const NodePositions& positions, float* x, float* y, float* 
 float copy_window(const NodePositions& positions, int row0, int col0, int rows, int cols, float* x, float* y,
                   float* z);
 
+// copy_window(), throwing InputError naming the first node (its grid index, row and column) with a
+// non-finite coordinate.
+float copy_finite_window(const NodePositions& positions, int row0, int col0, int rows, int cols, float* x, float* y,
+                         float* z);
+
 // Node (row, col)'s world position, as the copies compute it.
 std::array<float, 3> world_position(const NodePositions& positions, int row, int col);
 

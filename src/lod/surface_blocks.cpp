@@ -1,13 +1,9 @@
 #include "lod/surface_blocks.h"
 
 #include <algorithm>
-#include <cmath>
-#include <string>
 
-#include "core/errors.h"
 #include "lod/position_copy.h"
 #include "lod/triangle_scan.h"
-#include "shared/tile_bounds.h"
 
 namespace pond::lod {
 namespace {
@@ -23,8 +19,8 @@ SurfaceBlocks::SurfaceBlocks(int rows, int cols)
   slot_.assign(blocks, 0);
 }
 
-void SurfaceBlocks::begin(const NodePositions& positions, const Camera& camera, double tolerance_px, float largest) {
-  positions_ = positions, camera_ = camera, tolerance_ = tolerance_px, largest_ = largest;
+void SurfaceBlocks::begin(const NodePositions& positions, const BudgetTerms& terms, float largest) {
+  positions_ = positions, terms_ = terms, largest_ = largest;
   used_ = 0;
   if (++frame_ == 0) {  // after 2^32 frames: every stamp would look current
     std::fill(made_in_.begin(), made_in_.end(), 0u);
@@ -62,16 +58,9 @@ void SurfaceBlocks::make(SurfaceBlock& b, Point origin, int rows, int cols) {
   b.grid = shape(rows, cols);
   const std::size_t n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
   for (std::vector<float>* v : {&b.x, &b.y, &b.z, &b.budget}) v->resize(n + kScanOverread);
-  const float largest = copy_window(positions_, b.origin.y, b.origin.x, rows, cols, b.x.data(), b.y.data(), b.z.data());
-  if (!std::isfinite(largest))
-    for (std::size_t k = 0; k < n; ++k)
-      if (!std::isfinite(b.x[k]) || !std::isfinite(b.y[k]) || !std::isfinite(b.z[k])) {
-        const int row = b.origin.y + static_cast<int>(k) / cols, col = b.origin.x + static_cast<int>(k) % cols;
-        throw InputError("node " + std::to_string(std::size_t(row) * std::size_t(cols_) + std::size_t(col)) + " (row " +
-                         std::to_string(row) + ", col " + std::to_string(col) + ") has a non-finite position");
-      }
+  copy_finite_window(positions_, b.origin.y, b.origin.x, rows, cols, b.x.data(), b.y.data(), b.z.data());
   const NodePositions own = b.positions();
-  node_budgets(own, camera_, tolerance_, largest_, b.budget.data());
+  node_budgets(own, terms_, b.budget.data());
   // The vertices nested_bounds() leaves alone depend on the shape only: set them on a change of shape.
   if (b.bounds.size() != n || b.shaped_for != b.grid) b.bounds.assign(n, kNothingProved);
   b.shaped_for = b.grid;

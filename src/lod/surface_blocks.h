@@ -44,8 +44,9 @@ class SurfaceBlocks {
 
   int blocks_x() const { return blocks_x_; }
   int blocks_y() const { return blocks_y_; }
-  // Forgets the last frame's blocks; `largest` bounds every |world coordinate| of `positions`.
-  void begin(const NodePositions& positions, const Camera& camera, double tolerance_px, float largest);
+  // Forgets the last frame's blocks. `terms` are this frame's, of a `largest` bounding every |world
+  // coordinate| of `positions`.
+  void begin(const NodePositions& positions, const BudgetTerms& terms, float largest);
   // Block (bx, by), made on first use this frame. Throws InputError on a non-finite position in it.
   const SurfaceBlock& block(int bx, int by);
   // The whole grid as one block, made on first use this frame: the cheaper way when most blocks are
@@ -62,8 +63,7 @@ class SurfaceBlocks {
 
   int rows_, cols_, blocks_x_, blocks_y_;
   NodePositions positions_;
-  Camera camera_;
-  double tolerance_ = 1;
+  BudgetTerms terms_;
   float largest_ = 0;
   std::uint32_t frame_ = 0;
   std::vector<std::uint32_t> made_in_;  // per block: the frame it was made in (0: never)

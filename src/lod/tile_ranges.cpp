@@ -14,11 +14,6 @@ namespace {
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr TileBounds kEmpty{kInf, kInf, kInf, -kInf, -kInf, -kInf};
 
-void widen(TileBounds& t, const TileBounds& by) {
-  t.min_x = std::min(t.min_x, by.min_x), t.min_y = std::min(t.min_y, by.min_y), t.min_z = std::min(t.min_z, by.min_z);
-  t.max_x = std::max(t.max_x, by.max_x), t.max_y = std::max(t.max_y, by.max_y), t.max_z = std::max(t.max_z, by.max_z);
-}
-
 // The float at or below (above) a double.
 float down(double v) {
   const float f = static_cast<float>(v);
@@ -45,7 +40,10 @@ TileRanges::TileRanges(int rows, int cols, double spacing, std::vector<TileBound
     std::vector<TileBounds> coarse(static_cast<std::size_t>(nw) * static_cast<std::size_t>(nh), kEmpty);
     for (int b = 0; b < h; ++b)
       for (int a = 0; a < w; ++a)
-        widen(coarse[static_cast<std::size_t>(b / 2) * nw + a / 2], fine[static_cast<std::size_t>(b) * w + a]);
+      {
+        TileBounds& c = coarse[static_cast<std::size_t>(b / 2) * nw + a / 2];
+        c = shared::bounds_widened(c, fine[static_cast<std::size_t>(b) * w + a]);
+      }
     dims_.push_back({nw, nh});
     levels_.push_back(std::move(coarse));
   }
@@ -65,16 +63,6 @@ int TileRanges::level_for(const TileRect& r) const {
   return k;
 }
 
-TileBounds TileRanges::over(const TileRect& r) const {
-  const int k = level_for(r);
-  const std::vector<TileBounds>& level = levels_[static_cast<std::size_t>(k)];
-  const int w = dims_[static_cast<std::size_t>(k)].first;
-  TileBounds t = kEmpty;
-  for (int b = r.b0 >> k; b <= r.b1 >> k; ++b)
-    for (int a = r.a0 >> k; a <= r.a1 >> k; ++a) widen(t, level[static_cast<std::size_t>(b) * w + a]);
-  return t;
-}
-
 TileRanges tile_ranges(const NodePositions& p) {
   // The rest grid's spacing: a guess that only has to be finite (and is exact for a rest grid).
   double spacing = (double(world_position(p, 0, p.cols - 1)[0]) - world_position(p, 0, 0)[0]) / (p.cols - 1);
@@ -88,12 +76,7 @@ TileRanges tile_ranges(const NodePositions& p) {
   for (int b = 0; b < ty; ++b) {
     std::fill(lo.begin(), lo.end(), kInf), std::fill(hi.begin(), hi.end(), -kInf);
     for (int row = b * kTileCells; row <= std::min(b * kTileCells + kTileCells, p.rows - 1); ++row) {
-      const float row_largest = copy_window(p, row, 0, 1, p.cols, x.data(), y.data(), z.data());
-      if (!(row_largest <= std::numeric_limits<float>::max()))
-        for (int k = 0; k < p.cols; ++k)
-          if (!std::isfinite(x[k]) || !std::isfinite(y[k]) || !std::isfinite(z[k]))
-            throw InputError("node " + std::to_string(std::size_t(row) * std::size_t(p.cols) + std::size_t(k)) +
-                             " (row " + std::to_string(row) + ", col " + std::to_string(k) + ") has a non-finite position");
+      const float row_largest = copy_finite_window(p, row, 0, 1, p.cols, x.data(), y.data(), z.data());
       largest = std::max(largest, row_largest);
       // Deviations in double: exact but for the rest position's rounding (~1e-16 relative).
       const double rest_z = row * spacing;

@@ -5,7 +5,7 @@
 // An interpolation over nodes of a region misses any node of it by at most the length of the
 // region's ranges' widths (the rest grid is linear, so it interpolates exactly), and the region's
 // world box is its rest box widened by the ranges: that is all the builder's coarse test needs.
-// A pyramid of 2^k x 2^k tile blocks answers a rectangle of tiles in one or two look-ups.
+// A pyramid of 2^k x 2^k tile blocks covers a rectangle of tiles in a few cells (range_proof.h).
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -41,9 +41,6 @@ class TileRanges {
 
   // The tiles holding every node of columns [x0, x1] and rows [y0, y1] (inside the grid).
   TileRect tiles_of(int x0, int x1, int y0, int y1) const;
-  // The ranges over the tiles of `r` (and possibly a few more when r is not aligned to its size).
-  TileBounds over(const TileRect& r) const;
-
   // The pyramid: level k's cells are blocks of 2^k x 2^k tiles, cells_x(k) x cells_y(k) of them.
   int levels() const { return static_cast<int>(levels_.size()); }
   int cells_x(int k) const { return dims_[static_cast<std::size_t>(k)].first; }

@@ -132,13 +132,13 @@ TEST(SurfaceBlocks, NestedBoundsHoldAndMatchTheWholeGrids) {
     std::vector<float> x(n), y(n), z(n), budget(n);
     lod::copy_positions(p, x.data(), y.data(), z.data());
     const auto own = lod::soa_positions(x.data(), y.data(), z.data(), rows, cols);
-    lod::node_budgets(own, cam, 1.0, largest, budget.data());
+    lod::node_budgets(own, lod::budget_terms(cam, 1.0, largest), budget.data());
     std::vector<lod::NestedBound> whole(n, lod::kNothingProved);
     const lod::GridHierarchy grid(rows, cols);
     lod::nested_bounds(grid, own, largest, budget.data(), whole.data());
 
     lod::SurfaceBlocks blocks(rows, cols);
-    blocks.begin(p, cam, 1.0, largest);
+    blocks.begin(p, lod::budget_terms(cam, 1.0, largest), largest);
     int compared = 0, held = 0, centres = 0;
     const bool full_check = rows == 100;  // node by node on one grid (a few million nodes)
     for (int by = 0; by * lod::kBlockCells < rows - 1; ++by)
