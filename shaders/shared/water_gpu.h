@@ -65,6 +65,14 @@
 #define POND_TILES_BINDINGS 2
 #define POND_TILES_LOCAL_X 64  // tiles per workgroup of water_tiles.comp
 
+// Bindings of water_gather.comp (gpu/displacement_readback.h): runs of the state's ux | uy | uz
+// packed for the host.
+#define POND_GATHER_BINDING_STATE 0   // storage buffer: the state, as 32-bit words
+#define POND_GATHER_BINDING_RUNS 1    // storage buffer: GatherRun[]
+#define POND_GATHER_BINDING_PACKED 2  // storage buffer: component by component, runs in order
+#define POND_GATHER_BINDINGS 3
+#define POND_GATHER_LOCAL_X 64  // nodes of a run per invocation round
+
 #ifdef __cplusplus
 #define POND_GPU_CONST inline constexpr
 namespace pond::shared {
@@ -118,6 +126,21 @@ struct TilesPush {
   uint cols;     // nodes along a row (the tile columns' row length)
   uint tiles_x;  // tiles along a row
   uint tiles;    // tiles_x * tiles_y
+};
+
+// One run of water_gather.comp: `nodes` nodes from state node `first`, to packed node `packed`.
+struct GatherRun {
+  uint first;
+  uint nodes;
+  uint packed;
+  uint unused;
+};
+
+// Push constants of water_gather.comp.
+struct GatherPush {
+  uint runs;
+  uint stride;      // words between the state's components
+  uint run_nodes;   // nodes of all runs: words between the packed components
 };
 
 #ifdef __cplusplus

@@ -66,14 +66,27 @@ void Buffer::invalidate(const Context& ctx) const {
       vk::MappedMemoryRange{.memory = *memory, .offset = 0, .size = VK_WHOLE_SIZE});
 }
 
-void Buffer::flush_range(const Context& ctx, vk::DeviceSize offset, vk::DeviceSize bytes) const {
-  if (coherent || !mapped || bytes == 0) return;
-  // Whole atoms, or up to the end of the mapping where the rounded range would pass it.
+namespace {
+
+// `bytes` from `offset` of b's mapping, rounded out to whole atoms, or up to the end of the mapping
+// where the rounded range would pass it.
+vk::MappedMemoryRange atom_range(const Context& ctx, const Buffer& b, vk::DeviceSize offset, vk::DeviceSize bytes) {
   const vk::DeviceSize atom = ctx.non_coherent_atom();
   const vk::DeviceSize begin = offset / atom * atom;
   const vk::DeviceSize end = bytes == VK_WHOLE_SIZE ? VK_WHOLE_SIZE : (offset + bytes + atom - 1) / atom * atom;
-  ctx.device().flushMappedMemoryRanges(vk::MappedMemoryRange{
-      .memory = *memory, .offset = begin, .size = end >= memory_size ? VK_WHOLE_SIZE : end - begin});
+  return {.memory = *b.memory, .offset = begin, .size = end >= b.memory_size ? VK_WHOLE_SIZE : end - begin};
+}
+
+}  // namespace
+
+void Buffer::invalidate_first(const Context& ctx, vk::DeviceSize bytes) const {
+  if (coherent || !mapped || bytes == 0) return;
+  ctx.device().invalidateMappedMemoryRanges(atom_range(ctx, *this, 0, bytes));
+}
+
+void Buffer::flush_range(const Context& ctx, vk::DeviceSize offset, vk::DeviceSize bytes) const {
+  if (coherent || !mapped || bytes == 0) return;
+  ctx.device().flushMappedMemoryRanges(atom_range(ctx, *this, offset, bytes));
 }
 
 void upload(const Context& ctx, const Buffer& dst, std::span<const std::byte> bytes) {

@@ -29,6 +29,8 @@ struct Buffer {
   vk::DescriptorBufferInfo whole() const { return {.buffer = *buffer, .offset = 0, .range = VK_WHOLE_SIZE}; }
   // Makes GPU writes visible to the host (no-op for coherent memory); call after the fence.
   void invalidate(const Context& ctx) const;
+  // The same for the first `bytes` (rounded out to whole atoms).
+  void invalidate_first(const Context& ctx, vk::DeviceSize bytes) const;
   // Makes the host's writes to the first `bytes` (whole atoms; default: all) visible to the GPU
   // (no-op for coherent memory); call before the submission that reads them.
   void flush(const Context& ctx, vk::DeviceSize bytes = VK_WHOLE_SIZE) const { flush_range(ctx, 0, bytes); }

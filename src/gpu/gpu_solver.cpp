@@ -72,6 +72,7 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, bool drawn)
   // The host's copies: the displacements unless the state is read in place, and the bodies.
   ring_ = std::make_unique<SubmissionRing>(ctx_, state_[0].mapped ? 0 : 3 * stride_ * sizeof(float),
                                            model_.bodies.size() * sizeof(sim::BodyState));
+  if (!state_[0].mapped) readback_ = std::make_unique<DisplacementReadback>(ctx_, pitch_, stride_);
   tile_grid_ = sim::TileGrid(model_.rows, model_.cols);
   set_state(sim::rest_state(model_), 0);
 }
@@ -215,9 +216,7 @@ void GpuSolver::record_step(const vk::raii::CommandBuffer& cmd, std::uint32_t re
 // made visible to the host; and everything the submission wrote before any later submission's
 // commands (the renderer's reads, uploads that overwrite the state).
 void GpuSolver::record_copies(const vk::raii::CommandBuffer& cmd, const Submission& s) const {
-  if (s.published && *s.displacements.buffer)
-    cmd.copyBuffer(*state_[cur_].buffer, *s.displacements.buffer,
-                   vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = s.displacements.size});
+  if (s.published && readback_) readback_->record(cmd, state_[cur_], s, ring_->index_of(s));
   if (s.published && contact_)
     cmd.copyBuffer(*contact_->bodies().buffer, *s.bodies.buffer,
                    vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = s.bodies.size});
@@ -277,14 +276,44 @@ sim::WaterState GpuSolver::read_state() const {
 }
 
 sim::HostDisplacements GpuSolver::displacements() const {
-  const Submission* s = &published();
+  const Submission& s = published();
+  if (readback_) return readback_->host(s, ring_->index_of(s));
   const float* u = static_cast<const float*>(state_[cur_].mapped);  // read in place (lavapipe)
-  if (!u) {
-    if (!s->displacements_seen) s->displacements.invalidate(ctx_);
-    s->displacements_seen = true;
-    u = static_cast<const float*>(s->displacements.mapped);
-  }
   return {u, u + stride_, u + 2 * stride_, pitch_};
+}
+
+namespace {
+
+// `windows` cut to a rows x cols grid, the empty ones left out.
+std::vector<core::GridWindow> within(std::span<const core::GridWindow> windows, int rows, int cols) {
+  std::vector<core::GridWindow> out;
+  for (const core::GridWindow& w : windows) {
+    const int r0 = std::max(0, w.row0), c0 = std::max(0, w.col0);
+    const int r1 = std::min(rows, w.row0 + w.rows), c1 = std::min(cols, w.col0 + w.cols);
+    if (r0 < r1 && c0 < c1) out.push_back({r0, c0, r1 - r0, c1 - c0});
+  }
+  return out;
+}
+
+}  // namespace
+
+void GpuSolver::keep_on_host(std::optional<std::vector<core::GridWindow>> windows) const {
+  if (!readback_) return;
+  if (!windows) return readback_->keep(std::nullopt);
+  readback_->keep(core::NodeRuns(within(*windows, model_.rows, model_.cols)));
+}
+
+bool GpuSolver::holds_on_host(const core::GridWindow& w) const {
+  if (!readback_) return true;
+  const std::vector<core::GridWindow> in = within(std::span(&w, 1), model_.rows, model_.cols);
+  const Submission& s = published();
+  return in.empty() || readback_->holds(s, ring_->index_of(s), in.front());
+}
+
+void GpuSolver::bring_to_host(std::span<const core::GridWindow> windows) const {
+  if (!readback_) return;
+  const Submission& s = published();
+  readback_->bring(s, ring_->index_of(s), state_[cur_], within(windows, model_.rows, model_.cols));
 }
 
 std::vector<sim::BodyState> GpuSolver::read_bodies() const {

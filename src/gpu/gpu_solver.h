@@ -22,6 +22,7 @@
 #include "gpu/body_contact.h"
 #include "gpu/buffer.h"
 #include "gpu/context.h"
+#include "gpu/displacement_readback.h"
 #include "gpu/submission_ring.h"
 #include "gpu/tile_kernels.h"
 #include "gpu/water_kernels.h"
@@ -57,6 +58,11 @@ class GpuSolver : public sim::Solver {
   void set_state(const sim::WaterState& state, std::int64_t steps_done) override;
   sim::WaterState read_state() const override;  // copies the state back (waits)
   sim::HostDisplacements displacements() const override;
+  // Where the state is not host-readable in place, submissions copy only the windows kept
+  // (gpu/displacement_readback.h); in place (lavapipe) every node is held anyway.
+  void keep_on_host(std::optional<std::vector<core::GridWindow>> windows) const override;
+  bool holds_on_host(const core::GridWindow& w) const override;
+  void bring_to_host(std::span<const core::GridWindow> windows) const override;
   std::vector<sim::BodyState> read_bodies() const override;
 
   // Waits until every submission finished (benchmarks time the steps, not their submission).
@@ -119,6 +125,7 @@ class GpuSolver : public sim::Solver {
   sim::TileGrid tile_grid_;
   std::unique_ptr<TileKernels> tiles_;    // while the tile bounds are tracked: with the normals
   std::unique_ptr<SubmissionRing> ring_;
+  std::unique_ptr<DisplacementReadback> readback_;  // where the state is not read in place
   // Mutable: the const readers submit the queued splashes first (flush_splashes()).
   mutable std::vector<PerturbEntry> splash_entries_;          // queued, node = row * pitch + col
   mutable std::vector<PerturbPush> splash_pushes_;           // one per queued splash (first: into entries)

@@ -4,6 +4,7 @@ namespace pond::gpu {
 namespace {
 #include "water_contact_comp.spv.h"
 #include "water_contact_denorm_comp.spv.h"
+#include "water_gather_comp.spv.h"
 #include "water_normals_comp.spv.h"
 #include "water_normals_denorm_comp.spv.h"
 #include "water_normals_tiles_comp.spv.h"
@@ -45,5 +46,7 @@ std::span<const std::uint32_t> water_contact_spirv(bool denorm_preserve) {
   if (denorm_preserve) return pond_spirv_water_contact_denorm_comp;
   return pond_spirv_water_contact_comp;
 }
+
+std::span<const std::uint32_t> water_gather_spirv() { return pond_spirv_water_gather_comp; }
 
 }  // namespace pond::gpu

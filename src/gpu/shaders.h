@@ -15,5 +15,7 @@ std::span<const std::uint32_t> water_normals_spirv(bool denorm_preserve);
 std::span<const std::uint32_t> water_normals_tiles_spirv(bool denorm_preserve);
 std::span<const std::uint32_t> water_tiles_spirv(bool denorm_preserve);
 std::span<const std::uint32_t> water_contact_spirv(bool denorm_preserve);
+// Runs of the state packed for the host (displacement_readback.h): bit copies, one variant.
+std::span<const std::uint32_t> water_gather_spirv();
 
 }  // namespace pond::gpu

@@ -20,7 +20,7 @@ SubmissionRing::SubmissionRing(const Context& ctx, vk::DeviceSize displacement_b
     s.done = vk::raii::Fence(ctx.device(), vk::FenceCreateInfo{});
     const std::string n = std::to_string(k);
     if (displacement_bytes > 0)
-      s.displacements = create_buffer(ctx, displacement_bytes, BU::eTransferDst, MemoryUse::readback,
+      s.displacements = create_buffer(ctx, displacement_bytes, BU::eTransferDst | BU::eStorageBuffer, MemoryUse::readback,
                                       "water displacements readback " + n);
     if (body_bytes > 0)
       s.bodies = create_buffer(ctx, body_bytes, BU::eTransferDst, MemoryUse::readback, "bodies readback " + n);

@@ -9,6 +9,8 @@
 
 namespace pond::gpu {
 
+using shared::GatherPush;
+using shared::GatherRun;
 using shared::NormalsPush;
 using shared::PerturbEntry;
 using shared::PerturbPush;

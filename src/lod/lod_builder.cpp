@@ -38,36 +38,58 @@ std::size_t LodBuilder::max_indices() const {
   return 6 * static_cast<std::size_t>(rows() - 1) * static_cast<std::size_t>(cols() - 1);
 }
 
-// Is t, a triangle of the hierarchy whose midpoint m is not active, fine as a leaf? In order: the
-// tile ranges, then (for a triangle within a block) its block's nodes.
-bool LodBuilder::leaf_fits(const Tri& t, Point m) {
+// Is t, a triangle of the hierarchy whose midpoint m is not active, fine as a leaf, on the tile
+// ranges or (a triangle within a block) its block's nodes? Later: its block is not on the host yet.
+LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
   const int x0 = std::min({t.apex.x, t.left.x, t.right.x}), x1 = std::max({t.apex.x, t.left.x, t.right.x});
   const int y0 = std::min({t.apex.y, t.left.y, t.right.y}), y1 = std::max({t.apex.y, t.left.y, t.right.y});
   const bool inside = grid_.within_grid(t);
   GridPolygon clipped;  // t's part in the grid, when it reaches past it
-  if (!inside && (clipped = clip_to_grid(t, rows(), cols())).count < 3) return true;  // wholly outside
+  if (!inside && (clipped = clip_to_grid(t, rows(), cols())).count < 3) return Fit::yes;  // wholly outside
+  const auto fit = [](bool fine) { return fine ? Fit::yes : Fit::no; };
   ++stats_.tested;
   if (whole_) {
     const SurfaceBlock& w = blocks_.whole();
-    return inside ? leaf_is_fine(w, t, m) : clipped_leaf_is_fine(w, clipped);
+    return fit(inside ? leaf_is_fine(w, t, m) : clipped_leaf_is_fine(w, clipped));
   }
   const bool small = x1 - x0 <= kBlockCells && y1 - y0 <= kBlockCells;
   const int bx = x0 / kBlockCells, by = y0 / kBlockCells;
-  // A small triangle whose block is made is judged on its nodes at once: sharper than the ranges.
-  if (!(small && blocks_.made(bx, by))) {
+  // Fine when the ranges prove it or (a small triangle) its block's nodes do: either order gives
+  // the same outcome, so the mesh does not depend on which blocks were made or brought before.
+  // The block first where it is made already (sharper, and its nodes are at hand), else the ranges.
+  const auto ranged = [&] {
     GridPolygon corners = clipped;
     if (inside) corners.count = 3, corners.corner[0] = t.apex, corners.corner[1] = t.left, corners.corner[2] = t.right;
-    if (RangeProof(*ranges_, *box_budget_, positions_).proves(x0, std::min(x1, cols() - 1), y0,
-                                                               std::min(y1, rows() - 1), corners)) {
-      ++stats_.ranged;
-      return true;
-    }
-    if (!small) return false;
+    const bool fine = RangeProof(*ranges_, *box_budget_).proves(x0, std::min(x1, cols() - 1), y0, std::min(y1, rows() - 1), corners);
+    stats_.ranged += fine;
+    return fine;
+  };
+  const auto on_nodes = [&] {
+    const SurfaceBlock& b = blocks_.block(bx, by);
+    const Tri local = b.local(t);
+    if (inside) return leaf_is_fine(b, local, {m.x - b.origin.x, m.y - b.origin.y});
+    return clipped_leaf_is_fine(b, clip_to_grid(local, b.grid->rows(), b.grid->cols()));
+  };
+  if (small && blocks_.made(bx, by)) return fit(on_nodes() || ranged());
+  if (ranged()) return Fit::yes;
+  if (!small) return Fit::no;
+  if (!block_held(bx, by)) {
+    --stats_.tested;  // tested again once its block is brought
+    return Fit::later;
   }
-  const SurfaceBlock& b = blocks_.block(bx, by);
-  const Tri local = b.local(t);
-  if (inside) return leaf_is_fine(b, local, {m.x - b.origin.x, m.y - b.origin.y});
-  return clipped_leaf_is_fine(b, clip_to_grid(local, b.grid->rows(), b.grid->cols()));
+  return fit(on_nodes());
+}
+
+// Whether block (bx, by)'s nodes are on the host; when not, it is queued to be brought.
+bool LodBuilder::block_held(int bx, int by) {
+  if (!positions_.fetch) return true;
+  std::uint8_t& h = held_[static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_.blocks_x()) + static_cast<std::size_t>(bx)];
+  if (h == 0) {
+    const core::GridWindow w = blocks_.window(bx, by);
+    h = positions_.fetch->holds(w) ? 1 : 2;
+    if (h == 2) to_bring_.push_back(w);
+  }
+  return h == 1;
 }
 
 bool LodBuilder::leaf_is_fine(const SurfaceBlock& blk, const Tri& t, Point mid_point) {
@@ -208,23 +230,13 @@ std::size_t LodBuilder::build(const NodePositions& p, const TileRanges& ranges, 
   for (std::uint32_t id : marked_) state_[id] = 0;
   marked_.clear();
   for (std::uint32_t id : grid_.always_split_ids()) state_[id] = kActive;
-  work_.assign(grid_.roots().begin(), grid_.roots().end());
-  while (!work_.empty()) {
-    const Tri t = work_.back();
-    work_.pop_back();
-    Point m;
-    if (!midpoint(t, m)) continue;  // a half cell: no node inside
-    std::uint8_t& s = state_[grid_.domain_id(m)];
-    if (!(s & kActive)) {
-      if (leaf_fits(t, m)) continue;
-      activate(m);  // queues t again (expanded below, so that copy is skipped) and its neighbour
-    }
-    const std::uint8_t bit = kExpanded[side_of(t, m)];
-    if (s & bit) continue;
-    mark(s, bit, m);
-    work_.push_back(child_left(t, m));
-    work_.push_back(child_right(t, m));
+  if (whole_ && p.fetch) {
+    const core::GridWindow all{0, 0, rows(), cols()};
+    if (!p.fetch->holds(all)) p.fetch->bring(std::span(&all, 1)), ++stats_.brought;
   }
+  if (p.fetch) held_.assign(static_cast<std::size_t>(blocks_.blocks_x()) * static_cast<std::size_t>(blocks_.blocks_y()), 0);
+  work_.assign(grid_.roots().begin(), grid_.roots().end());
+  refine();
 
   std::uint32_t* cursor = out.data();
   for (const Tri& root : grid_.roots()) emit(root, true, cursor);
@@ -233,10 +245,12 @@ std::size_t LodBuilder::build(const NodePositions& p, const TileRanges& ranges, 
   stats_.blocks = blocks_.made();
   stats_.whole = whole_;
   if (whole_) {
+    reads_.reset();
     const SurfaceBlock& w = blocks_.whole();
     world_[0] = std::span(w.x).first(p.nodes()), world_[1] = std::span(w.y).first(p.nodes());
     world_[2] = std::span(w.z).first(p.nodes());
   } else {
+    read_corners(out.first(written));
     copy_nodes(p, out.first(written), x_.data(), y_.data(), z_.data());
     world_[0] = x_, world_[1] = y_, world_[2] = z_;
   }
@@ -245,7 +259,73 @@ std::size_t LodBuilder::build(const NodePositions& p, const TileRanges& ranges, 
   const std::size_t needed = whole_ ? blocks_needed(out.first(written)) : blocks_.made();
   const std::size_t block_nodes = static_cast<std::size_t>(kBlockCells + 1) * (kBlockCells + 1);
   whole_ = needed * block_nodes * 10 > 6 * p.nodes();
+  if (whole_) reads_.reset();
   return written;
+}
+
+// Descends from work_ until every queued triangle is a leaf or split. Triangles waiting for their
+// block (leaf_fits() later) go on once the blocks are brought, all at once.
+void LodBuilder::refine() {
+  for (;;) {
+    while (!work_.empty()) {
+      const Tri t = work_.back();
+      work_.pop_back();
+      Point m;
+      if (!midpoint(t, m)) continue;  // a half cell: no node inside
+      std::uint8_t& s = state_[grid_.domain_id(m)];
+      if (!(s & kActive)) {
+        const Fit fit = leaf_fits(t, m);
+        if (fit == Fit::later) waiting_.push_back(t);
+        if (fit != Fit::no) continue;
+        activate(m);  // queues t again (expanded below, so that copy is skipped) and its neighbour
+      }
+      const std::uint8_t bit = kExpanded[side_of(t, m)];
+      if (s & bit) continue;
+      mark(s, bit, m);
+      work_.push_back(child_left(t, m));
+      work_.push_back(child_right(t, m));
+    }
+    if (waiting_.empty()) return;
+    positions_.fetch->bring(to_bring_);
+    ++stats_.brought;
+    for (const core::GridWindow& w : to_bring_)
+      held_[static_cast<std::size_t>(w.row0 / kBlockCells) * static_cast<std::size_t>(blocks_.blocks_x()) +
+            static_cast<std::size_t>(w.col0 / kBlockCells)] = 1;
+    to_bring_.clear();
+    work_.swap(waiting_);
+  }
+}
+
+// With NodePositions::fetch: brings the leaves' corners the host lacks (those outside the blocks
+// read), and sets reads() to the blocks asked for and those corners.
+void LodBuilder::read_corners(std::span<const std::uint32_t> triangles) {
+  if (!positions_.fetch) return;
+  std::vector<core::GridWindow> reads;  // the blocks asked for: made, or brought and then not needed
+  for (int by = 0; by < blocks_.blocks_y(); ++by)
+    for (int bx = 0; bx < blocks_.blocks_x(); ++bx)
+      if (held_[static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_.blocks_x()) + static_cast<std::size_t>(bx)] == 1)
+        reads.push_back(blocks_.window(bx, by));
+  const std::size_t blocks = reads.size();
+  const auto in_a_block_read = [&](int r, int c) {
+    for (int by : {(r - 1) / kBlockCells, r / kBlockCells})
+      for (int bx : {(c - 1) / kBlockCells, c / kBlockCells})
+        if (bx >= 0 && by >= 0 && bx < blocks_.blocks_x() && by < blocks_.blocks_y() &&
+            held_[static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_.blocks_x()) + static_cast<std::size_t>(bx)] == 1)
+          return true;
+    return false;
+  };
+  const std::uint32_t c = static_cast<std::uint32_t>(cols());
+  std::vector<std::uint32_t> outside;
+  for (std::uint32_t id : triangles)
+    if (!in_a_block_read(static_cast<int>(id / c), static_cast<int>(id % c))) outside.push_back(id);
+  std::sort(outside.begin(), outside.end());
+  outside.erase(std::unique(outside.begin(), outside.end()), outside.end());
+  for (std::uint32_t id : outside) reads.push_back({static_cast<int>(id / c), static_cast<int>(id % c), 1, 1});
+  std::vector<core::GridWindow> missing;
+  for (std::size_t k = blocks; k < reads.size(); ++k)
+    if (!positions_.fetch->holds(reads[k])) missing.push_back(reads[k]);
+  if (!missing.empty()) positions_.fetch->bring(missing), ++stats_.brought;
+  reads_ = std::move(reads);
 }
 
 // The blocks holding a triangle of `triangles` small enough to lie in one: those the block path

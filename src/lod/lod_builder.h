@@ -16,6 +16,10 @@
 //     included. Triangles reaching past the grid (sizes other than 2^k + 1) are tested and drawn
 //     as their clipped fans, exactly, and dropped when wholly outside;
 //  4. the leaves are written depth first, which walks a Sierpinski curve (vertex-cache friendly).
+// Where not every node is on the host (NodePositions::fetch), a triangle whose block is not waits
+// while the rest refine; the blocks they wait for are then brought at once, and so on, and last
+// the leaves' corners. A triangle's test does not depend on what was made before it, so the mesh
+// is the same as with every node at hand.
 // Every leaf passed a test, and every left-out node lies in leaves only (no T-junctions), so
 // every left-out node in the frustum is within tau pixels: a strict bound, not a heuristic.
 #include <cstddef>
@@ -42,6 +46,7 @@ struct BuildStats {
   std::size_t proved = 0;        // accepted by the nested bound alone
   std::size_t scanned = 0;       // needed an exact scan
   long long scanned_nodes = 0;   // nodes visited by exact scans
+  std::size_t brought = 0;       // times nodes were brought to the host (NodePositions::fetch)
 };
 
 class LodBuilder {
@@ -72,9 +77,17 @@ class LodBuilder {
   std::span<const float> world_y() const { return world_[1]; }
   std::span<const float> world_z() const { return world_[2]; }
   const GridHierarchy& grid() const { return grid_; }
+  // The nodes the last build read, as windows (its blocks, and its leaves' corners outside them):
+  // what a solver reading back in parts keeps on the host for the next build, since frame to frame
+  // they change little. nullopt: the whole grid (the next build reads all of it).
+  const std::optional<std::vector<core::GridWindow>>& reads() const { return reads_; }
 
  private:
-  bool leaf_fits(const Tri& t, Point m);
+  enum class Fit { yes, no, later };  // later: its block is not on the host yet
+  Fit leaf_fits(const Tri& t, Point m);
+  bool block_held(int bx, int by);
+  void refine();
+  void read_corners(std::span<const std::uint32_t> triangles);
   bool leaf_is_fine(const SurfaceBlock& b, const Tri& t, Point m);
   bool clipped_leaf_is_fine(const SurfaceBlock& b, const GridPolygon& polygon);
   void activate(Point v);
@@ -95,6 +108,12 @@ class LodBuilder {
   std::vector<Tri> work_;
   bool whole_ = false;                // this frame reads the whole grid (see build())
   std::vector<std::uint8_t> needed_;  // blocks_needed()'s scratch
+  // With NodePositions::fetch: per block, this frame, 0 not asked, 1 held, 2 to bring; the windows
+  // to bring, the triangles waiting for them, and the windows read, for reads().
+  std::vector<std::uint8_t> held_;
+  std::vector<core::GridWindow> to_bring_;
+  std::vector<Tri> waiting_;
+  std::optional<std::vector<core::GridWindow>> reads_;
   BuildStats stats_;
 };
 

@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 
-#include "lod/position_copy.h"
 
 namespace pond::lod {
 namespace {
@@ -15,14 +14,12 @@ constexpr int kMostChecks = 48;
 }  // namespace
 
 bool RangeProof::proves(int x0, int x1, int y0, int y1, const GridPolygon& corners) const {
-  const double h = ranges_.spacing();
   Band band{{0, 0, 0}, {0, 0, 0}, x0, x1, y0, y1};
   for (int i = 0; i < 3; ++i) band.least[i] = HUGE_VAL, band.greatest[i] = -HUGE_VAL;
   for (int k = 0; k < corners.count; ++k) {
-    const Point c = corners.corner[k];
-    const std::array<float, 3> w = world_position(positions_, c.y, c.x);
-    const double d[3] = {w[0] - c.x * h, w[1], w[2] - c.y * h};
-    for (int i = 0; i < 3; ++i) band.least[i] = std::min(band.least[i], d[i]), band.greatest[i] = std::max(band.greatest[i], d[i]);
+    const TileBounds c = ranges_.at_node(corners.corner[k].x, corners.corner[k].y);
+    const double lo[3] = {c.min_x, c.min_y, c.min_z}, hi[3] = {c.max_x, c.max_y, c.max_z};
+    for (int i = 0; i < 3; ++i) band.least[i] = std::min(band.least[i], lo[i]), band.greatest[i] = std::max(band.greatest[i], hi[i]);
   }
   const TileRect tiles = ranges_.tiles_of(x0, x1, y0, y1);
   const int k = ranges_.level_for(tiles);

@@ -1,22 +1,21 @@
 #pragma once
 // The builder's coarse test: a region's nodes all within budget of an interpolation between some of
-// its nodes, proved from the tile ranges (tile_ranges.h) and three or so node reads, no scan. A
-// node's deviation from the rest grid lies in its tile's [lo, hi] and the interpolation's between
-// the corners' least and greatest, so the two differ by at most the larger of hi - least and
+// its nodes, proved from the tile ranges (tile_ranges.h) alone: no node is read, so the test needs
+// none of the positions on the host. A node's deviation from the rest grid lies in its tile's
+// [lo, hi] and the interpolation's between the corners' least and greatest (each corner's from the
+// ranges of the tiles holding it), so the two differ by at most the larger of hi - least and
 // greatest - lo. Each cell of the range pyramid is held against the least budget of its own world
 // box (camera_budget.h); a cell that fails is tried by its four quarters, down to single tiles, so
 // a long triangle is not judged by its nearest node's budget and its farthest wave at once.
 #include "lod/camera_budget.h"
 #include "lod/grid_hierarchy.h"
-#include "lod/node_positions.h"
 #include "lod/tile_ranges.h"
 
 namespace pond::lod {
 
 class RangeProof {
  public:
-  RangeProof(const TileRanges& ranges, const BoxBudget& budget, const NodePositions& positions)
-      : ranges_(ranges), budget_(budget), positions_(positions) {}
+  RangeProof(const TileRanges& ranges, const BoxBudget& budget) : ranges_(ranges), budget_(budget) {}
 
   // Are the nodes of columns [x0, x1] and rows [y0, y1] (inside the grid) within budget of the
   // piecewise-linear interpolation between `corners` (grid nodes of that rectangle)?
@@ -31,7 +30,6 @@ class RangeProof {
 
   const TileRanges& ranges_;
   const BoxBudget& budget_;
-  const NodePositions& positions_;
 };
 
 }  // namespace pond::lod

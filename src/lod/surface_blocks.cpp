@@ -40,11 +40,16 @@ const SurfaceBlock& SurfaceBlocks::block(int bx, int by) {
   if (made_in_[k] == frame_) return *pool_[slot_[k]];
   if (used_ == pool_.size()) pool_.push_back(std::make_unique<SurfaceBlock>());
   SurfaceBlock& b = *pool_[used_];
-  const Point origin{bx * kBlockCells, by * kBlockCells};
-  make(b, origin, std::min(kBlockCells + 1, rows_ - origin.y), std::min(kBlockCells + 1, cols_ - origin.x));
+  const core::GridWindow w = window(bx, by);
+  make(b, {w.col0, w.row0}, w.rows, w.cols);
   made_in_[k] = frame_;
   slot_[k] = static_cast<std::uint32_t>(used_++);
   return b;
+}
+
+core::GridWindow SurfaceBlocks::window(int bx, int by) const {
+  const int row0 = by * kBlockCells, col0 = bx * kBlockCells;
+  return {row0, col0, std::min(kBlockCells + 1, rows_ - row0), std::min(kBlockCells + 1, cols_ - col0)};
 }
 
 const SurfaceBlock& SurfaceBlocks::whole() {

@@ -16,6 +16,7 @@
 #include "lod/camera_budget.h"
 #include "lod/error_bounds.h"
 #include "lod/grid_hierarchy.h"
+#include "core/node_runs.h"
 #include "lod/node_positions.h"
 
 namespace pond::lod {
@@ -53,6 +54,8 @@ class SurfaceBlocks {
   // needed (one pass, no border twice, no per-block set-up). Its nested bounds are the grid's own.
   const SurfaceBlock& whole();
   std::size_t made() const { return used_; }
+  // Block (bx, by)'s nodes in the grid.
+  core::GridWindow window(int bx, int by) const;
   bool made(int bx, int by) const {
     return made_in_[static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_x_) + static_cast<std::size_t>(bx)] == frame_;
   }

@@ -56,6 +56,19 @@ TileRect TileRanges::tiles_of(int x0, int x1, int y0, int y1) const {
   return {a0, std::max(a0, last(x1, tiles_x_)), b0, std::max(b0, last(y1, tiles_y_))};
 }
 
+TileBounds TileRanges::at_node(int x, int y) const {
+  const auto first = [](int k, int tiles) { return std::clamp((k - 1) / kTileCells, 0, tiles - 1); };
+  const auto last = [](int k, int tiles) { return std::min(k / kTileCells, tiles - 1); };
+  TileBounds r{-kInf, -kInf, -kInf, kInf, kInf, kInf};
+  for (int b = first(y, tiles_y_); b <= last(y, tiles_y_); ++b)
+    for (int a = first(x, tiles_x_); a <= last(x, tiles_x_); ++a) {
+      const TileBounds& t = levels_[0][static_cast<std::size_t>(b) * static_cast<std::size_t>(tiles_x_) + static_cast<std::size_t>(a)];
+      r = {std::max(r.min_x, t.min_x), std::max(r.min_y, t.min_y), std::max(r.min_z, t.min_z),
+           std::min(r.max_x, t.max_x), std::min(r.max_y, t.max_y), std::min(r.max_z, t.max_z)};
+    }
+  return r;
+}
+
 int TileRanges::level_for(const TileRect& r) const {
   int k = 0;
   const int side = std::min(r.a1 - r.a0, r.b1 - r.b0) + 1;

@@ -49,6 +49,9 @@ class TileRanges {
     return levels_[static_cast<std::size_t>(k)][static_cast<std::size_t>(b) * static_cast<std::size_t>(cells_x(k)) +
                                                 static_cast<std::size_t>(a)];
   }
+  // A range of node (col x, row y)'s deviation: the intersection of the tiles holding it (up to
+  // four: neighbours share their border nodes), so reading no node.
+  TileBounds at_node(int x, int y) const;
   // The level whose cells cover `r` in at most a few (2 x 2, or 2 x 3 for a 1 x 2 rectangle).
   int level_for(const TileRect& r) const;
 

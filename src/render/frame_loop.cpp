@@ -119,6 +119,7 @@ struct FrameLoop::Impl {
   void build_lod(Prepared& f) {
     geometry.build_water(f.slot, water.positions(), water.tile_bounds(), f.camera, f.view_proj, f.view.lod_tolerance_px,
                          f.plan.shadow_rects, f.draws);
+    water.keep_on_host(geometry.lod_reads());  // what the next frames' compute copies back
     f.stats.triangles = f.draws.water_triangles;
   }
 

@@ -98,7 +98,7 @@ void VisibleGeometry::build_water(std::uint32_t slot, const lod::NodePositions& 
                                   const std::array<float, 16>& view_proj, double tolerance_px,
                                   std::span<const view::PixelRect> rects, VisibleDraws& out) {
   out.water_rects.clear();
-  out.full_mesh = tolerance_px <= 0;
+  out.full_mesh = full_mesh_ = tolerance_px <= 0;
   if (out.full_mesh) {  // the full mesh's buffer, drawn whole
     out.water_whole = {0, full_index_count_, 0};
     out.water_rects.assign(rects.size(), out.water_whole);

@@ -6,6 +6,7 @@
 // islands' walls under the water (render/submerged_pass.h), drawn whole.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -62,6 +63,11 @@ class VisibleGeometry {
 
   std::size_t land_triangles() const { return land_source_.triangles.size() / 3; }
   std::size_t full_triangles() const { return full_index_count_ / 3; }
+  // The nodes the last LOD read (lod/lod_builder.h: reads()); none for the full mesh.
+  std::optional<std::vector<core::GridWindow>> lod_reads() const {
+    return full_mesh_ ? std::optional(std::vector<core::GridWindow>{}) : lod_.reads();
+  }
+  const lod::BuildStats& lod_stats() const { return lod_.stats(); }
   // The LOD's last triangles before culling (node indices), for tests and tools.
   std::span<const std::uint32_t> lod_triangles() const { return std::span(lod_indices_).first(lod_count_); }
 
@@ -83,6 +89,7 @@ class VisibleGeometry {
   lod::LodBuilder lod_;
   std::vector<std::uint32_t> lod_indices_;
   std::size_t lod_count_ = 0;
+  bool full_mesh_ = false;  // the last build_water() drew the full mesh
   view::CulledMesh culled_;  // scratch
   struct SlotIndices {
     gpu::Buffer water, land, mirrored;

@@ -63,11 +63,19 @@ WaterSource::DrawBuffers WaterSource::prepare(std::uint32_t slot) {
           static_cast<std::uint32_t>(cols)};
 }
 
+void WaterSource::keep_on_host(std::optional<std::vector<core::GridWindow>> lod_reads) const {
+  if (3 * sizeof(float) * session_.model().nodes() < kReadBackInPartsFrom) lod_reads.reset();
+  session_.solver().keep_on_host(std::move(lod_reads));
+}
+
 lod::NodePositions WaterSource::positions() const {
   // The LOD builder converts the displacements to world positions as it copies them.
   const sim::WaterModel& model = session_.model();
-  return lod::grid_displacements(displacements_.ux, displacements_.uy, displacements_.uz, model.rows, model.cols,
-                                 model.spacing, displacements_.pitch);
+  lod::NodePositions p = lod::grid_displacements(displacements_.ux, displacements_.uy, displacements_.uz, model.rows,
+                                                 model.cols, model.spacing, displacements_.pitch);
+  const gpu::GpuSolver* g = gpu_ ? gpu_->live() : nullptr;
+  if (g && static_cast<const sim::Solver*>(g) == &session_.solver()) p.fetch = this;  // a CPU solver holds all
+  return p;
 }
 
 }  // namespace pond::render

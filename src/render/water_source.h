@@ -7,8 +7,10 @@
 //    written into the frame slot's host-visible buffers (per slot: a frame in flight keeps its own).
 // The LOD's positions are the solver's displacements() on the host: the GPU solver waits there for
 // its last submission (in a frame, the one wait) and hands over its copy, or the state in place
-// where the state's memory is host-readable (lavapipe).
+// where the state's memory is host-readable (lavapipe). Its copy holds only the nodes the last
+// frame's LOD read; the LOD brings any others it needs (lod/node_positions.h: NodeFetch).
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -20,7 +22,7 @@
 
 namespace pond::render {
 
-class WaterSource {
+class WaterSource : public lod::NodeFetch {
  public:
   // `gpu`: what made the session's GPU solvers (null: the session only ever holds CPU solvers).
   // Both must outlive this.
@@ -46,6 +48,14 @@ class WaterSource {
   lod::NodePositions positions() const;
   // Their tile bounds (sim/solver.h), when the session's solver keeps them; else empty.
   std::span<const shared::TileBounds> tile_bounds() const { return tiles_; }
+  // The GPU solver reads back only the nodes the LOD reads (sim/solver.h: keep_on_host): which the
+  // host holds, bringing more, and which to copy after the next submissions (nullopt: all).
+  bool holds(const core::GridWindow& w) const override { return session_.solver().holds_on_host(w); }
+  void bring(std::span<const core::GridWindow> windows) const override { session_.solver().bring_to_host(windows); }
+  // `lod_reads` (VisibleGeometry::lod_reads) where the whole copy would be larger than
+  // kReadBackInPartsFrom; below that, every node (a few extra waits would cost more than the copy).
+  void keep_on_host(std::optional<std::vector<core::GridWindow>> lod_reads) const;
+  static constexpr std::size_t kReadBackInPartsFrom = std::size_t{4} << 20;  // bytes of ux | uy | uz
 
  private:
   const gpu::Context& ctx_;

@@ -6,10 +6,12 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "core/node_runs.h"
 #include "sim/backends.h"
 #include "sim/model.h"
 #include "sim/state.h"
@@ -51,6 +53,22 @@ class Solver {
   // Replaces the bodies' models (the same number of bodies; their states stay): a kinematic
   // body's new path, a body turned floating or kinematic. InputError for another count.
   virtual void set_body_models(std::vector<BodyModel> bodies) = 0;
+  // Which nodes displacements() must hold after each later submission: every node (nullopt, the
+  // default) or at least those of `windows` (within the grid). The GPU solver then copies only
+  // those to the host where it cannot read the state in place; every other solver holds them all.
+  // Const: it changes what the host reads, never the state.
+  virtual void keep_on_host(std::optional<std::vector<core::GridWindow>> windows) const { (void)windows; }
+  // Whether displacements() holds every node of `w` now.
+  virtual bool holds_on_host(const core::GridWindow& w) const { (void)w; return true; }
+  // Makes displacements() hold the nodes of `windows` of the current state too (the GPU solver
+  // copies those it lacks and waits).
+  virtual void bring_to_host(std::span<const core::GridWindow> windows) const { (void)windows; }
+  // displacements() holding every node.
+  HostDisplacements all_displacements() const {
+    const core::GridWindow all{0, 0, model().rows, model().cols};
+    bring_to_host(std::span(&all, 1));
+    return displacements();
+  }
   // Whether to keep the current state's tile bounds (shared/tile_bounds.h), which the LOD builder
   // descends instead of reading every node; off by default, and then free.
   virtual void track_tile_bounds(bool on) { (void)on; }

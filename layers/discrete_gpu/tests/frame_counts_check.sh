@@ -13,27 +13,16 @@ rows=257 cols=257
 limit_bytes=$((14 * rows * cols + 4096))
 printf 'frame 1 key D\nframe 3 click 400 260\n' > "$work/rain.script"
 
+. "$(dirname "$0")/counted_run.sh"
 run() {  # run FRAMES: the layer's counters of one run into $work/FRAMES.json
-  rm -f "$work/$1.json"
   if [ "$mode" = demo ]; then
-    POND_DISCRETE_GPU_STATS="$work/$1.json" xvfb-run -a -s "-screen 0 1024x768x24" "$pond" demo --scene "$scene" \
-      --frames "$1" --size 640x400 --no-vsync --quiet --validation --script "$work/rain.script" \
-      > "$work/$1.out" 2> "$work/$1.err"
+    counted "$1" xvfb-run -a -s "-screen 0 1024x768x24" "$pond" demo --scene "$scene" \
+      --frames "$1" --size 640x400 --no-vsync --quiet --validation --script "$work/rain.script"
   else
-    POND_DISCRETE_GPU_STATS="$work/$1.json" "$pond" render --scene "$scene" --steps 4 --frames "$1" --size 320x200 \
-      --validation --out "$work/$1.png" > "$work/$1.out" 2> "$work/$1.err"
-  fi
-  rc=$?
-  if [ $rc -ne 0 ] || [ ! -s "$work/$1.json" ]; then
-    echo "FAILED: $mode, $1 frames: exit $rc, no counters? $(head -c 2000 "$work/$1.err")"
-    exit 1
-  fi
-  if grep -qi "validation\|VUID" "$work/$1.err"; then
-    echo "FAILED: $mode, $1 frames: validation messages: $(head -c 2000 "$work/$1.err")"
-    exit 1
+    counted "$1" "$pond" render --scene "$scene" --steps 4 --frames "$1" --size 320x200 \
+      --validation --out "$work/$1.png"
   fi
 }
-count() { sed -n "s/.*\"$2\": \([0-9]*\).*/\1/p" "$work/$1.json"; }
 
 run 10
 run 70
