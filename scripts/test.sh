@@ -30,8 +30,9 @@ FUZZ_SECONDS=${FUZZ_SECONDS:-10} FUZZ_JOBS=$jobs scripts/fuzz.sh
 # The GPU solver's tests under ASan + UBSan too (lavapipe itself is not instrumented; leak checks
 # off, since the driver is unloaded before LeakSanitizer could name its allocations).
 stage "ASan + UBSan build and GPU solver tests"
+# Only the two test programs it runs (label gpu_solver): not the renderer, the app or the rest again.
 cmake --preset sanitize-gpu -DPOND_TEST_DEVICE="${POND_DEVICE:-llvmpipe}"
-cmake --build --preset sanitize-gpu -j "$jobs"
+cmake --build --preset sanitize-gpu -j "$jobs" --target gpu_tests gpu_parity_tests
 ctest --preset sanitize-gpu -j "$jobs"
 
 # The GPU suite again under the discrete-GPU test layer (layers/, built by the release preset):
