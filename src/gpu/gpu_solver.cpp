@@ -284,14 +284,18 @@ sim::HostDisplacements GpuSolver::displacements() const {
 
 namespace {
 
-// `windows` cut to a rows x cols grid, the empty ones left out.
+// `w` cut to a rows x cols grid (empty: no rows or no columns left).
+core::GridWindow within(const core::GridWindow& w, int rows, int cols) {
+  const int r0 = std::max(0, w.row0), c0 = std::max(0, w.col0);
+  const int r1 = std::min(rows, w.row0 + w.rows), c1 = std::min(cols, w.col0 + w.cols);
+  return r0 < r1 && c0 < c1 ? core::GridWindow{r0, c0, r1 - r0, c1 - c0} : core::GridWindow{};
+}
+
+// The same for each of `windows`, the empty ones left out.
 std::vector<core::GridWindow> within(std::span<const core::GridWindow> windows, int rows, int cols) {
   std::vector<core::GridWindow> out;
-  for (const core::GridWindow& w : windows) {
-    const int r0 = std::max(0, w.row0), c0 = std::max(0, w.col0);
-    const int r1 = std::min(rows, w.row0 + w.rows), c1 = std::min(cols, w.col0 + w.cols);
-    if (r0 < r1 && c0 < c1) out.push_back({r0, c0, r1 - r0, c1 - c0});
-  }
+  for (const core::GridWindow& w : windows)
+    if (const core::GridWindow in = within(w, rows, cols); in.rows > 0) out.push_back(in);
   return out;
 }
 
@@ -305,9 +309,9 @@ void GpuSolver::keep_on_host(std::optional<std::vector<core::GridWindow>> window
 
 bool GpuSolver::holds_on_host(const core::GridWindow& w) const {
   if (!readback_) return true;
-  const std::vector<core::GridWindow> in = within(std::span(&w, 1), model_.rows, model_.cols);
+  const core::GridWindow in = within(w, model_.rows, model_.cols);
   const Submission& s = published();
-  return in.empty() || readback_->holds(s, ring_->index_of(s), in.front());
+  return in.rows == 0 || readback_->holds(s, ring_->index_of(s), in);
 }
 
 void GpuSolver::bring_to_host(std::span<const core::GridWindow> windows) const {

@@ -83,7 +83,7 @@ LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
 // Whether block (bx, by)'s nodes are on the host; when not, it is queued to be brought.
 bool LodBuilder::block_held(int bx, int by) {
   if (!positions_.fetch) return true;
-  std::uint8_t& h = held_[static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_.blocks_x()) + static_cast<std::size_t>(bx)];
+  std::uint8_t& h = held_at(bx, by);
   if (h == 0) {
     const core::GridWindow w = blocks_.window(bx, by);
     h = positions_.fetch->holds(w) ? 1 : 2;
@@ -288,9 +288,7 @@ void LodBuilder::refine() {
     if (waiting_.empty()) return;
     positions_.fetch->bring(to_bring_);
     ++stats_.brought;
-    for (const core::GridWindow& w : to_bring_)
-      held_[static_cast<std::size_t>(w.row0 / kBlockCells) * static_cast<std::size_t>(blocks_.blocks_x()) +
-            static_cast<std::size_t>(w.col0 / kBlockCells)] = 1;
+    for (const core::GridWindow& w : to_bring_) held_at(w.col0 / kBlockCells, w.row0 / kBlockCells) = 1;
     to_bring_.clear();
     work_.swap(waiting_);
   }
@@ -303,14 +301,12 @@ void LodBuilder::read_corners(std::span<const std::uint32_t> triangles) {
   std::vector<core::GridWindow> reads;  // the blocks asked for: made, or brought and then not needed
   for (int by = 0; by < blocks_.blocks_y(); ++by)
     for (int bx = 0; bx < blocks_.blocks_x(); ++bx)
-      if (held_[static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_.blocks_x()) + static_cast<std::size_t>(bx)] == 1)
-        reads.push_back(blocks_.window(bx, by));
+      if (held_at(bx, by) == 1) reads.push_back(blocks_.window(bx, by));
   const std::size_t blocks = reads.size();
   const auto in_a_block_read = [&](int r, int c) {
     for (int by : {(r - 1) / kBlockCells, r / kBlockCells})
       for (int bx : {(c - 1) / kBlockCells, c / kBlockCells})
-        if (bx >= 0 && by >= 0 && bx < blocks_.blocks_x() && by < blocks_.blocks_y() &&
-            held_[static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_.blocks_x()) + static_cast<std::size_t>(bx)] == 1)
+        if (bx >= 0 && by >= 0 && bx < blocks_.blocks_x() && by < blocks_.blocks_y() && held_at(bx, by) == 1)
           return true;
     return false;
   };

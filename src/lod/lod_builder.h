@@ -86,6 +86,9 @@ class LodBuilder {
   enum class Fit { yes, no, later };  // later: its block is not on the host yet
   Fit leaf_fits(const Tri& t, Point m);
   bool block_held(int bx, int by);
+  std::uint8_t& held_at(int bx, int by) {
+    return held_[static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_.blocks_x()) + static_cast<std::size_t>(bx)];
+  }
   void refine();
   void read_corners(std::span<const std::uint32_t> triangles);
   bool leaf_is_fine(const SurfaceBlock& b, const Tri& t, Point m);

@@ -67,7 +67,6 @@ class VisibleGeometry {
   std::optional<std::vector<core::GridWindow>> lod_reads() const {
     return full_mesh_ ? std::optional(std::vector<core::GridWindow>{}) : lod_.reads();
   }
-  const lod::BuildStats& lod_stats() const { return lod_.stats(); }
   // The LOD's last triangles before culling (node indices), for tests and tools.
   std::span<const std::uint32_t> lod_triangles() const { return std::span(lod_indices_).first(lod_count_); }
 

@@ -14,10 +14,14 @@ using BU = vk::BufferUsageFlagBits;
 WaterSource::WaterSource(const gpu::Context& ctx, const sim::Session& session, const gpu::GpuSolvers* gpu)
     : ctx_(ctx), session_(session), gpu_(gpu) {}
 
+const gpu::GpuSolver* WaterSource::session_gpu() const {
+  const gpu::GpuSolver* g = gpu_ ? gpu_->live() : nullptr;
+  return g && static_cast<const sim::Solver*>(g) == &session_.solver() ? g : nullptr;
+}
+
 WaterSource::DrawBuffers WaterSource::prepare(std::uint32_t slot) {
   const sim::Solver& solver = session_.solver();
-  const gpu::GpuSolver* g = gpu_ ? gpu_->live() : nullptr;
-  if (g && static_cast<const sim::Solver*>(g) == &solver)
+  if (const gpu::GpuSolver* g = session_gpu())
     return {&g->state_buffer(), &g->normals_buffer(), g->bodies_buffer(), static_cast<std::uint32_t>(g->stride()),
             static_cast<std::uint32_t>(g->pitch())};
 
@@ -73,8 +77,7 @@ lod::NodePositions WaterSource::positions() const {
   const sim::WaterModel& model = session_.model();
   lod::NodePositions p = lod::grid_displacements(displacements_.ux, displacements_.uy, displacements_.uz, model.rows,
                                                  model.cols, model.spacing, displacements_.pitch);
-  const gpu::GpuSolver* g = gpu_ ? gpu_->live() : nullptr;
-  if (g && static_cast<const sim::Solver*>(g) == &session_.solver()) p.fetch = this;  // a CPU solver holds all
+  if (session_gpu()) p.fetch = this;  // a CPU solver holds every node
   return p;
 }
 

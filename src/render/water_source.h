@@ -58,6 +58,9 @@ class WaterSource : public lod::NodeFetch {
   static constexpr std::size_t kReadBackInPartsFrom = std::size_t{4} << 20;  // bytes of ux | uy | uz
 
  private:
+  // The session's solver when it is the GPU solver, else null.
+  const gpu::GpuSolver* session_gpu() const;
+
   const gpu::Context& ctx_;
   const sim::Session& session_;
   const gpu::GpuSolvers* gpu_;
