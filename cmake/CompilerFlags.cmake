@@ -14,6 +14,11 @@ target_compile_options(pond_flags INTERFACE
 if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
   target_compile_options(pond_flags INTERFACE -Wno-restrict)
 endif()
+# In a unity build (CMAKE_UNITY_BUILD, the presets' default) GCC takes each batched source file
+# for a header, and warns about every class of it with a member of an anonymous-namespace type.
+if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_UNITY_BUILD)
+  target_compile_options(pond_flags INTERFACE -Wno-subobject-linkage)
+endif()
 
 if(POND_IA32)
   target_compile_options(pond_flags INTERFACE -m32 -msse2 -mfpmath=sse)

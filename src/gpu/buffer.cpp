@@ -8,8 +8,9 @@
 #include "core/errors.h"
 
 namespace pond::gpu {
-
+namespace {
 using MP = vk::MemoryPropertyFlagBits;
+}  // namespace
 
 std::uint32_t choose_memory_type(const vk::PhysicalDeviceMemoryProperties& props, std::uint32_t type_bits,
                                  vk::MemoryPropertyFlags required, vk::MemoryPropertyFlags preferred) {

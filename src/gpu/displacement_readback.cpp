@@ -9,12 +9,12 @@
 
 
 namespace pond::gpu {
-
+namespace {
 using S = vk::PipelineStageFlagBits2;
 using A = vk::AccessFlagBits2;
-
 using DT = vk::DescriptorType;
 using BU = vk::BufferUsageFlagBits;
+}  // namespace
 
 DisplacementReadback::DisplacementReadback(const Context& ctx, std::size_t pitch, std::size_t stride)
     : ctx_(ctx), pitch_(pitch), stride_(stride) {

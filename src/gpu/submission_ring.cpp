@@ -3,8 +3,9 @@
 #include "core/errors.h"
 
 namespace pond::gpu {
-
+namespace {
 using BU = vk::BufferUsageFlagBits;
+}  // namespace
 
 SubmissionRing::SubmissionRing(const Context& ctx, vk::DeviceSize displacement_bytes, vk::DeviceSize body_bytes)
     : ctx_(ctx) {

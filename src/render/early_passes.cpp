@@ -5,9 +5,10 @@
 #include "render/submerged_pass.h"
 
 namespace pond::render {
-
+namespace {
 using S = vk::PipelineStageFlagBits2;
 using A = vk::AccessFlagBits2;
+}  // namespace
 
 void record_early_passes(const vk::raii::CommandBuffer& cmd, const FrameContext& frame, const CausticsPass& caustics,
                          const shared::caustics::CausticsPush& caustics_push) {

@@ -6,6 +6,9 @@
 #include "render/render_layout.h"
 
 namespace pond::render {
+namespace {
+using S = vk::PipelineStageFlagBits2;
+}  // namespace
 
 FrameRing::FrameRing(const gpu::Context& ctx, vk::DescriptorSetLayout set_layout) : ctx_(ctx) {
   pool_ = vk::raii::CommandPool(ctx.device(), vk::CommandPoolCreateInfo{
@@ -93,7 +96,6 @@ void FrameRing::submit_main(std::uint32_t slot, const FrameTarget& target) const
 }
 
 void FrameRing::submit(const vk::raii::CommandBuffer& cmd, const vk::raii::Fence& fence, const FrameTarget* target) const {
-  using S = vk::PipelineStageFlagBits2;
   cmd.end();
   ctx_.device().resetFences(*fence);
   const vk::CommandBufferSubmitInfo cmd_info{.commandBuffer = *cmd};

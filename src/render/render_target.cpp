@@ -6,6 +6,10 @@
 #include "gpu/buffer.h"
 
 namespace pond::render {
+namespace {
+using S = vk::PipelineStageFlagBits2;
+using A = vk::AccessFlagBits2;
+}  // namespace
 
 Image create_image(const gpu::Context& ctx, vk::Extent2D extent, vk::Format format, vk::ImageUsageFlags usage,
                    vk::ImageAspectFlags aspect, const std::string& name) {
@@ -75,8 +79,6 @@ std::vector<std::uint8_t> RenderTarget::read_rgba() const {
   const std::size_t bytes = std::size_t{image_.extent.width} * image_.extent.height * 4;
   const gpu::Buffer staging = gpu::create_buffer(ctx_, bytes, vk::BufferUsageFlagBits::eTransferDst, gpu::MemoryUse::readback,
                                        "color readback");
-  using S = vk::PipelineStageFlagBits2;
-  using A = vk::AccessFlagBits2;
   ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
     // The frame's color writes (its final layout transition included) before the copy reads them.
     const vk::MemoryBarrier2 after_draw{.srcStageMask = S::eColorAttachmentOutput | S::eAllCommands,

@@ -8,8 +8,9 @@
 #include "sim/normals.h"
 
 namespace pond::render {
-
+namespace {
 using BU = vk::BufferUsageFlagBits;
+}  // namespace
 
 WaterSource::WaterSource(const gpu::Context& ctx, const sim::Session& session, const gpu::GpuSolvers* gpu)
     : ctx_(ctx), session_(session), gpu_(gpu) {}

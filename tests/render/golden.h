@@ -7,6 +7,9 @@
 
 namespace pond::test {
 
+// The size the image tests draw at, goldens included.
+inline constexpr int kWidth = 256, kHeight = 160;
+
 inline constexpr int kGoldenLevels = 4;        // channel difference still counted as equal
 inline constexpr double kGoldenShare = 0.005;  // share of pixels allowed to differ by more
 

@@ -5,14 +5,15 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "golden.h"
 #include "image_compare.h"
 
 namespace pond::test {
 
-// The pixel a world point projects to on a width x height picture (view_proj: column-major,
-// Vulkan clip space, y down), or {-1, -1} behind the camera.
-inline std::array<int, 2> project_to_pixel(const std::array<float, 16>& m, double x, double y, double z, int width,
-                                           int height) {
+// The pixel a world point projects to on a width x height picture (by default the image tests'
+// size; view_proj: column-major, Vulkan clip space, y down), or {-1, -1} behind the camera.
+inline std::array<int, 2> project_to_pixel(const std::array<float, 16>& m, double x, double y, double z,
+                                           int width = kWidth, int height = kHeight) {
   const double cx = m[0] * x + m[4] * y + m[8] * z + m[12], cy = m[1] * x + m[5] * y + m[9] * z + m[13];
   const double cw = m[3] * x + m[7] * y + m[11] * z + m[15];
   if (cw <= 0) return {-1, -1};

@@ -9,6 +9,7 @@
 
 #include "core/png.h"
 #include "drawn_session.h"
+#include "golden.h"
 #include "gpu_fixture.h"
 #include "image_compare.h"
 #include "render/body_drawable.h"
@@ -20,8 +21,6 @@
 
 namespace pond::test {
 namespace {
-
-constexpr int kWidth = 256, kHeight = 160;
 
 // A kinematic sphere held at the middle (its top above the water) and a floating ball.
 const char* kBodies = R"({"grid": {"rows": 50, "cols": 50},

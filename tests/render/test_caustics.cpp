@@ -29,8 +29,6 @@
 namespace pond::test {
 namespace {
 
-constexpr int kWidth = 256, kHeight = 160;
-
 // A pool with vertical walls, seen from above so the floor shows through the water.
 const char* kCalmPool = R"({"grid": {"rows": 50, "cols": 50}, "border": "vertical",
   "camera": {"eye": [24.5, 20, 42], "target": [24.5, -3, 21]}})";

@@ -12,7 +12,7 @@
 namespace pond::test {
 namespace {
 
-constexpr int kWidth = 320, kHeight = 200;
+constexpr int kClearWidth = 320, kClearHeight = 200;
 
 // A calm pool with vertical walls, 3 units deep and 64 units across at `spacing`, seen from 45
 // degrees above its middle; `lighting` is the scene's lighting object's keys.
@@ -41,9 +41,9 @@ class ClearWaterTest : public GpuTest {
  protected:
   // The floor's contrast through the pool at `spacing`, over the same with absorption off.
   double kept_contrast(double spacing) {
-    const Rgba clear = render_scene_frame(ctx(), calm_pool(spacing, ""), view::Effects{}, kWidth, kHeight);
+    const Rgba clear = render_scene_frame(ctx(), calm_pool(spacing, ""), view::Effects{}, kClearWidth, kClearHeight);
     const Rgba none =
-        render_scene_frame(ctx(), calm_pool(spacing, R"("absorption": [0, 0, 0])"), view::Effects{}, kWidth, kHeight);
+        render_scene_frame(ctx(), calm_pool(spacing, R"("absorption": [0, 0, 0])"), view::Effects{}, kClearWidth, kClearHeight);
     const double kept = contrast(clear) / contrast(none);
     std::printf("spacing %.2f: the floor's contrast through 3 units of calm water is %.2f of it without absorption\n",
                 spacing, kept);
@@ -62,9 +62,9 @@ TEST_F(ClearWaterTest, TheGridSpacingDoesNotChangeHowClearTheWaterIs) {
 // Murky water (a scene's own absorption, ten times pure water's) hides the floor.
 TEST_F(ClearWaterTest, MurkyWaterHidesTheFloor) {
   const Rgba murky = render_scene_frame(ctx(), calm_pool(1.0, R"("absorption": [3, 0.6, 0.1])"), view::Effects{},
-                                        kWidth, kHeight);
+                                        kClearWidth, kClearHeight);
   const Rgba none =
-      render_scene_frame(ctx(), calm_pool(1.0, R"("absorption": [0, 0, 0])"), view::Effects{}, kWidth, kHeight);
+      render_scene_frame(ctx(), calm_pool(1.0, R"("absorption": [0, 0, 0])"), view::Effects{}, kClearWidth, kClearHeight);
   EXPECT_LT(contrast(murky), 0.5 * contrast(none));
 }
 

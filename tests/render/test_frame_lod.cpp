@@ -42,17 +42,17 @@ std::string rain_scene() {
 class FrameLodTest : public GpuTest {};
 
 TEST_F(FrameLodTest, TheLodOfEveryFrameHoldsTauOnTheDrawnSurface) {
-  constexpr int kWidth = 480, kHeight = 300;
+  constexpr int kViewWidth = 480, kViewHeight = 300;
   constexpr double kTau = 1.0;
   const scene::Scene scene = scene::parse_scene(rain_scene(), "test");
   DrawnSession d(ctx(), scene, {}, render::RenderTarget::kFormat);
   render::BodyDrawable bodies(ctx(), d.loop);
   d.loop.add_drawable(bodies);
-  const render::RenderTarget target(ctx(), kWidth, kHeight);
+  const render::RenderTarget target(ctx(), kViewWidth, kViewHeight);
   render::FrameView view;
-  view.camera = d.loop.default_camera(kWidth, kHeight);
+  view.camera = d.loop.default_camera(kViewWidth, kViewHeight);
   view.lod_tolerance_px = kTau;
-  const CheckCamera cam{view.camera.eye, view.camera.target, view.camera.fovy_degrees, kWidth, kHeight};
+  const CheckCamera cam{view.camera.eye, view.camera.target, view.camera.fovy_degrees, kViewWidth, kViewHeight};
   const sim::WaterModel& model = d.session.model();
   const auto rows = static_cast<std::size_t>(model.rows), cols = static_cast<std::size_t>(model.cols);
   d.session.advance(2);

@@ -23,8 +23,6 @@
 namespace pond::test {
 namespace {
 
-constexpr int kWidth = 256, kHeight = 160;
-
 // The default scene's island with a calm tree (tubes, no leaves: the trunk stands free), no splash,
 // seen from low over the water so the surface mirrors well (Fresnel at a grazing angle).
 const char* kCalmIsland = R"({"constraints": [{"kind": "fixed", "rows": [30, 35], "cols": [30, 36]}],
@@ -45,10 +43,6 @@ class ReflectionTest : public GpuTest {
 };
 
 int brightness(const Rgba& img, int x, int y) { return pixel_brightness(img, x, y); }
-std::array<int, 2> project(const std::array<float, 16>& m, double x, double y, double z) {
-  return project_to_pixel(m, x, y, z, kWidth, kHeight);
-}
-
 TEST_F(ReflectionTest, TrunkIsMirroredAboutTheWaterlineAndGoneWithoutReflections) {
   const scene::Scene scene = scene::parse_scene(kCalmIsland, "test");
   const Rgba on = render(kCalmIsland, true), off = render(kCalmIsland, false);
@@ -65,7 +59,7 @@ TEST_F(ReflectionTest, TrunkIsMirroredAboutTheWaterlineAndGoneWithoutReflections
   int checked = 0, darker = 0;
   long beside_difference = 0;
   for (double h = 0.6; h <= 1.5; h += 0.05) {
-    const auto [u, v] = project(vp, x, -(land + h), z);
+    const auto [u, v] = project_to_pixel(vp, x, -(land + h), z);
     ASSERT_TRUE(u >= 6 && u < kWidth - 6 && v >= 0 && v < kHeight) << "mirrored trunk point off screen: " << u << ", " << v;
     ++checked;
     // With reflections the trunk's image is much darker than the sky the water mirrors without them.
@@ -77,7 +71,7 @@ TEST_F(ReflectionTest, TrunkIsMirroredAboutTheWaterlineAndGoneWithoutReflections
   EXPECT_GE(darker, checked * 3 / 4) << darker << " of " << checked << " mirrored trunk pixels are darker";
   EXPECT_LT(beside_difference / (2 * checked), 25) << "the water beside the trunk's image changed too";
   // And above the water, at the trunk's own pixels, both pictures show the same trunk.
-  const auto [tu, tv] = project(vp, x, land + 0.5, z);
+  const auto [tu, tv] = project_to_pixel(vp, x, land + 0.5, z);
   EXPECT_LT(std::abs(brightness(on, tu, tv) - brightness(off, tu, tv)), 12);
 }
 
@@ -110,14 +104,14 @@ TEST_F(ReflectionTest, ThinTrunkReflectsConnectedOnRippledWaterAtAGrazingAngle) 
   const double x = scene.tree->positions[0][1] * model.spacing, z = scene.tree->positions[0][0] * model.spacing;
   const double land = scene.basin.land_height;
   // The trunk itself, halfway up its free part: about 3 pixels wide (the premise).
-  const auto [tu, tv] = project(vp, x, land + 0.8, z);
+  const auto [tu, tv] = project_to_pixel(vp, x, land + 0.8, z);
   int trunk_width = 0;
   for (int u = tu - 8; u <= tu + 8; ++u) trunk_width += brightness(off, u, tv) + 200 < brightness(off, tu - 12, tv);
   ASSERT_GE(trunk_width, 2);
   ASSERT_LE(trunk_width, 4);
   // Its mirror image from 0.6 above the foot (lower, the island's own image hides it) to 1.5.
-  const auto [u0, v0] = project(vp, x, -(land + 0.6), z);
-  const auto [u1, v1] = project(vp, x, -(land + 1.5), z);
+  const auto [u0, v0] = project_to_pixel(vp, x, -(land + 0.6), z);
+  const auto [u1, v1] = project_to_pixel(vp, x, -(land + 1.5), z);
   ASSERT_GE(v1 - v0, 10) << "the mirrored trunk spans too few rows to test";
   std::vector<std::pair<int, int>> spans;  // per row: the leftmost and rightmost darker column
   int empty_run = 0, longest_empty = 0;

@@ -24,7 +24,6 @@
 namespace pond::test {
 namespace {
 
-constexpr int kWidth = 256, kHeight = 160;
 // LOD at 1 px against the full mesh (same state, same camera): at most this share of pixels differs
 // by more than kLodLevels. A 1 px error bound moves edges and shading by about a pixel.
 constexpr int kLodLevels = 16;

@@ -21,16 +21,14 @@
 namespace pond::test {
 namespace {
 
-constexpr int kWidth = 256, kHeight = 160;
-
 // The island of the reflection tests with a calm, leafless tree (its trunk stands free), seen from
 // above on the side its shadow falls (the default sun is toward -x, +y, -z: shadows run to +x, +z).
-const char* kCalmIsland = R"({"constraints": [{"kind": "fixed", "rows": [30, 35], "cols": [30, 36]}],
+const char* kCalmIslandFromAbove = R"({"constraints": [{"kind": "fixed", "rows": [30, 35], "cols": [30, 36]}],
   "camera": {"eye": [44, 12, 50], "target": [35, 0.5, 35], "fovy": 40},
   "tree": {"depth": 6, "draw": "tubes", "leaves": false, "positions": [[32.5, 33]]},
   "wind": {"strength": 0}})";
 // The same island with a leafy tree in the wind after a splash (the golden pictures).
-const char* kIsland = R"({"constraints": [{"kind": "fixed", "rows": [30, 35], "cols": [30, 36]}],
+const char* kIslandFromAbove = R"({"constraints": [{"kind": "fixed", "rows": [30, 35], "cols": [30, 36]}],
   "camera": {"eye": [46, 14, 52], "target": [35, 0.5, 35], "fovy": 45},
   "perturbations": [{"step": 0, "row": 40, "col": 20, "radius": 2.0, "amplitude": 1.0}],
   "tree": {"depth": 7, "draw": "tubes", "leaves": true}, "wind": {"strength": 3}})";
@@ -39,10 +37,6 @@ const char* kIsland = R"({"constraints": [{"kind": "fixed", "rows": [30, 35], "c
 const char* kSphere = R"({"grid": {"rows": 50, "cols": 50},
   "camera": {"eye": [26, 60, 30], "target": [25, 0, 25], "fovy": 40},
   "bodies": [{"shape": "sphere", "radius": 3.0, "motion": "kinematic", "path": [[0, 20.0, 4.0, 20.0]]}]})";
-
-std::array<int, 2> project(const std::array<float, 16>& m, double x, double y, double z) {
-  return project_to_pixel(m, x, y, z, kWidth, kHeight);
-}
 
 int brightness(const Rgba& img, std::array<int, 2> p) { return pixel_brightness(img, p[0], p[1]); }
 
@@ -81,11 +75,11 @@ std::array<double, 2> surface_point_seeing(const std::array<double, 3>& eye, dou
 }
 
 TEST_F(ShadowTest, TrunkShadowFallsAwayFromTheSunAndGoesWithShadowsOff) {
-  const scene::Scene scene = scene::parse_scene(kCalmIsland, "test");
-  const Rgba on = render(kCalmIsland, true), off = render(kCalmIsland, false);
+  const scene::Scene scene = scene::parse_scene(kCalmIslandFromAbove, "test");
+  const Rgba on = render(kCalmIslandFromAbove, true), off = render(kCalmIslandFromAbove, false);
   expect_golden("shadow_trunk_on", on);
   expect_golden("shadow_trunk_off", off);
-  const std::array<float, 16> vp = view_proj(kCalmIsland);
+  const std::array<float, 16> vp = view_proj(kCalmIslandFromAbove);
   const double h = sim::build_model(scene).spacing;
   const double x = scene.tree->positions[0][1] * h, z = scene.tree->positions[0][0] * h;
   const double land = scene.basin.land_height;
@@ -95,8 +89,8 @@ TEST_F(ShadowTest, TrunkShadowFallsAwayFromTheSunAndGoesWithShadowsOff) {
   // sun, which no shadow reaches.
   int checked = 0, darker = 0, sun_side_changed = 0;
   for (double up = 0.15; up <= 0.9; up += 0.05) {
-    const auto p = project(vp, x + step[0] * up, land, z + step[1] * up);
-    const auto q = project(vp, x - step[0] * up, land, z - step[1] * up);
+    const auto p = project_to_pixel(vp, x + step[0] * up, land, z + step[1] * up);
+    const auto q = project_to_pixel(vp, x - step[0] * up, land, z - step[1] * up);
     ASSERT_TRUE(on_image(p) && on_image(q)) << "off screen at " << up;
     ++checked;
     if (brightness(on, p) + 40 < brightness(off, p)) ++darker;
@@ -116,7 +110,7 @@ TEST_F(ShadowTest, TrunkShadowFallsAwayFromTheSunAndGoesWithShadowsOff) {
     const double sx = x + step[0] * height, sz = z + step[1] * height;
     if (sx >= 30 * h && sx <= 36 * h && sz >= 30 * h && sz <= 35 * h) continue;  // on the island
     const auto seen = surface_point_seeing(scene.camera->eye, sx + t[0] * depth / -t[1], sz + t[2] * depth / -t[1], depth);
-    const auto p = project(vp, seen[0], 0.0, seen[1]);
+    const auto p = project_to_pixel(vp, seen[0], 0.0, seen[1]);
     if (!on_image(p)) continue;
     ++water_checked;
     if (brightness(on, p) + 15 < brightness(off, p)) ++water_darker;
@@ -126,7 +120,7 @@ TEST_F(ShadowTest, TrunkShadowFallsAwayFromTheSunAndGoesWithShadowsOff) {
   // With shadows off nothing of the kind: the picture equals a frame of a scene without the key's
   // effect (the default on, set off by FrameView) -- checked by the golden above; and the tree's
   // own pixels are the same in both.
-  const auto trunk = project(vp, x, land + 0.5, z);
+  const auto trunk = project_to_pixel(vp, x, land + 0.5, z);
   EXPECT_LT(std::abs(brightness(on, trunk) - brightness(off, trunk)), 12);
 }
 
@@ -149,9 +143,9 @@ TEST_F(ShadowTest, SphereShadowsTheFloorThroughCalmWater) {
   int checked = 0, darker = 0, sun_side_changed = 0;
   for (double dx = -0.6; dx <= 0.6; dx += 0.3)
     for (double dz = -0.6; dz <= 0.6; dz += 0.3) {
-      const auto p = project(vp, fx + dx, 0.0, fz + dz);
+      const auto p = project_to_pixel(vp, fx + dx, 0.0, fz + dz);
       // As far from the sphere toward the sun: sunlit water in both pictures.
-      const auto q = project(vp, 2 * c[0] - fx + dx, 0.0, 2 * c[2] - fz + dz);
+      const auto q = project_to_pixel(vp, 2 * c[0] - fx + dx, 0.0, 2 * c[2] - fz + dz);
       ASSERT_TRUE(on_image(p) && on_image(q));
       ++checked;
       if (brightness(on, p) + 25 < brightness(off, p)) ++darker;
@@ -163,8 +157,8 @@ TEST_F(ShadowTest, SphereShadowsTheFloorThroughCalmWater) {
 
 // Golden pictures of the leafy tree's island after a splash, with and without shadows.
 TEST_F(ShadowTest, IslandGoldens) {
-  expect_golden("shadow_island_on", render(kIsland, true, 12));
-  expect_golden("shadow_island_off", render(kIsland, false, 12));
+  expect_golden("shadow_island_on", render(kIslandFromAbove, true, 12));
+  expect_golden("shadow_island_off", render(kIslandFromAbove, false, 12));
 }
 
 }  // namespace

@@ -23,12 +23,12 @@
 namespace pond::test {
 namespace {
 
-constexpr int kWidth = 320, kHeight = 200;
+constexpr int kSubmergedWidth = 320, kSubmergedHeight = 200;
 using V = std::array<double, 3>;
 
 V sub(V a, V b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 double dot(V a, V b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-V unit(V a) {
+V normalized(V a) {
   const double l = std::sqrt(dot(a, a));
   return {a[0] / l, a[1] / l, a[2] / l};
 }
@@ -52,7 +52,7 @@ std::optional<double> hit(V o, V d, const Ball& b) {
 V refracted(V d) {
   const double eta = 1.0 / 1.33, cos_i = -d[1], k = 1 - eta * eta * (1 - cos_i * cos_i);
   const double f = eta * cos_i - std::sqrt(k);
-  return unit({eta * d[0], eta * d[1] + f, eta * d[2]});
+  return normalized({eta * d[0], eta * d[1] + f, eta * d[2]});
 }
 
 const char* kScene = R"({"grid": {"rows": 65, "cols": 65}, "border": "vertical", "basin": {"floor_depth": 4.0},
@@ -66,21 +66,21 @@ class SubmergedTest : public GpuTest {};
 
 TEST_F(SubmergedTest, BallsUnderClearWaterShowRefractedWhereTheirRaysMeetThem) {
   const view::Effects plain{.reflections = false, .caustics = false, .shadows = false};
-  const Rgba with = render_scene_frame(ctx(), kScene, plain, kWidth, kHeight);
-  const Rgba without = render_scene_frame(ctx(), kEmpty, plain, kWidth, kHeight);
+  const Rgba with = render_scene_frame(ctx(), kScene, plain, kSubmergedWidth, kSubmergedHeight);
+  const Rgba without = render_scene_frame(ctx(), kEmpty, plain, kSubmergedWidth, kSubmergedHeight);
   view::Effects off = plain;
   off.submerged = false;
-  const Rgba switched_off = render_scene_frame(ctx(), kScene, off, kWidth, kHeight);
+  const Rgba switched_off = render_scene_frame(ctx(), kScene, off, kSubmergedWidth, kSubmergedHeight);
   const scene::Scene scene = scene::parse_scene(kScene, "test");
   const sim::WaterModel model = sim::build_model(scene);
-  const std::array<float, 16> vp = view::view_projection(view::scene_camera(scene.camera, model, kWidth, kHeight), model);
+  const std::array<float, 16> vp = view::view_projection(view::scene_camera(scene.camera, model, kSubmergedWidth, kSubmergedHeight), model);
   const V eye = {32, 9, 58};
   const std::array<Ball, 2> balls = {Ball{{26, 0, 36}, 2.5}, Ball{{38, -2.6, 40}, 1.2}};
   // Per pixel: 1 sees a ball through the water, 2 the floor, 3 both (an edge: not judged).
-  std::vector<int> seen(static_cast<std::size_t>(kWidth) * kHeight, 0);
+  std::vector<int> seen(static_cast<std::size_t>(kSubmergedWidth) * kSubmergedHeight, 0);
   for (double x = 18; x <= 46; x += 0.02)
     for (double z = 30; z <= 48; z += 0.02) {
-      const V w = {x, 0, z}, d = unit(sub(w, eye));
+      const V w = {x, 0, z}, d = normalized(sub(w, eye));
       bool hidden = false;  // behind a ball's part above the water
       for (const Ball& b : balls)
         if (const auto s = hit(eye, d, b); s && *s < std::sqrt(dot(sub(w, eye), sub(w, eye)))) hidden = true;
@@ -88,13 +88,13 @@ TEST_F(SubmergedTest, BallsUnderClearWaterShowRefractedWhereTheirRaysMeetThem) {
       bool meets = false;
       for (const Ball& b : balls)
         if (const auto s = hit(w, refracted(d), b); s && w[1] + *s * refracted(d)[1] > -4.0) meets = true;
-      const auto [u, v] = project_to_pixel(vp, x, 0, z, kWidth, kHeight);
-      if (u >= 0 && u < kWidth && v >= 0 && v < kHeight) seen[static_cast<std::size_t>(v) * kWidth + u] |= meets ? 1 : 2;
+      const auto [u, v] = project_to_pixel(vp, x, 0, z, kSubmergedWidth, kSubmergedHeight);
+      if (u >= 0 && u < kSubmergedWidth && v >= 0 && v < kSubmergedHeight) seen[static_cast<std::size_t>(v) * kSubmergedWidth + u] |= meets ? 1 : 2;
     }
   int ball = 0, ball_changed = 0, floor = 0, floor_changed = 0, off_changed = 0;
-  for (int v = 0; v < kHeight; ++v)
-    for (int u = 0; u < kWidth; ++u) {
-      const int s = seen[static_cast<std::size_t>(v) * kWidth + u];
+  for (int v = 0; v < kSubmergedHeight; ++v)
+    for (int u = 0; u < kSubmergedWidth; ++u) {
+      const int s = seen[static_cast<std::size_t>(v) * kSubmergedWidth + u];
       const bool changed = std::abs(pixel_brightness(with, u, v) - pixel_brightness(without, u, v)) > 24;
       if (s == 1) ++ball, ball_changed += changed,
                   off_changed += std::abs(pixel_brightness(switched_off, u, v) - pixel_brightness(without, u, v)) > 24;

@@ -39,8 +39,6 @@ namespace {
 
 namespace sh = shared::tree_wind;
 
-constexpr int kWidth = 256, kHeight = 160;
-
 // ---- Parity --------------------------------------------------------------------------------------
 
 class TreeParityTest : public GpuTest {

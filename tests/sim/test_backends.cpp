@@ -47,16 +47,16 @@ TEST(Backends, GoldenHashOfTheDefaultScene) {
     }
 }
 
-struct Case {
+struct MatrixCase {
   const char* name;
   Scene scene;
   int steps;
 };
 
-std::vector<Case> matrix() {
+std::vector<MatrixCase> matrix() {
   using test::grid_scene;
   using test::splash;
-  std::vector<Case> cases;
+  std::vector<MatrixCase> cases;
   {
     Scene s = grid_scene(50, 50);
     s.perturbations.push_back(splash(25, 25, 2, 1));
@@ -108,7 +108,7 @@ std::vector<Case> matrix() {
 }
 
 TEST(Backends, AllBackendsAndThreadCountsAgreeBitForBit) {
-  for (const Case& c : matrix())
+  for (const MatrixCase& c : matrix())
     for (MathMode math : {MathMode::exact, MathMode::fast}) {
       const WaterModel m = build_model(c.scene, math);
       CpuSolver reference(m, Backend::scalar, 1);
