@@ -53,6 +53,7 @@ LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
     return fit(inside ? leaf_is_fine(w, t, m) : clipped_leaf_is_fine(w, clipped));
   }
   const bool small = x1 - x0 <= kBlockCells && y1 - y0 <= kBlockCells;
+  const bool wide = !small && inside && x1 - x0 <= 2 * kBlockCells && y1 - y0 <= 2 * kBlockCells;
   const int bx = x0 / kBlockCells, by = y0 / kBlockCells;
   // Fine when the ranges prove it or (a small triangle) its block's nodes do: either order gives
   // the same outcome, so the mesh does not depend on which blocks were made or brought before.
@@ -72,6 +73,7 @@ LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
   };
   if (small && blocks_.made(bx, by)) return fit(on_nodes() || ranged());
   if (ranged()) return Fit::yes;
+  if (wide) return wide_leaf_fits(t, m);
   if (!small) return Fit::no;
   if (!block_held(bx, by)) {
     --stats_.tested;  // tested again once its block is brought

@@ -10,7 +10,8 @@
 //     tau * depth / K in the frustum, +infinity for a box wholly outside it): no node is read;
 //  2. failing that, a triangle of at most a block (surface_blocks.h) is judged on its block's
 //     nodes, made on first use: its nested bound (error_bounds.h), then proofs by parts, then
-//     an exact scan of the parts left (triangle_scan.h);
+//     an exact scan of the parts left (triangle_scan.h); one of at most two blocks across, on the
+//     blocks it covers, by parts that each lie in one (wide_leaf.cpp);
 //  3. else its midpoint is activated together with its ancestors in the dependency DAG (so the
 //     mesh stays conforming), and every triangle created that way is tested in turn, forced ones
 //     included. Triangles reaching past the grid (sizes other than 2^k + 1) are tested and drawn
@@ -85,6 +86,7 @@ class LodBuilder {
  private:
   enum class Fit { yes, no, later };  // later: its block is not on the host yet
   Fit leaf_fits(const Tri& t, Point m);
+  Fit wide_leaf_fits(const Tri& t, Point m);  // wide_leaf.cpp
   bool block_held(int bx, int by);
   std::uint8_t& held_at(int bx, int by) {
     return held_[static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_.blocks_x()) + static_cast<std::size_t>(bx)];

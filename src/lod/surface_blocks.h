@@ -22,8 +22,9 @@
 namespace pond::lod {
 
 // A triangle whose index-space bounding box is at most this many cells across lies in one block
-// and is judged on its nodes; a larger one only on tile ranges (tile_ranges.h).
-constexpr int kBlockCells = 32;
+// and is judged on its nodes; one at most twice as wide, on the blocks it covers (wide_leaf.cpp);
+// a larger one only on tile ranges (tile_ranges.h). 16 rather than 32: docs/perf.md.
+constexpr int kBlockCells = 16;
 
 struct SurfaceBlock {
   Point origin;               // its first node in the grid

@@ -89,14 +89,13 @@ namespace {
 // The same test in double, for triangles the float pass cannot decide: every node is then
 // judged within 1e-13 relative, far inside the budgets' own 1e-5 margin.
 bool within_budget_double(const GridHierarchy& grid, const NodePositions& p, const float* budget,
-                          const Tri& t, const Tri& region) {
+                          const Tri& t, const TriCorners& c, const Tri& region) {
   const int lx = t.left.x - t.apex.x, ly = t.left.y - t.apex.y;
   const int rx = t.right.x - t.apex.x, ry = t.right.y - t.apex.y;
   const double inv_len2 = 1.0 / (double(lx) * lx + double(ly) * ly);
-  const std::uint32_t a = grid.id(t.apex), l = grid.id(t.left), r = grid.id(t.right);
-  const double ax = p.x[a], ay = p.y[a], az = p.z[a];
-  const double lx3 = p.x[l] - ax, ly3 = p.y[l] - ay, lz3 = p.z[l] - az;
-  const double rx3 = p.x[r] - ax, ry3 = p.y[r] - ay, rz3 = p.z[r] - az;
+  const double ax = c.x[0], ay = c.y[0], az = c.z[0];
+  const double lx3 = c.x[1] - ax, ly3 = c.y[1] - ay, lz3 = c.z[1] - az;
+  const double rx3 = c.x[2] - ax, ry3 = c.y[2] - ay, rz3 = c.z[2] - az;
   const int y0 = std::min({region.apex.y, region.left.y, region.right.y});
   const int y1 = std::max({region.apex.y, region.left.y, region.right.y});
   const std::size_t cols = static_cast<std::size_t>(grid.cols());
@@ -127,6 +126,17 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
 
 bool within_budget(const GridHierarchy& grid, const NodePositions& p, const float* budget,
                    float largest, const Tri& t, const Tri& region, long long* visited) {
+  TriCorners c;
+  const Point corner[3] = {t.apex, t.left, t.right};
+  for (int k = 0; k < 3; ++k) {
+    const std::uint32_t n = grid.id(corner[k]);
+    c.x[k] = p.x[n], c.y[k] = p.y[n], c.z[k] = p.z[n];
+  }
+  return within_budget(grid, p, budget, largest, t, c, region, visited);
+}
+
+bool within_budget(const GridHierarchy& grid, const NodePositions& p, const float* budget,
+                   float largest, const Tri& t, const TriCorners& c, const Tri& region, long long* visited) {
   // Legs apex->left and apex->right are orthogonal and of equal length, so the barycentric
   // weights of left and right are plain projections onto them. The squared leg length is a
   // power of two (legs are (2^k, 0) or (2^k, 2^k) turned), so every weight, the integer
@@ -134,17 +144,16 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
   const int lx = t.left.x - t.apex.x, ly = t.left.y - t.apex.y;
   const int rx = t.right.x - t.apex.x, ry = t.right.y - t.apex.y;
   const float inv_len2 = 1.0f / static_cast<float>(static_cast<long long>(lx) * lx + static_cast<long long>(ly) * ly);
-  const std::uint32_t a = grid.id(t.apex), l = grid.id(t.left), r = grid.id(t.right);
   // In float so that rows vectorize. Every component of the miss vector is then within about
   // 24 eps * largest of its exact value (weights err by a few eps and multiply differences of
   // at most 2 * largest; three sums of magnitude <= 3 * largest), so its length is within
   // 42 eps * largest. With 64 eps * largest of slack each way, a node is surely within or surely
   // over its budget; the rare triangle with a node in between is decided in double.
   const float slack = 64 * largest * std::numeric_limits<float>::epsilon();
-  const float ax = p.x[a], ay = p.y[a], az = p.z[a];
+  const float ax = c.x[0], ay = c.y[0], az = c.z[0];
   const ScanPlane plane{_mm_set1_ps(ax), _mm_set1_ps(ay), _mm_set1_ps(az),
-                        _mm_set1_ps(p.x[l] - ax), _mm_set1_ps(p.y[l] - ay), _mm_set1_ps(p.z[l] - az),
-                        _mm_set1_ps(p.x[r] - ax), _mm_set1_ps(p.y[r] - ay), _mm_set1_ps(p.z[r] - az),
+                        _mm_set1_ps(c.x[1] - ax), _mm_set1_ps(c.y[1] - ay), _mm_set1_ps(c.z[1] - az),
+                        _mm_set1_ps(c.x[2] - ax), _mm_set1_ps(c.y[2] - ay), _mm_set1_ps(c.z[2] - az),
                         _mm_set1_ps(static_cast<float>(lx) * inv_len2),
                         _mm_set1_ps(static_cast<float>(rx) * inv_len2), _mm_set1_ps(slack)};
   const int y0 = std::min({region.apex.y, region.left.y, region.right.y});
@@ -168,7 +177,7 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
     undecided |= v.close;
   }
   if (visited) *visited += count;
-  if (ok && undecided) return within_budget_double(grid, p, budget, t, region);
+  if (ok && undecided) return within_budget_double(grid, p, budget, t, c, region);
   return ok;
 }
 

@@ -23,6 +23,15 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& positions, co
 bool within_budget(const GridHierarchy& grid, const NodePositions& positions, const float* budget,
                    float largest, const Tri& t, const Tri& region, long long* visited);
 
+// The same test where t's corners need not be in `positions` (a triangle over several blocks,
+// `region` inside the one `positions` holds, all in its coordinates): their world positions, apex,
+// left, right.
+struct TriCorners {
+  float x[3], y[3], z[3];
+};
+bool within_budget(const GridHierarchy& grid, const NodePositions& positions, const float* budget,
+                   float largest, const Tri& t, const TriCorners& corners, const Tri& region, long long* visited);
+
 // The same test for the fan (corner[0], corner[k], corner[k+1]) of a clipped triangle, in double.
 bool fan_within_budget(const GridPolygon& polygon, const NodePositions& positions,
                        const float* budget, long long* visited);
