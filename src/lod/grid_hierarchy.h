@@ -15,6 +15,7 @@
 // no T-junctions) exactly when the set is closed under "a vertex's parents are active"
 // (Lindstrom & Pascucci); the leaves reached from the roots by splitting at active midpoints
 // are then the triangles.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -33,6 +34,15 @@ struct Point {
 struct Tri {
   Point apex, left, right;
 };
+
+// The columns [x0, x1] and rows [y0, y1] a triangle spans.
+struct CellBox {
+  int x0, x1, y0, y1;
+};
+inline CellBox box_of(const Tri& t) {
+  return {std::min({t.apex.x, t.left.x, t.right.x}), std::max({t.apex.x, t.left.x, t.right.x}),
+          std::min({t.apex.y, t.left.y, t.right.y}), std::max({t.apex.y, t.left.y, t.right.y})};
+}
 
 // The diamond a split vertex is the centre of: the hypotenuse it halves and the apexes of the
 // (up to) two triangles sharing it. Parents may lie outside the grid (border diamonds).

@@ -41,8 +41,8 @@ std::size_t LodBuilder::max_indices() const {
 // Is t, a triangle of the hierarchy whose midpoint m is not active, fine as a leaf, on the tile
 // ranges or (a triangle within a block) its block's nodes? Later: its block is not on the host yet.
 LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
-  const int x0 = std::min({t.apex.x, t.left.x, t.right.x}), x1 = std::max({t.apex.x, t.left.x, t.right.x});
-  const int y0 = std::min({t.apex.y, t.left.y, t.right.y}), y1 = std::max({t.apex.y, t.left.y, t.right.y});
+  const CellBox box = box_of(t);  // named, not bound: clang 14 cannot capture bindings in lambdas
+  const int x0 = box.x0, x1 = box.x1, y0 = box.y0, y1 = box.y1;
   const bool inside = grid_.within_grid(t);
   GridPolygon clipped;  // t's part in the grid, when it reaches past it
   if (!inside && (clipped = clip_to_grid(t, rows(), cols())).count < 3) return Fit::yes;  // wholly outside
@@ -137,9 +137,6 @@ bool LodBuilder::leaf_is_fine(const SurfaceBlock& blk, const Tri& t, Point mid_p
   // holds no node but its corners, and every corner of a part (t's corners, m, c1, c2) has been
   // checked above. Only the parts left unproved are scanned. Deviations are rounded up past the
   // double computation's error (~1e-15 relative) and the sums past their own rounding.
-  const auto deviation_up = [&](double d2) {
-    return std::sqrt(d2) * (1 + 1e-12) + 1e-12 * double(largest_);
-  };
   const auto proved_by = [&](Point v, double deviations) {
     const NestedBound& b = bounds[grid.id(v)];
     return (deviations + b.error) * (1 + 1e-12) <= b.min_budget;
@@ -181,6 +178,9 @@ bool LodBuilder::clipped_leaf_is_fine(const SurfaceBlock& b, const GridPolygon& 
   ++stats_.scanned;
   return fan_within_budget(polygon, b.positions(), b.budget.data(), &stats_.scanned_nodes);
 }
+
+// A deviation from its square (in double), rounded up past the double computation's error.
+double LodBuilder::deviation_up(double d2) const { return std::sqrt(d2) * (1 + 1e-12) + 1e-12 * double(largest_); }
 
 // Sets bits of v's state, remembering v so that the next build clears it.
 void LodBuilder::mark(std::uint8_t& s, std::uint8_t bits, Point v) {

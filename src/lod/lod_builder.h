@@ -87,6 +87,7 @@ class LodBuilder {
   enum class Fit { yes, no, later };  // later: its block is not on the host yet
   Fit leaf_fits(const Tri& t, Point m);
   Fit wide_leaf_fits(const Tri& t, Point m);  // wide_leaf.cpp
+  double deviation_up(double d2) const;
   bool block_held(int bx, int by);
   std::uint8_t& held_at(int bx, int by) {
     return held_[static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_.blocks_x()) + static_cast<std::size_t>(bx)];

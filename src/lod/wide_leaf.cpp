@@ -18,12 +18,13 @@ namespace pond::lod {
 namespace {
 
 bool in_one_block(const Tri& t) {
-  return std::max({t.apex.x, t.left.x, t.right.x}) - std::min({t.apex.x, t.left.x, t.right.x}) <= kBlockCells &&
-         std::max({t.apex.y, t.left.y, t.right.y}) - std::min({t.apex.y, t.left.y, t.right.y}) <= kBlockCells;
+  const CellBox b = box_of(t);
+  return b.x1 - b.x0 <= kBlockCells && b.y1 - b.y0 <= kBlockCells;
 }
 
 Point block_of(const Tri& t) {
-  return {std::min({t.apex.x, t.left.x, t.right.x}) / kBlockCells, std::min({t.apex.y, t.left.y, t.right.y}) / kBlockCells};
+  const CellBox b = box_of(t);
+  return {b.x0 / kBlockCells, b.y0 / kBlockCells};
 }
 
 }  // namespace
@@ -53,10 +54,8 @@ LodBuilder::Fit LodBuilder::wide_leaf_fits(const Tri& t, Point m) {
   const RangeProof range_proof(*ranges_, *box_budget_);
   bool ranged[4], all_ranged = true, held = true;
   for (int k = 0; k < n; ++k) {
-    const Tri& p = tris[k];
-    ranged[k] = range_proof.proves(std::min({p.apex.x, p.left.x, p.right.x}), std::max({p.apex.x, p.left.x, p.right.x}),
-                                   std::min({p.apex.y, p.left.y, p.right.y}), std::max({p.apex.y, p.left.y, p.right.y}),
-                                   polygon);
+    const CellBox b = box_of(tris[k]);
+    ranged[k] = range_proof.proves(b.x0, b.x1, b.y0, b.y1, polygon);
     all_ranged = all_ranged && ranged[k];
   }
   if (all_ranged) {
@@ -83,7 +82,6 @@ LodBuilder::Fit LodBuilder::wide_leaf_fits(const Tri& t, Point m) {
     }
     return d2;
   };
-  const auto deviation_up = [&](double d2) { return std::sqrt(d2) * (1 + 1e-12) + 1e-12 * double(largest_); };
   // Part k's node v over its own budget fails t at once (the exact test would find it).
   const auto over = [&](double d2, Point v, int k) {
     const Point b = block_of(tris[k]);
