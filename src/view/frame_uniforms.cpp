@@ -18,11 +18,6 @@ wr::vec4 v4(const std::array<double, 3>& a) {
 
 }  // namespace
 
-std::array<double, 3> unit(const std::array<double, 3>& d) {
-  const double l = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  return {d[0] / l, d[1] / l, d[2] / l};
-}
-
 wr::WaterFrame frame_uniforms(const FrameUniformsInput& in) {
   const sim::WaterModel& model = in.model;
   const LightingSpec& l = in.lighting;

@@ -32,7 +32,4 @@ struct FrameUniformsInput {
 
 shared::water_render::WaterFrame frame_uniforms(const FrameUniformsInput& in);
 
-// `d` scaled to unit length (the sun's direction as the shaders take it).
-std::array<double, 3> unit(const std::array<double, 3>& d);
-
 }  // namespace pond::view

@@ -13,10 +13,6 @@ double dot(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] *
 V3 cross(const V3& a, const V3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-V3 normalized(const V3& a) {
-  const double l = std::sqrt(dot(a, a));
-  return {a[0] / l, a[1] / l, a[2] / l};
-}
 
 // The box's corners.
 std::array<V3, 8> corners(const ShadowCaster& c) {
@@ -28,6 +24,11 @@ std::array<V3, 8> corners(const ShadowCaster& c) {
 
 }  // namespace
 
+std::array<double, 3> unit(const std::array<double, 3>& d) {
+  const double l = std::sqrt(dot(d, d));
+  return {d[0] / l, d[1] / l, d[2] / l};
+}
+
 ShadowCaster sphere_caster(const std::array<float, 3>& centre, float radius) {
   return {{centre[0] - radius, centre[1] - radius, centre[2] - radius},
           {centre[0] + radius, centre[1] + radius, centre[2] + radius}};
@@ -38,10 +39,10 @@ std::optional<SunShadowView> fit_sun_shadow(const std::array<double, 3>& toward_
                                             std::uint32_t max_size) {
   if (casters.empty()) return std::nullopt;
   SunShadowView v;
-  const V3 sun = normalized(toward_sun);
+  const V3 sun = unit(toward_sun);
   v.along = {-sun[0], -sun[1], -sun[2]};  // the sunlight's direction: depth grows along it
   // Across the light: any axis not parallel to it (the sun straight overhead takes x).
-  v.right = normalized(std::abs(sun[1]) > 0.999 ? cross(v.along, V3{0, 0, 1}) : cross(v.along, V3{0, 1, 0}));
+  v.right = unit(std::abs(sun[1]) > 0.999 ? cross(v.along, V3{0, 0, 1}) : cross(v.along, V3{0, 1, 0}));
   v.down = cross(v.along, v.right);  // right x down = along: right-handed like Vulkan's clip space
   double lo[3], hi[3];
   for (int k = 0; k < 3; ++k) {
@@ -135,12 +136,12 @@ std::vector<PixelRect> merge_overlapping(std::vector<PixelRect> rects) {
 }
 
 std::array<float, 3> sunlight_in_water(const std::array<double, 3>& toward_sun) {
-  const V3 sun = normalized(toward_sun);
+  const V3 sun = unit(toward_sun);
   constexpr double eta = 1.0 / 1.33;
   // GLSL's refract(I = -sun, N = +y, eta); k > 0 always for air to water.
   const double cos_i = std::max(sun[1], 0.0);
   const double k = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
-  const V3 t = normalized({-eta * sun[0], -std::sqrt(k), -eta * sun[2]});
+  const V3 t = unit({-eta * sun[0], -std::sqrt(k), -eta * sun[2]});
   return {static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2])};
 }
 

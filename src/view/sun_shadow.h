@@ -67,4 +67,7 @@ std::vector<PixelRect> merge_overlapping(std::vector<PixelRect> rects);
 // 1 / 1.33): unit, pointing down.
 std::array<float, 3> sunlight_in_water(const std::array<double, 3>& toward_sun);
 
+// `d` scaled to unit length (the sun's direction as the shaders take it).
+std::array<double, 3> unit(const std::array<double, 3>& d);
+
 }  // namespace pond::view

@@ -25,6 +25,7 @@
 #include "render/water_source.h"
 #include "scene/scene.h"
 #include "scene/session_spec.h"
+#include "view/sun_shadow.h"
 
 namespace pond::test {
 namespace {
@@ -40,10 +41,6 @@ const char* kSplashPool = R"({"grid": {"rows": 50, "cols": 50}, "border": "verti
 const char* kRingsPool = R"({"grid": {"rows": 97, "cols": 97}, "border": "vertical",
   "perturbations": [{"step": 0, "row": 48, "col": 48, "radius": 3.0, "amplitude": 0.4}]})";
 
-std::array<double, 3> unit(const std::array<double, 3>& v) {
-  const double l = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-  return {v[0] / l, v[1] / l, v[2] / l};
-}
 
 struct Map {
   vk::Extent2D extent;
@@ -80,7 +77,7 @@ class CausticsTest : public GpuTest {
     const render::WaterSource::DrawBuffers b = water.prepare(0);
     render::CausticsPass pass(ctx(), session.model(), 1);
     pass.bind(0, *b.state, *b.normals);
-    const std::array<double, 3> sun = unit(scene.lighting.sun);
+    const std::array<double, 3> sun = view::unit(scene.lighting.sun);
     const render::CausticsPush push = view::caustics_push(session.model(), sun, scene.basin.floor_depth, b.stride, b.pitch);
     ctx().submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
       using S = vk::PipelineStageFlagBits2;
