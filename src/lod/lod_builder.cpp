@@ -63,6 +63,7 @@ LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
     if (inside) corners.count = 3, corners.corner[0] = t.apex, corners.corner[1] = t.left, corners.corner[2] = t.right;
     const bool fine = RangeProof(*ranges_, *box_budget_).proves(x0, std::min(x1, cols() - 1), y0, std::min(y1, rows() - 1), corners);
     stats_.ranged += fine;
+    if (fine) note_corners(corners);
     return fine;
   };
   const auto on_nodes = [&] {
@@ -236,6 +237,7 @@ std::size_t LodBuilder::build(const NodePositions& p, const TileRanges& ranges, 
     const core::GridWindow all{0, 0, rows(), cols()};
     if (!p.fetch->holds(all)) p.fetch->bring(std::span(&all, 1)), ++stats_.brought;
   }
+  ranged_corners_.clear(), corners_brought_.clear();
   if (p.fetch) held_.assign(static_cast<std::size_t>(blocks_.blocks_x()) * static_cast<std::size_t>(blocks_.blocks_y()), 0);
   work_.assign(grid_.roots().begin(), grid_.roots().end());
   refine();
@@ -288,9 +290,20 @@ void LodBuilder::refine() {
       work_.push_back(child_right(t, m));
     }
     if (waiting_.empty()) return;
+    // The blocks and, in the same copy, the corners of the leaves the ranges accepted so far that no
+    // block asked for holds: read_corners() would otherwise bring them in a wait of their own.
+    const std::size_t blocks = to_bring_.size();
+    const std::uint32_t c = static_cast<std::uint32_t>(cols());
+    for (std::uint32_t id : ranged_corners_) {
+      const int row = static_cast<int>(id / c), col = static_cast<int>(id % c);
+      if (in_a_block(row, col, true)) continue;
+      to_bring_.push_back({row, col, 1, 1});
+      corners_brought_.push_back(id);
+    }
+    ranged_corners_.clear();
     positions_.fetch->bring(to_bring_);
     ++stats_.brought;
-    for (const core::GridWindow& w : to_bring_) held_at(w.col0 / kBlockCells, w.row0 / kBlockCells) = 1;
+    for (std::size_t k = 0; k < blocks; ++k) held_at(to_bring_[k].col0 / kBlockCells, to_bring_[k].row0 / kBlockCells) = 1;
     to_bring_.clear();
     work_.swap(waiting_);
   }
@@ -305,17 +318,11 @@ void LodBuilder::read_corners(std::span<const std::uint32_t> triangles) {
     for (int bx = 0; bx < blocks_.blocks_x(); ++bx)
       if (held_at(bx, by) == 1) reads.push_back(blocks_.window(bx, by));
   const std::size_t blocks = reads.size();
-  const auto in_a_block_read = [&](int r, int c) {
-    for (int by : {(r - 1) / kBlockCells, r / kBlockCells})
-      for (int bx : {(c - 1) / kBlockCells, c / kBlockCells})
-        if (bx >= 0 && by >= 0 && bx < blocks_.blocks_x() && by < blocks_.blocks_y() && held_at(bx, by) == 1)
-          return true;
-    return false;
-  };
   const std::uint32_t c = static_cast<std::uint32_t>(cols());
-  std::vector<std::uint32_t> outside;
-  for (std::uint32_t id : triangles)
-    if (!in_a_block_read(static_cast<int>(id / c), static_cast<int>(id % c))) outside.push_back(id);
+  std::vector<std::uint32_t> outside;  // the leaves' corners, and those brought with blocks (read too)
+  for (std::span<const std::uint32_t> ids : {triangles, std::span<const std::uint32_t>(corners_brought_)})
+    for (std::uint32_t id : ids)
+      if (!in_a_block(static_cast<int>(id / c), static_cast<int>(id % c), false)) outside.push_back(id);
   std::sort(outside.begin(), outside.end());
   outside.erase(std::unique(outside.begin(), outside.end()), outside.end());
   for (std::uint32_t id : outside) reads.push_back({static_cast<int>(id / c), static_cast<int>(id % c), 1, 1});
@@ -324,6 +331,23 @@ void LodBuilder::read_corners(std::span<const std::uint32_t> triangles) {
     if (!positions_.fetch->holds(reads[k])) missing.push_back(reads[k]);
   if (!missing.empty()) positions_.fetch->bring(missing), ++stats_.brought;
   reads_ = std::move(reads);
+}
+
+// Whether node (row, col) lies in a block held this frame or, with `or_queued`, about to be brought.
+bool LodBuilder::in_a_block(int row, int col, bool or_queued) {
+  for (int by : {(row - 1) / kBlockCells, row / kBlockCells})
+    for (int bx : {(col - 1) / kBlockCells, col / kBlockCells}) {
+      if (bx < 0 || by < 0 || bx >= blocks_.blocks_x() || by >= blocks_.blocks_y()) continue;
+      const std::uint8_t h = held_at(bx, by);
+      if (h == 1 || (or_queued && h == 2)) return true;
+    }
+  return false;
+}
+
+// With NodePositions::fetch: a leaf accepted on the ranges; its corners are read at the end.
+void LodBuilder::note_corners(const GridPolygon& corners) {
+  if (!positions_.fetch) return;
+  for (int k = 0; k < corners.count; ++k) ranged_corners_.push_back(grid_.id(corners.corner[k]));
 }
 
 // The blocks holding a triangle of `triangles` small enough to lie in one: those the block path

@@ -94,6 +94,8 @@ class LodBuilder {
   }
   void refine();
   void read_corners(std::span<const std::uint32_t> triangles);
+  bool in_a_block(int row, int col, bool or_queued);
+  void note_corners(const GridPolygon& corners);
   bool leaf_is_fine(const SurfaceBlock& b, const Tri& t, Point m);
   bool clipped_leaf_is_fine(const SurfaceBlock& b, const GridPolygon& polygon);
   void activate(Point v);
@@ -119,6 +121,9 @@ class LodBuilder {
   std::vector<std::uint8_t> held_;
   std::vector<core::GridWindow> to_bring_;
   std::vector<Tri> waiting_;
+  // Node ids: the corners of leaves the ranges accepted since the last round (note_corners()), and
+  // those brought with blocks this frame.
+  std::vector<std::uint32_t> ranged_corners_, corners_brought_;
   std::optional<std::vector<core::GridWindow>> reads_;
   BuildStats stats_;
 };

@@ -60,6 +60,7 @@ LodBuilder::Fit LodBuilder::wide_leaf_fits(const Tri& t, Point m) {
   }
   if (all_ranged) {
     ++stats_.ranged;
+    note_corners(polygon);
     return Fit::yes;
   }
   for (int k = 0; k < n; ++k) {
