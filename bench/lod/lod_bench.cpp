@@ -11,7 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "lod/camera_budget.h"
+#include "lod/error_bounds.h"
 #include "lod/lod_builder.h"
+#include "lod/position_copy.h"
 #include "lod/mesh_checker.h"
 #include "lod/rippled_states.h"
 
@@ -76,6 +79,32 @@ void report_counts(benchmark::State& st, std::size_t tris, int side) {
   st.counters["triangles"] = static_cast<double>(tris);
   st.counters["pct_full"] = 100.0 * static_cast<double>(tris) / (2.0 * (side - 1) * (side - 1));
 }
+
+// The whole-grid block's three passes over every node, each timed alone (257² rain, the view of
+// BM_BuildRain): range(1) 0 the copy to world positions, 1 the budgets, 2 the nested bounds.
+void BM_WholeGridPass(benchmark::State& st) {
+  const int side = static_cast<int>(st.range(0));
+  const Pond& p = rain(side);
+  const std::size_t n = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
+  std::vector<float> x(n + 3), y(n + 3), z(n + 3), budget(n + 3);
+  const float largest = pond::lod::copy_finite_window(p.positions(), 0, 0, side, side, x.data(), y.data(), z.data());
+  const pond::lod::NodePositions own = pond::lod::soa_positions(x.data(), y.data(), z.data(), side, side);
+  const pond::lod::BudgetTerms terms = pond::lod::budget_terms(lod_camera(view(side)), 1.0, largest);
+  pond::lod::node_budgets(own, terms, budget.data());
+  const pond::lod::GridHierarchy grid(side, side);
+  std::vector<pond::lod::NestedBound> bounds(n, pond::lod::kNothingProved);
+  for (auto _ : st) {
+    switch (st.range(1)) {
+      case 0: pond::lod::copy_finite_window(p.positions(), 0, 0, side, side, x.data(), y.data(), z.data()); break;
+      case 1: pond::lod::node_budgets(own, terms, budget.data()); break;
+      default: pond::lod::nested_bounds(grid, own, largest, budget.data(), bounds.data()); break;
+    }
+    benchmark::ClobberMemory();
+  }
+  st.counters["ns_per_node"] = benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate |
+                                                                            benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_WholeGridPass)->ArgsProduct({{257, 1025}, {0, 1, 2}})->Unit(benchmark::kMicrosecond);
 
 // Build time per frame (the surface is the same each iteration; the builder redoes everything).
 void BM_BuildRain(benchmark::State& st) {

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include <emmintrin.h>  // SSE2: the diagonal vertices four at a time
+
 namespace pond::lod {
 namespace {
 
@@ -88,15 +90,61 @@ void vertical_row(const Pass& pass, int y) {
   }
 }
 
+// SSE2 helpers for diagonal_row: four vertices (x0, x0 + 2, x0 + 4, x0 + 6) of one row at a time.
+// Lanes 0 and 2 of a, then of b.
+__m128 evens(__m128 a, __m128 b) { return _mm_shuffle_ps(a, b, _MM_SHUFFLE(2, 0, 2, 0)); }
+// c at columns i, i + 2, i + 4, i + 6 (reads i .. i + 7 only).
+__m128 every_other(const float* c, std::size_t i) { return evens(_mm_loadu_ps(c + i), _mm_loadu_ps(c + i + 4)); }
+// The bounds at ids i, i + 2, i + 4, i + 6: their errors and their least budgets.
+void bounds_at(const NestedBound* b, std::size_t i, __m128& error, __m128& least) {
+  const auto pair = [&](std::size_t k) { return _mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(b + k)); };
+  const __m128 t0 = _mm_unpacklo_ps(pair(i), pair(i + 2)), t1 = _mm_unpacklo_ps(pair(i + 4), pair(i + 6));
+  error = _mm_movelh_ps(t0, t1);
+  least = _mm_movehl_ps(t1, t0);
+}
+__m128 select(__m128 mask, __m128 a, __m128 b) { return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b)); }
+
 // The diagonal ones are the centres (odd x, odd y) of the 2x2 squares. Their four children
 // (x -+ 1, y) and (x, y -+ 1) are scale-1 axis vertices, inside the grid whenever the vertex is,
-// so the general vertex()'s border checks and child loop go away.
+// so the general vertex()'s border checks and child loop go away. Four vertices at a time, their
+// squares' diagonals alternating (each lane the scalar formula's operations in its order), then
+// one at a time.
 void diagonal_row(const Pass& pass, int y) {
   const std::size_t row = static_cast<std::size_t>(pass.cols);
   const NestedBound* bounds = pass.out;
   const int b = y / 2 + pass.flip(2);  // the squares' row index (and the origin's parity)
-  for (int x = 1, a = 0; x + 1 < pass.cols; x += 2, ++a) {
-    const std::size_t id = static_cast<std::size_t>(y) * row + static_cast<std::size_t>(x);
+  const std::size_t at = static_cast<std::size_t>(y) * row;
+  // Lanes whose square has the main diagonal: (a + b) even, a = the square's index in the row.
+  const __m128 main_lanes = (b & 1) == 0 ? _mm_castsi128_ps(_mm_setr_epi32(-1, 0, -1, 0))
+                                         : _mm_castsi128_ps(_mm_setr_epi32(0, -1, 0, -1));
+  const __m128 half = _mm_set1_ps(0.5f), slack = _mm_set1_ps(pass.slack), grow = _mm_set1_ps(kBoundGrow);
+  int x = 1, a = 0;
+  for (; x + 7 < pass.cols; x += 8, a += 4) {
+    const std::size_t id = at + static_cast<std::size_t>(x), up = id - row, down = id + row;
+    __m128 d2 = _mm_setzero_ps();
+    for (const float* c : {pass.x, pass.y, pass.z}) {
+      // Ends: (x - 1, y - 1) and (x + 1, y + 1) on a main diagonal, (x + 1, y - 1) and (x - 1, y + 1) else.
+      const __m128 up_left = evens(_mm_loadu_ps(c + up - 1), _mm_loadu_ps(c + up + 3));
+      const __m128 up_right = _mm_shuffle_ps(_mm_loadu_ps(c + up + 1), _mm_loadu_ps(c + up + 4), _MM_SHUFFLE(3, 1, 2, 0));
+      const __m128 down_left = evens(_mm_loadu_ps(c + down - 1), _mm_loadu_ps(c + down + 3));
+      const __m128 down_right = _mm_shuffle_ps(_mm_loadu_ps(c + down + 1), _mm_loadu_ps(c + down + 4), _MM_SHUFFLE(3, 1, 2, 0));
+      const __m128 e0 = select(main_lanes, up_left, up_right), e1 = select(main_lanes, down_right, down_left);
+      const __m128 d = _mm_sub_ps(every_other(c, id), _mm_mul_ps(half, _mm_add_ps(e0, e1)));
+      d2 = c == pass.x ? _mm_mul_ps(d, d) : _mm_add_ps(d2, _mm_mul_ps(d, d));
+    }
+    const __m128 dev = _mm_add_ps(_mm_sqrt_ps(d2), slack);
+    __m128 we, wl, ee, el, ne, nl, se, sl;
+    bounds_at(bounds, id - 1, we, wl), bounds_at(bounds, id + 1, ee, el);
+    bounds_at(bounds, up, ne, nl), bounds_at(bounds, down, se, sl);
+    const __m128 worst = _mm_max_ps(_mm_max_ps(we, ee), _mm_max_ps(ne, se));
+    const __m128 least = _mm_min_ps(_mm_min_ps(every_other(pass.budget, id), _mm_min_ps(wl, el)), _mm_min_ps(nl, sl));
+    const __m128 error = _mm_mul_ps(_mm_add_ps(dev, worst), grow);
+    const __m128 lo = _mm_unpacklo_ps(error, least), hi = _mm_unpackhi_ps(error, least);
+    _mm_storel_pi(reinterpret_cast<__m64*>(pass.out + id), lo), _mm_storeh_pi(reinterpret_cast<__m64*>(pass.out + id + 2), lo);
+    _mm_storel_pi(reinterpret_cast<__m64*>(pass.out + id + 4), hi), _mm_storeh_pi(reinterpret_cast<__m64*>(pass.out + id + 6), hi);
+  }
+  for (; x + 1 < pass.cols; x += 2, ++a) {
+    const std::size_t id = at + static_cast<std::size_t>(x);
     const std::size_t e = ((a + b) & 1) == 0 ? row + 1 : row - 1;  // main or anti diagonal
     const NestedBound w = bounds[id - 1], east = bounds[id + 1];
     const NestedBound n = bounds[id - row], s = bounds[id + row];
