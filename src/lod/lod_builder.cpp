@@ -260,9 +260,9 @@ std::size_t LodBuilder::build(const NodePositions& p, const TileRanges& ranges, 
   }
   // Frame to frame the view and the water change little: when the blocks this frame needed hold
   // most of the grid's nodes, the next frame makes the whole grid in one pass instead.
-  const std::size_t needed = whole_ ? blocks_needed(out.first(written)) : blocks_.made();
   const std::size_t block_nodes = static_cast<std::size_t>(kBlockCells + 1) * (kBlockCells + 1);
-  whole_ = needed * block_nodes * 10 > 6 * p.nodes();
+  const std::size_t enough = 6 * p.nodes() / (10 * block_nodes) + 1;  // the fewest over 60 % of the nodes
+  whole_ = (whole_ ? blocks_needed(out.first(written), enough) : blocks_.made()) >= enough;
   if (whole_) reads_.reset();
   return written;
 }
@@ -350,9 +350,9 @@ void LodBuilder::note_corners(const GridPolygon& corners) {
   for (int k = 0; k < corners.count; ++k) ranged_corners_.push_back(grid_.id(corners.corner[k]));
 }
 
-// The blocks holding a triangle of `triangles` small enough to lie in one: those the block path
-// would have made at least.
-std::size_t LodBuilder::blocks_needed(std::span<const std::uint32_t> triangles) {
+// The blocks holding a triangle of `triangles` small enough to lie in one (those the block path
+// would have made at least), counted up to `enough`.
+std::size_t LodBuilder::blocks_needed(std::span<const std::uint32_t> triangles, std::size_t enough) {
   needed_.assign(static_cast<std::size_t>(blocks_.blocks_x()) * static_cast<std::size_t>(blocks_.blocks_y()), 0);
   std::size_t count = 0;
   const std::uint32_t c = static_cast<std::uint32_t>(cols());
@@ -365,6 +365,7 @@ std::size_t LodBuilder::blocks_needed(std::span<const std::uint32_t> triangles) 
                                  static_cast<std::size_t>(x0 / kBlockCells)];
     count += seen == 0;
     seen = 1;
+    if (count == enough) break;
   }
   return count;
 }

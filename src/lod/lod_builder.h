@@ -101,7 +101,7 @@ class LodBuilder {
   void activate(Point v);
   void mark(std::uint8_t& s, std::uint8_t bits, Point v);
   void emit(const Tri& t, bool enter_left, std::uint32_t*& out) const;
-  std::size_t blocks_needed(std::span<const std::uint32_t> triangles);
+  std::size_t blocks_needed(std::span<const std::uint32_t> triangles, std::size_t enough);
 
   GridHierarchy grid_;
   SurfaceBlocks blocks_;
