@@ -103,6 +103,12 @@ struct GridPolygon {
   int count = 0;
 };
 GridPolygon clip_to_grid(const Tri& t, int rows, int cols);
+// t's corners as a polygon (t inside the grid).
+inline GridPolygon polygon_of(const Tri& t) {
+  GridPolygon p;
+  p.corner[0] = t.apex, p.corner[1] = t.left, p.corner[2] = t.right, p.count = 3;
+  return p;
+}
 
 // The hypotenuse midpoint of t; false when the hypotenuse is a cell diagonal (no node there).
 inline bool midpoint(const Tri& t, Point& m) {

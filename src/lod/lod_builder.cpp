@@ -59,8 +59,7 @@ LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
   // the same outcome, so the mesh does not depend on which blocks were made or brought before.
   // The block first where it is made already (sharper, and its nodes are at hand), else the ranges.
   const auto ranged = [&] {
-    GridPolygon corners = clipped;
-    if (inside) corners.count = 3, corners.corner[0] = t.apex, corners.corner[1] = t.left, corners.corner[2] = t.right;
+    const GridPolygon corners = inside ? polygon_of(t) : clipped;
     const bool fine = RangeProof(*ranges_, *box_budget_).proves(x0, std::min(x1, cols() - 1), y0, std::min(y1, rows() - 1), corners);
     stats_.ranged += fine;
     if (fine) note_corners(corners);

@@ -5,8 +5,8 @@
 # most 10 % of the state (24 bytes a node): the tile bounds, the bodies and the nodes the LOD reads,
 # not the whole displacements (12 bytes a node). Bringing blocks the last frame did not read costs
 # a wait, with the corners of the leaves the ranges accepted in the same copy: at most 12 waits in
-# the 5 frames (the frame's own 5, a round of blocks in most, the odd round of corners left after). The LOD must have refined (blocks read): else the bound
-# says nothing.
+# the 5 frames (the frame's own 5, a round of blocks in most, the odd round of corners left after).
+# The LOD must have refined (blocks read): else the bound says nothing.
 #   lod_readback_check.sh POND SCENE WORK_DIR   (the layer's environment comes from CTest)
 pond=$1 scene=$2 work=$3
 mkdir -p "$XDG_RUNTIME_DIR" "$work" && chmod 700 "$XDG_RUNTIME_DIR"
