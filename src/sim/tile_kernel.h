@@ -1,8 +1,9 @@
 #pragma once
-// The tile bounds (shared/tile_bounds.h) as a by-product of the step kernel (step_kernel.h): every
-// few rows the kernel has integrated in a block of columns, their new displacements, still in the
-// core's caches, are read back a tile's width of columns at a time into each column's bounds over
-// the tile row so far (TileSink::columns); at the end of a tile row, its tiles come from those.
+// The tile bounds (shared/tile_bounds.h) as a by-product of the step kernel (step_kernel.h): when
+// the kernel has integrated a tile row's rows in a block of columns, their new displacements, still
+// in the core's caches, are read back, several vectors of columns at a time, into each column's
+// bounds (TileSink::columns); after the row that ends the tile row, its tiles come from those and
+// that row.
 // Min and max are exact: the tiles' values do not depend on the width or the order of the
 // operations, only the sign of a zero bound may, and the solver's merge makes every zero +0.
 #include <cstddef>
@@ -17,10 +18,11 @@
 namespace pond::sim {
 inline namespace POND_ISA {
 
-// Rows integrated between two reads of their new displacements: few enough that those are still
-// in the core's caches, enough that the columns' bounds are read and written seldom.
-inline constexpr int kTilePassRows = 4;  // divides POND_TILE_CELLS
 inline constexpr int kTileCells = POND_TILE_CELLS;
+// Vectors of columns a pass keeps the bounds of in registers (two each): as many as the registers
+// leave room for, so each row's read is several cache lines long.
+template <class V>
+inline constexpr int kPassGroup = V::width == 16 ? 8 : 4;
 
 // The wide table the bounds use with backend W: W's own, and SSE2's (the baseline of x86-64 and
 // of the IA-32 build) for the scalar backend, whose one-lane table would keep 32 bounds per tile.
@@ -33,115 +35,120 @@ struct BoundsWide<WideScalar> {
   using type = WideSse2;
 };
 
-// The columns [j, j + K * V::width) (a tile's width; `column` is column j's bounds in
-// TileSink::columns) widened by the new displacements of rows [row0, row1], or restarted from
-// them: row by row, in registers.
+// The bounds of columns [j, j + K * V::width) (`column` is column j's in TileSink::columns) over
+// the new displacements of rows [row0, row1]: row by row, in registers.
 template <class V, int K>
-POND_KERNEL_INLINE void group_bounds(const StepView& view, int row0, int row1, int j, float* column, bool restart) {
+POND_KERNEL_INLINE void group_bounds(const StepView& view, int row0, int row1, int j, float* column) {
   const float* const out[3] = {view.oux, view.ouy, view.ouz};
   const std::size_t cols = static_cast<std::size_t>(view.cols);
   for (int axis = 0; axis < 3; ++axis) {
-    float* const lo_at = column + axis * kColumnsPitch;
-    float* const hi_at = column + (3 + axis) * kColumnsPitch;
-    typename V::F lo[K], hi[K];
-    for (int k = 0; k < K; ++k) {
-      lo[k] = restart ? V::set1(kInf) : V::load(lo_at + k * V::width);
-      hi[k] = restart ? V::set1(-kInf) : V::load(hi_at + k * V::width);
-    }
     const float* u = out[axis] + row0 * cols + j;
-    for (int i = row0; i <= row1; ++i, u += cols)
+    typename V::F lo[K], hi[K];
+    for (int k = 0; k < K; ++k) lo[k] = hi[k] = V::load(u + k * V::width);
+    for (int i = row0 + 1; i <= row1; ++i) {
+      u += cols;
       for (int k = 0; k < K; ++k) {
         const typename V::F x = V::load(u + k * V::width);
         lo[k] = V::min_of(x, lo[k]);
         hi[k] = V::max_of(x, hi[k]);
       }
+    }
     for (int k = 0; k < K; ++k) {
-      V::store(lo_at + k * V::width, lo[k]);
-      V::store(hi_at + k * V::width, hi[k]);
+      V::store(column + axis * kColumnsPitch + k * V::width, lo[k]);
+      V::store(column + (3 + axis) * kColumnsPitch + k * V::width, hi[k]);
     }
   }
 }
 
-// The columns' bounds of a block widened by rows [row0, row1] (all integrated), or restarted.
+// The columns' bounds of a block over rows [row0, row1] (all integrated).
 template <class V>
 POND_KERNEL_INLINE void block_bounds(const StepView& view, int row0, int row1, int block_begin, int block_end,
-                                     float* columns, bool restart) {
+                                     float* columns) {
   int j = block_begin;
-  for (; block_end - j >= kTileCells; j += kTileCells)
-    group_bounds<V, kTileCells / V::width>(view, row0, row1, j, columns + (j - block_begin), restart);
-  for (; j < block_end; ++j) group_bounds<WideScalar, 1>(view, row0, row1, j, columns + (j - block_begin), restart);
+  for (; block_end - j >= kPassGroup<V> * V::width; j += kPassGroup<V> * V::width)
+    group_bounds<V, kPassGroup<V>>(view, row0, row1, j, columns + (j - block_begin));
+  for (; block_end - j >= V::width; j += V::width) group_bounds<V, 1>(view, row0, row1, j, columns + (j - block_begin));
+  for (; j < block_end; ++j) group_bounds<WideScalar, 1>(view, row0, row1, j, columns + (j - block_begin));
 }
 
-// One bound of a tile from its columns' bounds at `at` (`width` columns, and the column after
-// them when `next`): the least (Lower) or the greatest.
+// The wider of a bound and a value: the least (Lower) or the greatest.
+template <bool Lower>
+POND_KERNEL_INLINE float widest(float v, float acc) {
+  return Lower ? (v < acc ? v : acc) : (v > acc ? v : acc);
+}
+
+// `b` widened by the values at `at`: `width` columns, and the column after them when `next`;
+// the least (Lower) or the greatest.
 template <class V, bool Lower>
-POND_KERNEL_INLINE float tile_bound(const float* at, int width, bool next) {
-  auto pick = [](float v, float acc) { return Lower ? (v < acc ? v : acc) : (v > acc ? v : acc); };
-  float b = Lower ? kInf : -kInf;
+POND_KERNEL_INLINE float tile_bound(float b, const float* at, int width, bool next) {
   if (width == kTileCells) {
     typename V::F v = V::load(at);
     for (int k = 1; k < kTileCells / V::width; ++k)
       v = Lower ? V::min_of(V::load(at + k * V::width), v) : V::max_of(V::load(at + k * V::width), v);
-    b = Lower ? V::reduce_min(v) : V::reduce_max(v);
+    b = widest<Lower>(Lower ? V::reduce_min(v) : V::reduce_max(v), b);
   } else {
-    for (int c = 0; c < width; ++c) b = pick(at[c], b);
+    for (int c = 0; c < width; ++c) b = widest<Lower>(at[c], b);
   }
-  return next ? pick(at[width], b) : b;
+  return next ? widest<Lower>(at[width], b) : b;
 }
 
-// Tile row `row` from the columns' bounds of a block: each tile starting in the block from its
-// columns there, and the tile ending at the block's first column widened by it (its other columns
-// came with the block before).
+// Tile row `row` from a block's columns' bounds (when `have_columns`) and the new displacements of
+// the row after them (`border`: x, y, z at the block's first column, when not null): each tile
+// starting in the block from its columns there, and the tile ending at the block's first column
+// widened by it (its other columns came with the block before).
 template <class V>
 POND_KERNEL_INLINE void flush_tiles(const TileGrid& grid, int block_begin, int block_end, const float* columns,
-                                    TileBounds* row) {
+                                    bool have_columns, const float* const* border, TileBounds* row) {
+  auto bound = [&](int k, float b, int c, int width, bool next) {
+    if (have_columns) b = k < 3 ? tile_bound<V, true>(b, columns + k * kColumnsPitch + c, width, next)
+                                : tile_bound<V, false>(b, columns + k * kColumnsPitch + c, width, next);
+    if (border) b = k < 3 ? tile_bound<V, true>(b, border[k] + c, width, next)
+                          : tile_bound<V, false>(b, border[k - 3] + c, width, next);
+    return b;
+  };
   for (int a = block_begin / kTileCells; a < grid.tiles_x && a * kTileCells < block_end; ++a) {
     const int j = a * kTileCells, width = block_end - j < kTileCells ? block_end - j : kTileCells;
     const bool next = j + kTileCells < block_end;
-    const float* at = columns + (j - block_begin);
-    row[a] = {tile_bound<V, true>(at, width, next),
-              tile_bound<V, true>(at + kColumnsPitch, width, next),
-              tile_bound<V, true>(at + 2 * kColumnsPitch, width, next),
-              tile_bound<V, false>(at + 3 * kColumnsPitch, width, next),
-              tile_bound<V, false>(at + 4 * kColumnsPitch, width, next),
-              tile_bound<V, false>(at + 5 * kColumnsPitch, width, next)};
+    const int c = j - block_begin;
+    row[a] = {bound(0, kInf, c, width, next),   bound(1, kInf, c, width, next),   bound(2, kInf, c, width, next),
+              bound(3, -kInf, c, width, next), bound(4, -kInf, c, width, next), bound(5, -kInf, c, width, next)};
   }
   if (block_begin > 0) {
     TileBounds& t = row[block_begin / kTileCells - 1];
     float* const bounds[6] = {&t.min_x, &t.min_y, &t.min_z, &t.max_x, &t.max_y, &t.max_z};
-    for (int k = 0; k < 6; ++k) {
-      const float v = columns[k * kColumnsPitch];
-      *bounds[k] = k < 3 ? (v < *bounds[k] ? v : *bounds[k]) : (v > *bounds[k] ? v : *bounds[k]);
-    }
+    for (int k = 0; k < 6; ++k) *bounds[k] = bound(k, *bounds[k], 0, 1, false);
   }
 }
 
-// After the integration of row i (of rows [r0, r1)) in columns [block_begin, block_end): every
-// kTilePassRows rows, and at the end of a tile row or of the range, the rows since the last such
-// pass join the columns' bounds (the range's first pass restarts them); a tile row row i ends goes
-// to the sink, and the columns' bounds restart from row i, the first of the next tile row; at the
-// range's end, its last tile row goes too, partial.
+// After the integration of row i (of rows [r0, r1)) in columns [block_begin, block_end): a tile
+// row row i ends goes to the sink, from the columns' bounds over its rows in [r0, i) and row i;
+// at a tile row's last row, or the range's, the columns' bounds are taken over its rows in
+// [r0, i], and at the range's end, that last tile row goes too, partial. So the columns' bounds
+// are written once a tile row and never read back but by the flush.
 template <class W>
-POND_KERNEL_INLINE void emit_tile_rows(const StepView& view, const TileGrid& grid, int i, int r0, int r1,
-                                       int block_begin, int block_end, TileSink& sink) {
+[[gnu::noinline]] void emit_tile_rows(const StepView& view, const TileGrid& grid, int i, int r0, int r1,
+                                      int block_begin, int block_end, TileSink& sink) {
   using V = typename BoundsWide<W>::type;
   const bool ends_tile_row = i % kTileCells == 0 && i > 0, ends_range = i == r1 - 1;
-  if (!ends_tile_row && !ends_range && i % kTilePassRows != kTilePassRows - 1) return;
-  // The last pass before row i: after a row i - 1 - i % kTilePassRows, or at a tile row's start.
-  const int after_rows = i - 1 - i % kTilePassRows;
-  const int at_tile_row = i - 1 >= kTileCells ? (i - 1) / kTileCells * kTileCells : -1;
-  int last = after_rows > at_tile_row ? after_rows : at_tile_row;
-  last = last > r0 - 1 ? last : r0 - 1;
-  block_bounds<V>(view, last + 1, i, block_begin, block_end, sink.columns, last < r0);
-  auto flush = [&](int b) {
-    flush_tiles<V>(grid, block_begin, block_end, sink.columns,
+  auto flush = [&](int b, bool have_columns, const float* const* border) {
+    flush_tiles<V>(grid, block_begin, block_end, sink.columns, have_columns, border,
                    sink.rows + static_cast<std::size_t>(b - sink.first_row) * grid.tiles_x);
   };
   if (ends_tile_row) {
-    flush(i / kTileCells - 1);
-    block_bounds<V>(view, i, i, block_begin, block_end, sink.columns, true);
+    const std::size_t at = static_cast<std::size_t>(i) * static_cast<std::size_t>(view.cols) + block_begin;
+    const float* const border[3] = {view.oux + at, view.ouy + at, view.ouz + at};
+    flush(i / kTileCells - 1, i > r0, border);
   }
-  if (ends_range && i / kTileCells < grid.tiles_y) flush(i / kTileCells);
+  if (i % kTileCells == kTileCells - 1 || ends_range) {
+    const int first = i / kTileCells * kTileCells;
+    block_bounds<V>(view, first > r0 ? first : r0, i, block_begin, block_end, sink.columns);
+    if (ends_range && i / kTileCells < grid.tiles_y) flush(i / kTileCells, true, nullptr);
+  }
+}
+
+// Whether emit_tile_rows has work after row i.
+POND_KERNEL_INLINE bool tile_rows_due(int i, int r1) {
+  return i % kTileCells == kTileCells - 1 || (i % kTileCells == 0 && i > 0) || i == r1 - 1;
 }
 
 }  // namespace POND_ISA
