@@ -124,7 +124,8 @@ POND_KERNEL_INLINE void flush_tiles(const TileGrid& grid, int block_begin, int b
 // row row i ends goes to the sink, from the columns' bounds over its rows in [r0, i) and row i;
 // at a tile row's last row, or the range's, the columns' bounds are taken over its rows in
 // [r0, i], and at the range's end, that last tile row goes too, partial. So the columns' bounds
-// are written once a tile row and never read back but by the flush.
+// are written once a tile row and never read back but by the flush. Out of line (called where
+// tile_rows_due): inlined, it changed the register allocation of the step's spring loop.
 template <class W>
 [[gnu::noinline]] void emit_tile_rows(const StepView& view, const TileGrid& grid, int i, int r0, int r1,
                                       int block_begin, int block_end, TileSink& sink) {
