@@ -368,8 +368,10 @@ float step_rows(const StepView& view, int row_begin, int row_end, float* scratch
       if (i + 1 < row_end)
         block_springs<W, Steps>(view, i + 1, block_begin, block_end, scratch, 1 - h_index, ahead);
       for_chunks<W>(block_begin, block_end, integrate);
-      if constexpr (Tiles)
-        if (tile_rows_due(i, row_end)) emit_tile_rows<W>(view, tile_grid, i, row_begin, row_end, block_begin, block_end, *tiles);
+      if constexpr (Tiles) {
+        const TileRowEvents events = tile_row_events(i, row_end);
+        if (events.any()) emit_tile_rows<W>(view, tile_grid, events, i, row_begin, block_begin, block_end, *tiles);
+      }
       const int recycled = below;
       below = above;
       above = ahead;

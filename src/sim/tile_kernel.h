@@ -71,10 +71,10 @@ POND_KERNEL_INLINE void block_bounds(const StepView& view, int row0, int row1, i
   for (; j < block_end; ++j) group_bounds<WideScalar, 1>(view, row0, row1, j, columns + (j - block_begin));
 }
 
-// The wider of a bound and a value: the least (Lower) or the greatest.
+// A bound widened by a value by the shared rules: the least (Lower) or the greatest.
 template <bool Lower>
 POND_KERNEL_INLINE float widest(float v, float acc) {
-  return Lower ? (v < acc ? v : acc) : (v > acc ? v : acc);
+  return Lower ? shared::bound_below(acc, v) : shared::bound_above(acc, v);
 }
 
 // `b` widened by the values at `at`: `width` columns, and the column after them when `next`;
@@ -99,11 +99,14 @@ POND_KERNEL_INLINE float tile_bound(float b, const float* at, int width, bool ne
 template <class V>
 POND_KERNEL_INLINE void flush_tiles(const TileGrid& grid, int block_begin, int block_end, const float* columns,
                                     bool have_columns, const float* const* border, TileBounds* row) {
+  // Bound k (least x, y, z, greatest x, y, z) widened from b by columns [c, c + width), and c + width
+  // when `next`.
   auto bound = [&](int k, float b, int c, int width, bool next) {
-    if (have_columns) b = k < 3 ? tile_bound<V, true>(b, columns + k * kColumnsPitch + c, width, next)
-                                : tile_bound<V, false>(b, columns + k * kColumnsPitch + c, width, next);
-    if (border) b = k < 3 ? tile_bound<V, true>(b, border[k] + c, width, next)
-                          : tile_bound<V, false>(b, border[k - 3] + c, width, next);
+    const auto by = [&](const float* at) {
+      return k < 3 ? tile_bound<V, true>(b, at, width, next) : tile_bound<V, false>(b, at, width, next);
+    };
+    if (have_columns) b = by(columns + k * kColumnsPitch + c);
+    if (border) b = by(border[k % 3] + c);
     return b;
   };
   for (int a = block_begin / kTileCells; a < grid.tiles_x && a * kTileCells < block_end; ++a) {
@@ -120,36 +123,40 @@ POND_KERNEL_INLINE void flush_tiles(const TileGrid& grid, int block_begin, int b
   }
 }
 
+// What follows the integration of row i of rows [r0, r1) (tile_row_events): the end of the tile
+// row before it (row i is its border), the last row of its own tile row, the end of the range.
+struct TileRowEvents {
+  bool ends_tile_row, ends_pass, ends_range;
+  bool any() const { return ends_tile_row || ends_pass || ends_range; }
+};
+POND_KERNEL_INLINE TileRowEvents tile_row_events(int i, int r1) {
+  return {i % kTileCells == 0 && i > 0, i % kTileCells == kTileCells - 1, i == r1 - 1};
+}
+
 // After the integration of row i (of rows [r0, r1)) in columns [block_begin, block_end): a tile
 // row row i ends goes to the sink, from the columns' bounds over its rows in [r0, i) and row i;
 // at a tile row's last row, or the range's, the columns' bounds are taken over its rows in
 // [r0, i], and at the range's end, that last tile row goes too, partial. So the columns' bounds
 // are written once a tile row and never read back but by the flush. Out of line (called where
-// tile_rows_due): inlined, it changed the register allocation of the step's spring loop.
+// any of `events`): inlined, it changed the register allocation of the step's spring loop.
 template <class W>
-[[gnu::noinline]] void emit_tile_rows(const StepView& view, const TileGrid& grid, int i, int r0, int r1,
-                                      int block_begin, int block_end, TileSink& sink) {
+[[gnu::noinline]] void emit_tile_rows(const StepView& view, const TileGrid& grid, TileRowEvents events, int i,
+                                      int r0, int block_begin, int block_end, TileSink& sink) {
   using V = typename BoundsWide<W>::type;
-  const bool ends_tile_row = i % kTileCells == 0 && i > 0, ends_range = i == r1 - 1;
   auto flush = [&](int b, bool have_columns, const float* const* border) {
     flush_tiles<V>(grid, block_begin, block_end, sink.columns, have_columns, border,
                    sink.rows + static_cast<std::size_t>(b - sink.first_row) * grid.tiles_x);
   };
-  if (ends_tile_row) {
+  if (events.ends_tile_row) {
     const std::size_t at = static_cast<std::size_t>(i) * static_cast<std::size_t>(view.cols) + block_begin;
     const float* const border[3] = {view.oux + at, view.ouy + at, view.ouz + at};
     flush(i / kTileCells - 1, i > r0, border);
   }
-  if (i % kTileCells == kTileCells - 1 || ends_range) {
+  if (events.ends_pass || events.ends_range) {
     const int first = i / kTileCells * kTileCells;
     block_bounds<V>(view, first > r0 ? first : r0, i, block_begin, block_end, sink.columns);
-    if (ends_range && i / kTileCells < grid.tiles_y) flush(i / kTileCells, true, nullptr);
+    if (events.ends_range && i / kTileCells < grid.tiles_y) flush(i / kTileCells, true, nullptr);
   }
-}
-
-// Whether emit_tile_rows has work after row i.
-POND_KERNEL_INLINE bool tile_rows_due(int i, int r1) {
-  return i % kTileCells == kTileCells - 1 || (i % kTileCells == 0 && i > 0) || i == r1 - 1;
 }
 
 }  // namespace POND_ISA
