@@ -17,9 +17,10 @@ namespace {
 using namespace pond::sim;
 
 // A rippled square pond: a fixed shore and several splashes, so every node has a non-trivial state.
-WaterModel rippled_model(int size, MathMode math) {
+WaterModel rippled_model(int size, MathMode math, int substeps = 1) {
   WaterSpec s;
   s.grid.rows = s.grid.cols = size;
+  s.physics.substeps = substeps;
   for (int k = 0; k < 5; ++k) {
     Perturbation p;
     p.row = size * (0.2 + 0.15 * k);
@@ -32,8 +33,9 @@ WaterModel rippled_model(int size, MathMode math) {
 }
 
 // Args: backend, size, threads, math (0 exact, 1 fast) and, where given, whether the kernels emit
-// the tile bounds (sim/tile_bounds.h).
-void run_solver(benchmark::State& state, bool tiles) {
+// the tile bounds (sim/tile_bounds.h) and the substeps of a step. Each iteration is one advance(1):
+// a frame of one step.
+void run_solver(benchmark::State& state, bool tiles, int substeps = 1) {
   const auto backend = static_cast<Backend>(state.range(0));
   const int size = static_cast<int>(state.range(1));
   const int threads = static_cast<int>(state.range(2));
@@ -42,7 +44,7 @@ void run_solver(benchmark::State& state, bool tiles) {
     state.SkipWithError("backend not supported by this CPU");
     return;
   }
-  CpuSolver solver(rippled_model(size, math), backend, threads);
+  CpuSolver solver(rippled_model(size, math, substeps), backend, threads);
   solver.advance(20);  // the splashes spread
   solver.track_tile_bounds(tiles);
   for (auto _ : state) solver.advance(1);
@@ -50,10 +52,13 @@ void run_solver(benchmark::State& state, bool tiles) {
   state.counters["node_steps_per_s"] =
       benchmark::Counter(nodes * double(state.iterations()), benchmark::Counter::kIsRate);
   state.SetLabel(std::string(backend_name(backend)) + " x" + std::to_string(solver.threads()) +
-                 (math == MathMode::exact ? " exact" : " fast") + (tiles ? " tiles" : ""));
+                 (math == MathMode::exact ? " exact" : " fast") + (tiles ? " tiles" : "") +
+                 (substeps > 1 ? " x" + std::to_string(substeps) + " substeps" : ""));
 }
 void BM_Solver(benchmark::State& state) { run_solver(state, false); }
-void BM_TileBounds(benchmark::State& state) { run_solver(state, state.range(4) != 0); }
+void BM_TileBounds(benchmark::State& state) {
+  run_solver(state, state.range(4) != 0, static_cast<int>(state.range(5)));
+}
 
 void solver_args(benchmark::internal::Benchmark* b) {
   const int all = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -69,15 +74,17 @@ BENCHMARK(BM_Solver)->Apply(solver_args)->ArgNames({"backend", "size", "threads"
     ->Unit(benchmark::kMicrosecond)->UseRealTime()->MinTime(0.3);
 
 // The cost of the tile bounds: every backend at 1024^2 and 256^2, exact math, one thread and all
-// threads, without and with them (docs/perf.md).
+// threads, without and with them, in a frame of one substep (every substep emits them) and of two
+// (the demo scenes'; the last one emits them) (docs/perf.md).
 void tile_args(benchmark::internal::Benchmark* b) {
   const int all = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  for (int size : {256, 1024})
-    for (int backend : {0, 1, 2, 3})
-      for (int threads : {1, all})
-        for (int tiles : {0, 1}) b->Args({backend, size, threads, 0, tiles});
+  for (int substeps : {1, 2})
+    for (int size : {256, 1024})
+      for (int backend : {0, 1, 2, 3})
+        for (int threads : {1, all})
+          for (int tiles : {0, 1}) b->Args({backend, size, threads, 0, tiles, substeps});
 }
-BENCHMARK(BM_TileBounds)->Apply(tile_args)->ArgNames({"backend", "size", "threads", "fast", "tiles"})
+BENCHMARK(BM_TileBounds)->Apply(tile_args)->ArgNames({"backend", "size", "threads", "fast", "tiles", "substeps"})
     ->Unit(benchmark::kMicrosecond)->UseRealTime()->MinTime(0.3);
 
 // The sweep behind docs/solver_speed.png (scripts/plot_solver_speed.sh): exact math, every backend,

@@ -42,8 +42,8 @@ void CpuSolver::track_tile_bounds(bool on) {
   tile_rows_.clear();
   tile_spans_.clear();
   tile_bounds_.clear();
-  kernel_ = step_rows_for(backend_, model_.constants.rsqrt_steps, !model_.bodies.empty(), on);
   if (!on) return;
+  tile_kernel_ = step_rows_for(backend_, model_.constants.rsqrt_steps, !model_.bodies.empty(), true);
   for (int p = 0; p < parts_; ++p) {
     const auto [r0, r1] = part_rows(p);
     tile_spans_.push_back(tile_rows_of(r0, r1, model_.rows));
@@ -70,17 +70,17 @@ void CpuSolver::set_state(const WaterState& state, std::int64_t steps_done) {
     ++next_perturbation_;
 }
 
-void CpuSolver::substep(int substep_index) {
+void CpuSolver::substep(int substep_index, bool tiles) {
   const StepView v{cur_.ux.data(),  cur_.uy.data(),  cur_.uz.data(),  cur_.vx.data(),
                    cur_.vy.data(),  cur_.vz.data(),  next_.ux.data(), next_.uy.data(),
                    next_.uz.data(), next_.vx.data(), next_.vy.data(), next_.vz.data(),
                    model_.kinds.data(), model_.rows, model_.cols, model_.constants};
-  const bool tiles = !tile_bounds_.empty();
+  const StepRowsFn kernel = tiles ? tile_kernel_ : kernel_;
   threads_->run(parts_, [&](int p) {
     const auto [r0, r1] = part_rows(p);
     TileSink sink{tiles ? tile_rows_[p].data() : nullptr, tiles ? tile_columns_[p].data() : nullptr,
                   tiles ? tile_spans_[p].first : 0};
-    checks_[p] = kernel_(v, r0, r1, scratch_[p].data(), &reaches_[p], &sink);
+    checks_[p] = kernel(v, r0, r1, scratch_[p].data(), &reaches_[p], &sink);
   });
   std::swap(cur_, next_);
   cur_.bodies.swap(next_.bodies);  // the bodies live in the current state only
@@ -104,7 +104,7 @@ void CpuSolver::substep(int substep_index) {
 void CpuSolver::perturb(const PerturbationTable& table) {
   apply_perturbation(table, cur_);
   // A splash of velocities moves no node yet. (The scheduled ones in advance() need no refresh:
-  // the substep right after them emits every tile.)
+  // its last substep emits every tile.)
   if (table.target == PerturbTarget::position && !table.nodes.empty()) refresh_tiles(node_rect(table, model_.cols));
 }
 
@@ -123,7 +123,8 @@ void CpuSolver::advance(std::int64_t steps) {
     while (next_perturbation_ < model_.perturbations.size() &&
            model_.perturbations[next_perturbation_].step == step_)
       apply_perturbation(model_.perturbations[next_perturbation_++], cur_);
-    for (int k = 0; k < model_.substeps; ++k) substep(k);
+    for (int k = 0; k < model_.substeps; ++k)
+      substep(k, !tile_bounds_.empty() && s + 1 == steps && k + 1 == model_.substeps);
     ++step_;
   }
 }

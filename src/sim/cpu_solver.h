@@ -41,21 +41,25 @@ class CpuSolver final : public Solver {
   // Advances `steps` steps. Throws InputError naming the step when the state becomes non-finite.
   void advance(std::int64_t steps) override;
 
-  // Whether to keep the tile bounds (shared/tile_bounds.h) of the current state: the step kernels
-  // emit them, and the contact and perturb() keep them true. Off at first, so that nothing pays for
-  // them while no one reads them; turning it on computes them from the state.
+  // Whether to keep the tile bounds (shared/tile_bounds.h) of the current state: the last substep
+  // of each advance() emits them from its kernel (those before it leave no state anyone reads, as
+  // the GPU solver's normals dispatch runs once an advance() too), and its contact and perturb()
+  // keep them true. Off at first, so that nothing pays for them while no one reads them; turning it
+  // on computes them from the state.
   void track_tile_bounds(bool on) override;
   // The current state's tile bounds, tile (a, b) at b * tiles_x + a; empty while not tracked.
   std::span<const TileBounds> tile_bounds() const override { return tile_bounds_; }
   const TileGrid& tile_grid() const { return tile_grid_; }
 
  private:
-  void substep(int substep_index);  // then the bodies' contact (sim/contact.h)
+  // One substep, then the bodies' contact (sim/contact.h); `tiles`: emitting the tile bounds.
+  void substep(int substep_index, bool tiles);
   std::pair<int, int> part_rows(int part) const;  // the node rows [r0, r1) of a part
   void refresh_tiles(const NodeRect& moved);  // if tracked
   WaterModel model_;
   Backend backend_;
-  StepRowsFn kernel_;
+  StepRowsFn kernel_;       // without the tile bounds
+  StepRowsFn tile_kernel_;  // emitting them (while tracked)
   std::unique_ptr<RowThreads> threads_;
   int parts_ = 1;
   WaterState cur_, next_;
