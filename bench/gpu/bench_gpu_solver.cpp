@@ -151,9 +151,10 @@ BENCHMARK(BM_GpuVsCpuScalarRatio)->Arg(1024)->Unit(benchmark::kMillisecond)->Use
 // Counters: the median milliseconds of a frame off and on (every frame timed on its own), wall
 // clock and process CPU time (every thread's: llvmpipe's workers; less moved by other jobs on a
 // shared machine), and their ratios.
+// Args: the grid's side and the substeps of a frame's one step (the bounds come once a frame).
 void BM_GpuTileBoundsCost(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
-  const sim::WaterModel model = square_pond(n, 1, sim::MathMode::exact);
+  const sim::WaterModel model = square_pond(n, static_cast<int>(state.range(1)), sim::MathMode::exact);
   gpu::GpuSolver off(context(), model, true), on(context(), model, true);
   on.track_tile_bounds(true);
   for (gpu::GpuSolver* s : {&off, &on}) {
@@ -188,7 +189,8 @@ void BM_GpuTileBoundsCost(benchmark::State& state) {
   state.counters["on-cpu-ms"] = median(cpu[1]);
   state.counters["on/off-cpu"] = median(cpu[1]) / median(cpu[0]);
 }
-BENCHMARK(BM_GpuTileBoundsCost)->Arg(257)->Arg(1025)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_GpuTileBoundsCost)->ArgsProduct({{257, 1025}, {1, 2}})->ArgNames({"side", "substeps"})
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 
