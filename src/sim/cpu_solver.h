@@ -42,8 +42,8 @@ class CpuSolver final : public Solver {
   void advance(std::int64_t steps) override;
 
   // Whether to keep the tile bounds (shared/tile_bounds.h) of the current state: the last substep
-  // of each advance() emits them from its kernel (those before it leave no state anyone reads, as
-  // the GPU solver's normals dispatch runs once an advance() too), and its contact and perturb()
+  // of each advance() emits them from its kernel (those before it leave no state anyone reads; the
+  // GPU solver, too, makes them once a frame, in its normals dispatch), and its contact and perturb()
   // keep them true. Off at first, so that nothing pays for them while no one reads them; turning it
   // on computes them from the state.
   void track_tile_bounds(bool on) override;
