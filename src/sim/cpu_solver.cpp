@@ -18,7 +18,10 @@ constexpr std::size_t kMinNodesPerPart = 16384;
 }  // namespace
 
 CpuSolver::CpuSolver(WaterModel model, Backend backend, int threads)
-    : model_(std::move(model)), backend_(backend), kernel_(step_rows_for(backend, model_.constants.rsqrt_steps, !model_.bodies.empty(), false)) {
+    : model_(std::move(model)),
+      backend_(backend),
+      kernel_(step_rows_for(backend, model_.constants.rsqrt_steps, !model_.bodies.empty(), false)),
+      tile_kernel_(step_rows_for(backend, model_.constants.rsqrt_steps, !model_.bodies.empty(), true)) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const std::size_t by_size = std::max<std::size_t>(1, model_.nodes() / kMinNodesPerPart);
   parts_ = static_cast<int>(std::min<std::size_t>({static_cast<std::size_t>(threads), by_size,
@@ -43,7 +46,6 @@ void CpuSolver::track_tile_bounds(bool on) {
   tile_spans_.clear();
   tile_bounds_.clear();
   if (!on) return;
-  tile_kernel_ = step_rows_for(backend_, model_.constants.rsqrt_steps, !model_.bodies.empty(), true);
   for (int p = 0; p < parts_; ++p) {
     const auto [r0, r1] = part_rows(p);
     tile_spans_.push_back(tile_rows_of(r0, r1, model_.rows));

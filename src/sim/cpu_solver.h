@@ -58,8 +58,8 @@ class CpuSolver final : public Solver {
   void refresh_tiles(const NodeRect& moved);  // if tracked
   WaterModel model_;
   Backend backend_;
-  StepRowsFn kernel_;                 // without the tile bounds
-  StepRowsFn tile_kernel_ = nullptr;  // emitting them (set while tracked)
+  StepRowsFn kernel_;       // without the tile bounds
+  StepRowsFn tile_kernel_;  // emitting them (the last substep of an advance() while tracked)
   std::unique_ptr<RowThreads> threads_;
   int parts_ = 1;
   WaterState cur_, next_;

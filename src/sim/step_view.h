@@ -38,10 +38,10 @@ inline constexpr int kSpringRows = 2 * 3 + 3 * 9;
 namespace pond::sim {
 
 // Where a kernel puts the tile bounds (shared/tile_bounds.h) of its rows [r0, r1): while it walks
-// a block's rows, the bounds of each column over a tile row's rows, taken at its last (six rows of
-// kColumnsPitch floats: least x, y, z, greatest x, y, z); at a tile row's end (or r1 - 1), the
-// tile row from them, tile row b at rows + (b - first_row) * tiles_x (partial where the tile row
-// goes on beyond [r0, r1): the solver merges those).
+// a block's rows, the bounds of each column over a tile row's rows, taken at its last row (six
+// rows of kColumnsPitch floats: least x, y, z, greatest x, y, z); at a tile row's end (or r1 - 1),
+// the tile row from them, tile row b at rows + (b - first_row) * tiles_x (partial where the tile
+// row goes on beyond [r0, r1): the solver merges those).
 // A cache line more than a block, so that the six rows do not all fall in one set of the cache.
 inline constexpr int kColumnsPitch = kBlockCols + kSlotAlign;
 struct TileSink {
