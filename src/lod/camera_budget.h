@@ -58,7 +58,8 @@ class BoxBudget {
 
 // Writes budget[n] (world units) for every node of `positions` (stride 1). Computed in float
 // (vectorized) and kept conservative, with `terms` (of a `largest` bounding every |coordinate| of
-// the positions).
-void node_budgets(const NodePositions& positions, const BudgetTerms& terms, float* budget);
+// the positions). With `wide`, eight nodes at a time where the CPU has AVX2, else four: the same
+// bits (false is for the test of that).
+void node_budgets(const NodePositions& positions, const BudgetTerms& terms, float* budget, bool wide = true);
 
 }  // namespace pond::lod
