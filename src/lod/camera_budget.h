@@ -58,8 +58,10 @@ class BoxBudget {
 
 // Writes budget[n] (world units) for every node of `positions` (stride 1). Computed in float
 // (vectorized) and kept conservative, with `terms` (of a `largest` bounding every |coordinate| of
-// the positions). With `wide`, eight nodes at a time where the CPU has AVX2, else four: the same
-// bits (false is for the test of that).
+// the positions). With `wide`, by the AVX2 copy where wide_budgets_available(): the same bits
+// (callers pass core::cpu_has(avx2), so that POND_CPU_FEATURES_MASK can hide it).
 void node_budgets(const NodePositions& positions, const BudgetTerms& terms, float* budget, bool wide = true);
+// This build has node_budgets' AVX2 copy (not IA-32) and this CPU can run it.
+bool wide_budgets_available();
 
 }  // namespace pond::lod

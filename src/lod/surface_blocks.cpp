@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/cpu_features.h"
 #include "lod/position_copy.h"
 #include "lod/triangle_scan.h"
 
@@ -21,6 +22,7 @@ SurfaceBlocks::SurfaceBlocks(int rows, int cols)
 
 void SurfaceBlocks::begin(const NodePositions& positions, const BudgetTerms& terms, float largest) {
   positions_ = positions, terms_ = terms, largest_ = largest;
+  wide_budgets_ = core::cpu_has(core::CpuFeature::avx2);  // once a frame: it reads the environment
   used_ = 0;
   if (++frame_ == 0) {  // after 2^32 frames: every stamp would look current
     std::fill(made_in_.begin(), made_in_.end(), 0u);
@@ -65,7 +67,7 @@ void SurfaceBlocks::make(SurfaceBlock& b, Point origin, int rows, int cols) {
   for (std::vector<float>* v : {&b.x, &b.y, &b.z, &b.budget}) v->resize(n + kScanOverread);
   copy_finite_window(positions_, b.origin.y, b.origin.x, rows, cols, b.x.data(), b.y.data(), b.z.data());
   const NodePositions own = b.positions();
-  node_budgets(own, terms_, b.budget.data());
+  node_budgets(own, terms_, b.budget.data(), wide_budgets_);
   // The vertices nested_bounds() leaves alone depend on the shape only: set them on a change of shape.
   if (b.bounds.size() != n || b.shaped_for != b.grid) b.bounds.assign(n, kNothingProved);
   b.shaped_for = b.grid;

@@ -69,6 +69,7 @@ class SurfaceBlocks {
   NodePositions positions_;
   BudgetTerms terms_;
   float largest_ = 0;
+  bool wide_budgets_ = false;  // node_budgets' AVX2 copy allowed (POND_CPU_FEATURES_MASK)
   std::uint32_t frame_ = 0;
   std::vector<std::uint32_t> made_in_;  // per block: the frame it was made in (0: never)
   std::vector<std::uint32_t> slot_;     // per block: its slot in pool_ when made this frame

@@ -1,43 +1,19 @@
 #include "sim/backends.h"
 
-#include <algorithm>
-#include <cstdlib>
-#include <iterator>
 #include <string>
 
+#include "core/cpu_features.h"
 #include "core/errors.h"
 #include "shared/exact_math.h"
 
 namespace pond::sim {
 namespace {
 
-// The CPU features of the SIMD backends, narrowest first: a CPU without one has none of the wider
-// ones (no AVX-512F without AVX2), so masking one masks those after it too.
-constexpr const char* kFeatures[] = {"sse2", "avx2", "avx512f"};
-
-int feature_index(Backend b) { return b == Backend::sse ? 0 : b == Backend::avx2 ? 1 : 2; }
-
-// How many of kFeatures POND_CPU_FEATURES_MASK (a comma-separated list of them) leaves visible. Read
-// on every call, so a test can set it. An unknown name is an InputError rather than a mask that
-// silently hides nothing.
-int unmasked_features() {
-  const char* mask = std::getenv("POND_CPU_FEATURES_MASK");
-  int visible = static_cast<int>(std::size(kFeatures));
-  for (std::string_view rest = mask ? mask : ""; !rest.empty();) {
-    const std::size_t comma = rest.find(',');
-    const std::string_view name = rest.substr(0, comma);
-    rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
-    if (name.empty()) continue;
-    const auto* f = std::find(std::begin(kFeatures), std::end(kFeatures), name);
-    if (f == std::end(kFeatures))
-      throw InputError("POND_CPU_FEATURES_MASK: unknown CPU feature '" + std::string(name) +
-                       "' (sse2, avx2, avx512f)");
-    visible = std::min(visible, static_cast<int>(f - std::begin(kFeatures)));
-  }
-  return visible;
+core::CpuFeature feature_of(Backend b) {
+  return b == Backend::sse ? core::CpuFeature::sse2 : b == Backend::avx2 ? core::CpuFeature::avx2 : core::CpuFeature::avx512f;
 }
 
-bool masked(Backend b) { return b != Backend::scalar && feature_index(b) >= unmasked_features(); }
+bool masked(Backend b) { return b != Backend::scalar && core::cpu_feature_masked(feature_of(b)); }
 
 }  // namespace
 
@@ -52,14 +28,8 @@ bool compiled_in(Backend b) {
 }
 
 bool cpu_supports(Backend b) {
-  if (!compiled_in(b) || masked(b)) return false;
-  switch (b) {
-    case Backend::scalar: return true;
-    case Backend::sse: return __builtin_cpu_supports("sse2");
-    case Backend::avx2: return __builtin_cpu_supports("avx2");
-    case Backend::avx512: return __builtin_cpu_supports("avx512f");
-  }
-  return false;
+  if (!compiled_in(b)) return false;
+  return b == Backend::scalar || core::cpu_has(feature_of(b));
 }
 
 Backend best_backend() {

@@ -22,7 +22,7 @@ StepRowsFn step_rows_sse2(int rsqrt_steps, bool reach, bool tiles);
 StepRowsFn step_rows_avx2(int rsqrt_steps, bool reach, bool tiles);    // nullptr in builds without AVX2 (IA-32)
 StepRowsFn step_rows_avx512(int rsqrt_steps, bool reach, bool tiles);  // nullptr in builds without AVX-512 (IA-32)
 
-// Tests hide CPU features with POND_CPU_FEATURES_MASK=avx2 (sse2|avx2|avx512f,...; wider ones go too).
+// Tests hide CPU features with POND_CPU_FEATURES_MASK (core/cpu_features.h).
 bool compiled_in(Backend b);         // in this build (IA-32 builds have scalar and sse)
 bool cpu_supports(Backend b);        // compiled in, supported by this CPU and not masked (line above)
 Backend best_backend();              // the widest supported

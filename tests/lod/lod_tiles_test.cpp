@@ -118,10 +118,11 @@ bool inside(const lod::Tri& t, lod::Point n) {
   return (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
 }
 
-// The node budgets eight nodes at a time (where the CPU has AVX2) are the four-at-a-time ones, bit
-// for bit: views from above (the cone), grazing, from inside the pond and with the pond half out of
-// the frustum, on grids whose size leaves a tail after the last full vector.
+// The node budgets' AVX2 copy gives the baseline's bits: views from above (the cone), grazing,
+// from inside the pond and with half the pond behind the camera, on grids whose size leaves a tail
+// after the last full vector.
 TEST(NodeBudgets, AreTheSameBitsAtEveryWidth) {
+  if (!lod::wide_budgets_available()) GTEST_SKIP() << "no AVX2 copy in this build, or no AVX2 on this CPU";
   for (auto [rows, cols] : {std::pair{129, 129}, {61, 83}}) {
     const std::vector<float> s = analytic_ripples(rows, cols, 5, 0.5, 7u);
     const auto p = lod::interleaved_positions(s.data(), rows, cols);
@@ -131,7 +132,7 @@ TEST(NodeBudgets, AreTheSameBitsAtEveryWidth) {
     lod::copy_positions(p, x.data(), y.data(), z.data());
     const auto own = lod::soa_positions(x.data(), y.data(), z.data(), rows, cols);
     const double mx = cols / 2.0, mz = rows / 2.0;
-    const lod::Camera views[] = {{{mx, 80, mz}, {mx, 0, mz}, 60, 1280, 720},
+    const lod::Camera views[] = {{{mx, 20, mz}, {mx, 0, mz}, 60, 1280, 720},
                                  {{mx, 1.5, -10}, {mx, 0.5, mz}, 50, 1280, 720},
                                  {{mx, 2, mz}, {mx + 30, 0, mz + 5}, 90, 640, 480},
                                  {{0, 20, 0}, {-30, 0, mz}, 60, 1280, 720}};
@@ -145,7 +146,8 @@ TEST(NodeBudgets, AreTheSameBitsAtEveryWidth) {
             << rows << "x" << cols << " node " << k;
         in_view += std::isfinite(narrow[k]);
       }
-      EXPECT_GT(in_view, 0u);  // each view sees some of the pond
+      EXPECT_GT(in_view, 0u);  // each view sees part of the pond and leaves part out (both branches)
+      EXPECT_LT(in_view, n);
     }
   }
 }

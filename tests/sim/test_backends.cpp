@@ -171,7 +171,7 @@ TEST(Backends, FastMathStaysCloseToExact) {
   EXPECT_LT(worst, 1e-3 * peak);
 }
 
-// POND_CPU_FEATURES_MASK set for one scope (backends.h), the previous value restored after.
+// POND_CPU_FEATURES_MASK set for one scope (core/cpu_features.h), the previous value restored after.
 class CpuFeaturesMask {
  public:
   explicit CpuFeaturesMask(const char* mask) {

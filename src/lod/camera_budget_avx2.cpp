@@ -1,0 +1,8 @@
+// node_budgets' AVX2 copy (budget_loop.h), chosen by node_budgets where the CPU has AVX2.
+#include "lod/budget_loop.h"
+
+namespace pond::lod {
+
+void node_budgets_avx2(const NodePositions& p, const BudgetTerms& t, float* budget) { budget_loop(p, t, budget); }
+
+}  // namespace pond::lod
