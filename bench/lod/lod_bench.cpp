@@ -6,6 +6,7 @@
 #include <meshoptimizer.h>
 
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <string>
@@ -128,6 +129,87 @@ void BM_BuildRain(benchmark::State& st) {
   st.counters["scan_nodes"] = static_cast<double>(b.stats().scanned_nodes);
 }
 BENCHMARK(BM_BuildRain)->Arg(50)->Arg(257)->Arg(1025)->Arg(2049)->Arg(4097)->Unit(benchmark::kMillisecond);
+
+// Frame-to-frame coherence, measured for a design not built yet: how many of one frame's leaves in
+// view would pass again one step later, proved from what they missed by then plus twice the most
+// any node of their tiles moved (a tile bound a solver could emit), without reading a node.
+// Counters: leaves in view; re-proved with each node's own miss and budget ("per_node"), and with
+// the leaf's largest miss against its least budget ("per_leaf", what a stored slack would give).
+void BM_LeafCoherence(benchmark::State& st) {
+  const int side = static_cast<int>(st.range(0)), drops = side * side / 160;
+  const auto before = pond::lod_test::simulated_pond(side, side, drops, std::max(1, drops / 20), 15, 1, 0.1);
+  const auto after = pond::lod_test::simulated_pond(side, side, drops, std::max(1, drops / 20), 16, 1, 0.1);
+  const auto pa = pond::lod::interleaved_positions(before.data(), side, side);
+  const auto pb = pond::lod::interleaved_positions(after.data(), side, side);
+  const pond::lod::Camera camera = lod_camera(view(side));
+  std::vector<std::uint32_t> leaves;
+  std::size_t n = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
+  std::vector<float> x(n + 3), y(n + 3), z(n + 3), budget(n + 3);
+  std::vector<double> tile_move;
+  for (auto _ : st) {
+    pond::lod::LodBuilder b(side, side);
+    leaves.resize(b.max_indices());
+    leaves.resize(b.build(pa, pond::lod::tile_ranges(pa), camera, 1.0, leaves));
+    const float largest = pond::lod::copy_finite_window(pb, 0, 0, side, side, x.data(), y.data(), z.data());
+    pond::lod::node_budgets(pond::lod::soa_positions(x.data(), y.data(), z.data(), side, side),
+                            pond::lod::budget_terms(camera, 1.0, largest), budget.data());
+    // The most a node of each tile (16 cells, sharing borders) moved.
+    const int tiles = (side - 2) / 16 + 1;
+    tile_move.assign(static_cast<std::size_t>(tiles) * tiles, 0.0);
+    for (std::size_t k = 0; k < n; ++k) {
+      double d2 = 0;
+      for (int c = 0; c < 3; ++c) d2 += std::pow(double(after[k * 6 + c]) - before[k * 6 + c], 2);
+      const int r = static_cast<int>(k) / side, col = static_cast<int>(k) % side;
+      for (int tr : {std::max(0, (r - 1) / 16), std::min(tiles - 1, r / 16)})
+        for (int tc : {std::max(0, (col - 1) / 16), std::min(tiles - 1, col / 16)}) {
+          double& m = tile_move[static_cast<std::size_t>(tr) * tiles + tc];
+          m = std::max(m, std::sqrt(d2));
+        }
+    }
+    std::size_t in_view = 0, per_node = 0, per_leaf = 0;
+    for (std::size_t t = 0; t + 2 < leaves.size(); t += 3) {
+      const std::uint32_t id[3] = {leaves[t], leaves[t + 1], leaves[t + 2]};
+      int px[3], py[3];
+      for (int k = 0; k < 3; ++k) px[k] = static_cast<int>(id[k]) % side, py[k] = static_cast<int>(id[k]) / side;
+      const long long det = (long long)(px[1] - px[0]) * (py[2] - py[0]) - (long long)(py[1] - py[0]) * (px[2] - px[0]);
+      // Each node of the leaf with its barycentric weights times det (exact integers).
+      const auto each_node = [&](auto&& f) {
+        for (int yy = std::min({py[0], py[1], py[2]}); yy <= std::max({py[0], py[1], py[2]}); ++yy)
+          for (int xx = std::min({px[0], px[1], px[2]}); xx <= std::max({px[0], px[1], px[2]}); ++xx) {
+            const long long wb = (long long)(xx - px[0]) * (py[2] - py[0]) - (long long)(yy - py[0]) * (px[2] - px[0]);
+            const long long wc = (long long)(px[1] - px[0]) * (yy - py[0]) - (long long)(py[1] - py[0]) * (xx - px[0]);
+            const long long wa = det - wb - wc;
+            if (det > 0 ? (wa >= 0 && wb >= 0 && wc >= 0) : (wa <= 0 && wb <= 0 && wc <= 0)) f(xx, yy, wa, wb, wc);
+          }
+      };
+      double move = 0;
+      each_node([&](int xx, int yy, long long, long long, long long) {
+        for (int tr : {std::max(0, (yy - 1) / 16), std::min(tiles - 1, yy / 16)})
+          for (int tc : {std::max(0, (xx - 1) / 16), std::min(tiles - 1, xx / 16)})
+            move = std::max(move, tile_move[static_cast<std::size_t>(tr) * tiles + tc]);
+      });
+      double worst = -HUGE_VAL, largest_miss = 0, least_budget = HUGE_VAL;
+      each_node([&](int xx, int yy, long long wa, long long wb, long long wc) {
+        const std::size_t k = static_cast<std::size_t>(yy) * side + xx;
+        if (!std::isfinite(budget[k])) return;
+        double e2 = 0;
+        for (int c = 0; c < 3; ++c) {
+          const double w = (double(wa) * before[id[0] * 6 + c] + double(wb) * before[id[1] * 6 + c] +
+                            double(wc) * before[id[2] * 6 + c]) / double(det);
+          e2 += std::pow(before[k * 6 + c] - w, 2);
+        }
+        worst = std::max(worst, std::sqrt(e2) + 2 * move - budget[k]);
+        largest_miss = std::max(largest_miss, std::sqrt(e2)), least_budget = std::min(least_budget, double(budget[k]));
+      });
+      if (det == 0 || least_budget == HUGE_VAL) continue;  // degenerate, or wholly out of view
+      ++in_view, per_node += worst <= 0, per_leaf += largest_miss + 2 * move <= least_budget;
+    }
+    st.counters["in_view"] = static_cast<double>(in_view);
+    st.counters["per_node"] = static_cast<double>(per_node);
+    st.counters["per_leaf"] = static_cast<double>(per_leaf);
+  }
+}
+BENCHMARK(BM_LeafCoherence)->Arg(257)->Arg(1025)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 // What `pond lod` spends before building from a file's state: its tile ranges, node by node.
 void BM_TileRangesFromState(benchmark::State& st) {
