@@ -10,6 +10,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -107,6 +108,23 @@ void BM_WholeGridPass(benchmark::State& st) {
                                                                             benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_WholeGridPass)->ArgsProduct({{257, 1025}, {0, 1, 2}})->Unit(benchmark::kMicrosecond);
+
+// The block copy alone (surface_blocks.h: 17x17 nodes of a 1025² state): range(0) 0 the 466
+// blocks of a 1025² rain frame's count at random places, 1 one block 466 times (always in cache).
+void BM_BlockCopy(benchmark::State& st) {
+  const Pond& p = rain(1025);
+  std::vector<std::pair<int, int>> at;
+  std::mt19937 rng(1);
+  std::uniform_int_distribution<int> block(0, 63);
+  for (int k = 0; k < 466; ++k) at.emplace_back(st.range(0) ? 0 : block(rng), st.range(0) ? 0 : block(rng));
+  std::vector<float> x(17 * 17 + 3), y(x.size()), z(x.size());
+  for (auto _ : st)
+    for (auto [bx, by] : at) {
+      pond::lod::copy_window(p.positions(), by * 16, bx * 16, 17, 17, x.data(), y.data(), z.data());
+      benchmark::ClobberMemory();
+    }
+}
+BENCHMARK(BM_BlockCopy)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 // Build time per frame (the surface is the same each iteration; the builder redoes everything).
 void BM_BuildRain(benchmark::State& st) {
