@@ -11,6 +11,7 @@
 
 #include "app/cli_parse.h"
 #include "app/commands.h"
+#include "core/cpu_features.h"
 #include "core/errors.h"
 #include "core/npy.h"
 #include "core/output_file.h"
@@ -41,6 +42,7 @@ int run_lod(const LodOptions& o) {
   camera.width = size.width, camera.height = size.height;
   camera.fovy_degrees = o.fovy;
   lod::validate(camera, o.tolerance);
+  core::validate_cpu_features_mask();  // the builder reads it; an error below is the state's
   check_output_path(o.out);
 
   const NpyArray state = read_npy(o.state);

@@ -13,5 +13,8 @@ const char* feature_name(CpuFeature f);  // "sse2", "avx2", "avx512f"
 bool cpu_feature_masked(CpuFeature f);
 // This CPU has `f` and the mask does not hide it.
 bool cpu_has(CpuFeature f);
+// Throws InputError if the mask names an unknown feature: for a command to report it as itself,
+// before a part that reads it mid-way (the LOD builder, once a frame) blames its own input.
+void validate_cpu_features_mask();
 
 }  // namespace pond::core

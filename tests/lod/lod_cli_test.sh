@@ -58,6 +58,10 @@ expect_bad "eye" --state "$work/state.npy" --eye 1,2 --target 1,2,3 --fovy 60 --
 expect_bad "repeat" --state "$work/state.npy" $good --repeat 0
 expect_bad "repeat" --state "$work/state.npy" $good --repeat many
 expect_bad "state" --eye 24,30,-20 --target 24,0,24 --fovy 60 --size 640x480 --tolerance 1
+# A bad CPU feature mask is named as itself, not as a fault of the state the builder was reading.
+export POND_CPU_FEATURES_MASK=bogus
+expect_bad "^pond: POND_CPU_FEATURES_MASK: unknown CPU feature 'bogus'" --state "$work/state.npy" $good
+unset POND_CPU_FEATURES_MASK
 }
 
 # And the good case writes a (T, 3) uint32 TRIS.npy and one summary line.
