@@ -162,31 +162,32 @@ void BM_LeafCoherence(benchmark::State& st) {
   const auto after = pond::lod_test::simulated_pond(side, side, drops, std::max(1, drops / 20), 16, 1, 0.1);
   const auto pa = pond::lod::interleaved_positions(before.data(), side, side);
   const auto pb = pond::lod::interleaved_positions(after.data(), side, side);
+  const pond::lod::TileRanges ranges = pond::lod::tile_ranges(pa);
   const pond::lod::Camera camera = lod_camera(view(side));
+  const std::size_t n = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
+  const auto at = [&](const std::vector<float>& s, std::size_t node, int c) { return double(s[node * 6 + c]); };
   std::vector<std::uint32_t> leaves;
-  std::size_t n = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
   std::vector<float> x(n + 3), y(n + 3), z(n + 3), budget(n + 3);
   std::vector<double> tile_move;
   for (auto _ : st) {
     pond::lod::LodBuilder b(side, side);
     leaves.resize(b.max_indices());
-    leaves.resize(b.build(pa, pond::lod::tile_ranges(pa), camera, 1.0, leaves));
+    leaves.resize(b.build(pa, ranges, camera, 1.0, leaves));
     const float largest = pond::lod::copy_finite_window(pb, 0, 0, side, side, x.data(), y.data(), z.data());
     pond::lod::node_budgets(pond::lod::soa_positions(x.data(), y.data(), z.data(), side, side),
                             pond::lod::budget_terms(camera, 1.0, largest), budget.data());
-    // The most a node of each tile (16 cells, sharing borders) moved.
-    const int tiles = (side - 2) / 16 + 1;
-    tile_move.assign(static_cast<std::size_t>(tiles) * tiles, 0.0);
-    for (std::size_t k = 0; k < n; ++k) {
-      double d2 = 0;
-      for (int c = 0; c < 3; ++c) d2 += std::pow(double(after[k * 6 + c]) - before[k * 6 + c], 2);
-      const int r = static_cast<int>(k) / side, col = static_cast<int>(k) % side;
-      for (int tr : {std::max(0, (r - 1) / 16), std::min(tiles - 1, r / 16)})
-        for (int tc : {std::max(0, (col - 1) / 16), std::min(tiles - 1, col / 16)}) {
-          double& m = tile_move[static_cast<std::size_t>(tr) * tiles + tc];
-          m = std::max(m, std::sqrt(d2));
-        }
-    }
+    // The most a node of each tile moved (tile (a, b): nodes 16 a .. 16 a + 16 by 16 b .. 16 b + 16).
+    tile_move.assign(static_cast<std::size_t>(ranges.tiles_x()) * ranges.tiles_y(), 0.0);
+    for (int tb = 0; tb < ranges.tiles_y(); ++tb)
+      for (int ta = 0; ta < ranges.tiles_x(); ++ta)
+        for (int r = 16 * tb; r <= std::min(16 * tb + 16, side - 1); ++r)
+          for (int c = 16 * ta; c <= std::min(16 * ta + 16, side - 1); ++c) {
+            const std::size_t k = static_cast<std::size_t>(r) * side + c;
+            double d2 = 0;
+            for (int i = 0; i < 3; ++i) d2 += std::pow(at(after, k, i) - at(before, k, i), 2);
+            double& m = tile_move[static_cast<std::size_t>(tb) * ranges.tiles_x() + ta];
+            m = std::max(m, std::sqrt(d2));
+          }
     const double pond_move = *std::max_element(tile_move.begin(), tile_move.end());
     std::size_t in_view = 0, per_node = 0, per_leaf = 0, per_leaf_global = 0;
     for (std::size_t t = 0; t + 2 < leaves.size(); t += 3) {
@@ -194,37 +195,34 @@ void BM_LeafCoherence(benchmark::State& st) {
       int px[3], py[3];
       for (int k = 0; k < 3; ++k) px[k] = static_cast<int>(id[k]) % side, py[k] = static_cast<int>(id[k]) / side;
       const long long det = (long long)(px[1] - px[0]) * (py[2] - py[0]) - (long long)(py[1] - py[0]) * (px[2] - px[0]);
-      // Each node of the leaf with its barycentric weights times det (exact integers).
-      const auto each_node = [&](auto&& f) {
-        for (int yy = std::min({py[0], py[1], py[2]}); yy <= std::max({py[0], py[1], py[2]}); ++yy)
-          for (int xx = std::min({px[0], px[1], px[2]}); xx <= std::max({px[0], px[1], px[2]}); ++xx) {
-            const long long wb = (long long)(xx - px[0]) * (py[2] - py[0]) - (long long)(yy - py[0]) * (px[2] - px[0]);
-            const long long wc = (long long)(px[1] - px[0]) * (yy - py[0]) - (long long)(py[1] - py[0]) * (xx - px[0]);
-            const long long wa = det - wb - wc;
-            if (det > 0 ? (wa >= 0 && wb >= 0 && wc >= 0) : (wa <= 0 && wb <= 0 && wc <= 0)) f(xx, yy, wa, wb, wc);
-          }
-      };
+      if (det == 0) continue;
+      const int x0 = std::min({px[0], px[1], px[2]}), x1 = std::max({px[0], px[1], px[2]});
+      const int y0 = std::min({py[0], py[1], py[2]}), y1 = std::max({py[0], py[1], py[2]});
+      // The most a node of the tiles holding the leaf's box moved.
+      const pond::lod::TileRect r = ranges.tiles_of(x0, x1, y0, y1);
       double move = 0;
-      each_node([&](int xx, int yy, long long, long long, long long) {
-        for (int tr : {std::max(0, (yy - 1) / 16), std::min(tiles - 1, yy / 16)})
-          for (int tc : {std::max(0, (xx - 1) / 16), std::min(tiles - 1, xx / 16)})
-            move = std::max(move, tile_move[static_cast<std::size_t>(tr) * tiles + tc]);
-      });
-      double worst = -HUGE_VAL, largest_miss = 0, least_budget = HUGE_VAL;
-      each_node([&](int xx, int yy, long long wa, long long wb, long long wc) {
-        const std::size_t k = static_cast<std::size_t>(yy) * side + xx;
-        if (!std::isfinite(budget[k])) return;
-        double e2 = 0;
-        for (int c = 0; c < 3; ++c) {
-          const double w = (double(wa) * before[id[0] * 6 + c] + double(wb) * before[id[1] * 6 + c] +
-                            double(wc) * before[id[2] * 6 + c]) / double(det);
-          e2 += std::pow(before[k * 6 + c] - w, 2);
+      for (int tb = r.b0; tb <= r.b1; ++tb)
+        for (int ta = r.a0; ta <= r.a1; ++ta) move = std::max(move, tile_move[static_cast<std::size_t>(tb) * ranges.tiles_x() + ta]);
+      // Over the leaf's nodes in view (barycentric weights times det, exact integers): the largest
+      // miss less the node's budget, the largest miss, the least budget.
+      double over = -HUGE_VAL, largest_miss = 0, least_budget = HUGE_VAL;
+      for (int yy = y0; yy <= y1; ++yy)
+        for (int xx = x0; xx <= x1; ++xx) {
+          const long long wb = (long long)(xx - px[0]) * (py[2] - py[0]) - (long long)(yy - py[0]) * (px[2] - px[0]);
+          const long long wc = (long long)(px[1] - px[0]) * (yy - py[0]) - (long long)(py[1] - py[0]) * (xx - px[0]);
+          const long long wa = det - wb - wc;
+          const std::size_t k = static_cast<std::size_t>(yy) * side + xx;
+          const bool inside = det > 0 ? (wa >= 0 && wb >= 0 && wc >= 0) : (wa <= 0 && wb <= 0 && wc <= 0);
+          if (!inside || !std::isfinite(budget[k])) continue;
+          double e2 = 0;
+          for (int c = 0; c < 3; ++c)
+            e2 += std::pow(at(before, k, c) - (double(wa) * at(before, id[0], c) + double(wb) * at(before, id[1], c) +
+                                               double(wc) * at(before, id[2], c)) / double(det), 2);
+          over = std::max(over, std::sqrt(e2) - budget[k]);
+          largest_miss = std::max(largest_miss, std::sqrt(e2)), least_budget = std::min(least_budget, double(budget[k]));
         }
-        worst = std::max(worst, std::sqrt(e2) + 2 * move - budget[k]);
-        largest_miss = std::max(largest_miss, std::sqrt(e2)), least_budget = std::min(least_budget, double(budget[k]));
-      });
-      if (det == 0 || least_budget == HUGE_VAL) continue;  // degenerate, or wholly out of view
-      ++in_view, per_node += worst <= 0, per_leaf += largest_miss + 2 * move <= least_budget;
+      if (least_budget == HUGE_VAL) continue;  // wholly out of view
+      ++in_view, per_node += over + 2 * move <= 0, per_leaf += largest_miss + 2 * move <= least_budget;
       per_leaf_global += largest_miss + 2 * pond_move <= least_budget;
     }
     st.counters["in_view"] = static_cast<double>(in_view);

@@ -35,8 +35,6 @@ int unmasked_features() {
 
 }  // namespace
 
-const char* feature_name(CpuFeature f) { return kFeatures[static_cast<int>(f)]; }
-
 void validate_cpu_features_mask() { unmasked_features(); }
 
 bool cpu_feature_masked(CpuFeature f) { return static_cast<int>(f) >= unmasked_features(); }

@@ -7,7 +7,6 @@ namespace pond::core {
 
 enum class CpuFeature { sse2, avx2, avx512f };  // narrowest first
 
-const char* feature_name(CpuFeature f);  // "sse2", "avx2", "avx512f"
 // Whether POND_CPU_FEATURES_MASK hides `f`. Read on every call, so a test can set it; an unknown
 // name in it throws InputError rather than hiding nothing.
 bool cpu_feature_masked(CpuFeature f);
