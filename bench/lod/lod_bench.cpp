@@ -190,6 +190,10 @@ void BM_LeafCoherence(benchmark::State& st) {
           }
     const double pond_move = *std::max_element(tile_move.begin(), tile_move.end());
     std::size_t in_view = 0, per_node = 0, per_leaf = 0, per_leaf_global = 0;
+    // The blocks (16 x 16 cells, by a leaf's first node) holding a leaf either bound fails: what a
+    // frame would still make to test those leaves again.
+    const std::size_t blocks_x = static_cast<std::size_t>(side) / 16 + 1;
+    std::vector<char> failing_tile(blocks_x * blocks_x), failing_pond(blocks_x * blocks_x);
     for (std::size_t t = 0; t + 2 < leaves.size(); t += 3) {
       const std::uint32_t id[3] = {leaves[t], leaves[t + 1], leaves[t + 2]};
       int px[3], py[3];
@@ -224,11 +228,16 @@ void BM_LeafCoherence(benchmark::State& st) {
       if (least_budget == HUGE_VAL) continue;  // wholly out of view
       ++in_view, per_node += over + 2 * move <= 0, per_leaf += largest_miss + 2 * move <= least_budget;
       per_leaf_global += largest_miss + 2 * pond_move <= least_budget;
+      const std::size_t block = static_cast<std::size_t>(y0 / 16) * blocks_x + static_cast<std::size_t>(x0 / 16);
+      if (!(largest_miss + 2 * move <= least_budget)) failing_tile[block] = 1;
+      if (!(largest_miss + 2 * pond_move <= least_budget)) failing_pond[block] = 1;
     }
     st.counters["in_view"] = static_cast<double>(in_view);
     st.counters["per_node"] = static_cast<double>(per_node);
     st.counters["per_leaf"] = static_cast<double>(per_leaf);
     st.counters["per_leaf_global"] = static_cast<double>(per_leaf_global);
+    st.counters["blocks_failing_tile"] = static_cast<double>(std::count(failing_tile.begin(), failing_tile.end(), 1));
+    st.counters["blocks_failing_pond"] = static_cast<double>(std::count(failing_pond.begin(), failing_pond.end(), 1));
   }
 }
 BENCHMARK(BM_LeafCoherence)->Arg(257)->Arg(1025)->Iterations(1)->Unit(benchmark::kMillisecond);
