@@ -24,10 +24,6 @@ struct Pass {
   NestedBound* out;
   int rows, cols;
   float slack;
-  Point origin;  // the grid's first node in the hierarchy (a block's: diagonals follow its parity)
-
-  // 1 when squares of side `step` at the origin have the other diagonal than at (0, 0).
-  int flip(int step) const { return ((origin.x / step) + (origin.y / step)) & 1; }
 
   // In float for speed; `slack` (from the largest coordinate) covers its rounding, so the result
   // never falls below the exact distance.
@@ -112,7 +108,7 @@ __m128 select(__m128 mask, __m128 a, __m128 b) { return _mm_or_ps(_mm_and_ps(mas
 void diagonal_row(const Pass& pass, int y) {
   const std::size_t row = static_cast<std::size_t>(pass.cols);
   const NestedBound* bounds = pass.out;
-  const int b = y / 2 + pass.flip(2);  // the squares' row index (and the origin's parity)
+  const int b = y / 2;  // the squares' row index
   const std::size_t at = static_cast<std::size_t>(y) * row;
   // Lanes whose square has the main diagonal: (a + b) even, a = the square's index in the row.
   const __m128 main_lanes = (b & 1) == 0 ? _mm_castsi128_ps(_mm_setr_epi32(-1, 0, -1, 0))
@@ -172,12 +168,12 @@ void scale_one(const Pass& pass) {
 }  // namespace
 
 void nested_bounds(const GridHierarchy& grid, const NodePositions& p, float largest,
-                   const float* budget, NestedBound* bounds, Point origin) {
+                   const float* budget, NestedBound* bounds) {
   const int rows = grid.rows(), cols = grid.cols();
   // Float rounding of a deviation: each of its ~6 operations errs by at most half an ulp of the
   // largest magnitude involved (<= 2 * largest), so 16 ulps of `largest` is a safe slack.
   const float slack = 16 * largest * std::numeric_limits<float>::epsilon();
-  const Pass pass{p.x, p.y, p.z, budget, bounds, rows, cols, slack, origin};
+  const Pass pass{p.x, p.y, p.z, budget, bounds, rows, cols, slack};
   const std::ptrdiff_t row = cols;
   const int extent = std::max(rows, cols);
   for (int h = 1; h < extent; h *= 2) {
@@ -198,7 +194,7 @@ void nested_bounds(const GridHierarchy& grid, const NodePositions& p, float larg
     for (int y = 0; y < rows; y += step) {
       for (int x = h; x + h < cols; x += step) pass.vertex(x, y, h, axis_children, 4, q);
       if (y < step) continue;
-      const int above = y - h, b = above / step + pass.flip(step);  // b: the squares' row index
+      const int above = y - h, b = above / step;  // b: the squares' row index
       for (int x = 0; x < cols; x += step) pass.vertex(x, above, h * row, axis_children, 4, q);
       for (int x = h, a = 0; x + h < cols; x += step, ++a)
         pass.vertex(x, above, ((a + b) & 1) == 0 ? h * row + h : h * row - h, diag_children, 4, h);

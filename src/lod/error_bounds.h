@@ -29,9 +29,8 @@ struct NestedBound {
 
 constexpr NestedBound kNothingProved{std::numeric_limits<float>::infinity(), 0.0f};
 
-// `largest` bounds every |coordinate| (it sizes the float rounding slack). `grid` may be a block
-// of a larger grid (surface_blocks.h) whose first node is `origin` there.
+// `largest` bounds every |coordinate| (it sizes the float rounding slack).
 void nested_bounds(const GridHierarchy& grid, const NodePositions& positions, float largest,
-                   const float* budget, NestedBound* bounds, Point origin = {});
+                   const float* budget, NestedBound* bounds);
 
 }  // namespace pond::lod

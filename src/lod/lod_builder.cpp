@@ -97,9 +97,9 @@ bool LodBuilder::block_held(int bx, int by) {
 bool LodBuilder::leaf_is_fine(const SurfaceBlock& blk, const Tri& t, Point mid_point) {
   const GridHierarchy& grid = *blk.grid;
   const float *px = blk.x.data(), *py = blk.y.data(), *pz = blk.z.data(), *budget = blk.budget.data();
-  const NestedBound* bounds = blk.bounds.data();
+  const NestedBound* bounds = blk.bounds.empty() ? nullptr : blk.bounds.data();  // a block has none
   const std::uint32_t mid = grid.id(mid_point);
-  if (bounds[mid].error <= bounds[mid].min_budget) {
+  if (bounds && bounds[mid].error <= bounds[mid].min_budget) {
     ++stats_.proved;
     return true;
   }
@@ -126,6 +126,10 @@ bool LodBuilder::leaf_is_fine(const SurfaceBlock& blk, const Tri& t, Point mid_p
   if (over(left2, t.apex, t.left)) return false;
   const double right2 = squared_deviation(t.apex, t.right);
   if (over(right2, t.apex, t.right)) return false;
+  if (!bounds) {  // a block's triangle: scanned whole
+    ++stats_.scanned;
+    return within_budget(grid, blk.positions(), budget, largest_, t, &stats_.scanned_nodes);
+  }
 
   // Proofs by parts. Split at m, t's children t1 = (m, apex, left) and t2 = (m, right, apex) are
   // triangles of the diamonds of the legs' midpoints c1, c2. A node p of t_i misses t's

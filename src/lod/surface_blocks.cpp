@@ -43,7 +43,7 @@ const SurfaceBlock& SurfaceBlocks::block(int bx, int by) {
   if (used_ == pool_.size()) pool_.push_back(std::make_unique<SurfaceBlock>());
   SurfaceBlock& b = *pool_[used_];
   const core::GridWindow w = window(bx, by);
-  make(b, {w.col0, w.row0}, w.rows, w.cols);
+  make(b, {w.col0, w.row0}, w.rows, w.cols, false);
   made_in_[k] = frame_;
   slot_[k] = static_cast<std::uint32_t>(used_++);
   return b;
@@ -55,12 +55,12 @@ core::GridWindow SurfaceBlocks::window(int bx, int by) const {
 }
 
 const SurfaceBlock& SurfaceBlocks::whole() {
-  if (whole_made_in_ != frame_) make(whole_, {0, 0}, rows_, cols_);
+  if (whole_made_in_ != frame_) make(whole_, {0, 0}, rows_, cols_, true);
   whole_made_in_ = frame_;
   return whole_;
 }
 
-void SurfaceBlocks::make(SurfaceBlock& b, Point origin, int rows, int cols) {
+void SurfaceBlocks::make(SurfaceBlock& b, Point origin, int rows, int cols, bool nested) {
   b.origin = origin;
   b.grid = shape(rows, cols);
   const std::size_t n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
@@ -68,10 +68,11 @@ void SurfaceBlocks::make(SurfaceBlock& b, Point origin, int rows, int cols) {
   copy_finite_window(positions_, b.origin.y, b.origin.x, rows, cols, b.x.data(), b.y.data(), b.z.data());
   const NodePositions own = b.positions();
   node_budgets(own, terms_, b.budget.data(), wide_budgets_);
+  if (!nested) return;
   // The vertices nested_bounds() leaves alone depend on the shape only: set them on a change of shape.
   if (b.bounds.size() != n || b.shaped_for != b.grid) b.bounds.assign(n, kNothingProved);
   b.shaped_for = b.grid;
-  nested_bounds(*b.grid, own, largest_, b.budget.data(), b.bounds.data(), b.origin);
+  nested_bounds(*b.grid, own, largest_, b.budget.data(), b.bounds.data());
 }
 
 }  // namespace pond::lod

@@ -1,11 +1,11 @@
 #pragma once
 // The builder's node-level data, made only where the refinement needs it: per block of
 // kBlockCells x kBlockCells cells (aligned like the tiles, neighbours sharing their border nodes),
-// the nodes' world positions, budgets and nested error bounds (error_bounds.h) in block-local
-// coordinates. A block's nested bounds are those of the block as a grid of its own: a vertex on
-// its border is bounded over the part of its diamond inside the block, which is the only part a
-// triangle of this block (every triangle it is asked about lies in it) needs. Or the whole grid as
-// one block, when most of it is needed.
+// the nodes' world positions and budgets in block-local coordinates. Or the whole grid as one
+// block, when most of it is needed, with its nested error bounds (error_bounds.h) too: there
+// triangles of any size are tested on nodes, and the bounds prove large ones without a scan. A
+// block's triangles are small enough that scanning them costs less than bounding every node of
+// the block (docs/perf.md, "Nested bounds for the whole grid only").
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -30,7 +30,7 @@ struct SurfaceBlock {
   Point origin;               // its first node in the grid
   const GridHierarchy* grid;  // its nodes as a grid of their own (for ids and clipping)
   std::vector<float> x, y, z, budget;  // by local id, kScanOverread past the last node
-  std::vector<NestedBound> bounds;
+  std::vector<NestedBound> bounds;  // the whole grid's only: empty in a block
   const GridHierarchy* shaped_for = nullptr;  // the shape `bounds` was last set up for
 
   NodePositions positions() const { return soa_positions(x.data(), y.data(), z.data(), grid->rows(), grid->cols()); }
@@ -52,7 +52,7 @@ class SurfaceBlocks {
   // Block (bx, by), made on first use this frame. Throws InputError on a non-finite position in it.
   const SurfaceBlock& block(int bx, int by);
   // The whole grid as one block, made on first use this frame: the cheaper way when most blocks are
-  // needed (one pass, no border twice, no per-block set-up). Its nested bounds are the grid's own.
+  // needed (one pass, no border twice, no per-block set-up), with the grid's nested bounds.
   const SurfaceBlock& whole();
   std::size_t made() const { return used_; }
   // Block (bx, by)'s nodes in the grid.
@@ -63,7 +63,7 @@ class SurfaceBlocks {
 
  private:
   const GridHierarchy* shape(int rows, int cols);
-  void make(SurfaceBlock& b, Point origin, int rows, int cols);
+  void make(SurfaceBlock& b, Point origin, int rows, int cols, bool nested);
 
   int rows_, cols_, blocks_x_, blocks_y_;
   NodePositions positions_;

@@ -1,11 +1,9 @@
 // A candidate leaf wider than a block (at most two across) that the tile ranges do not prove,
 // judged on the nodes of the blocks it covers: by its parts that each lie in one block (its
-// children, or a child's children where the child is still wider). A node p of part P misses t's
-// interpolation by at most |p - I_P(p)| + |I_P(p) - I_t(p)|; I_P - I_t is linear on P, zero at
-// t's corners, dev(m) at t's midpoint m and at most dev(m) + dev(c) at the child's midpoint c, so
-// the splits' deviations plus P's nested bound within its budget prove P. A part not so proved is
-// scanned against t's interpolation. Every part passes an exact test in the end, so the verdict is
-// the one a single block holding all of t would give.
+// children, or a child's children where the child is still wider). A part the ranges prove against
+// t's interpolation needs no node; the others are scanned against it, after quick rejects at the
+// splits. Every part passes an exact test in the end, so the verdict is the one a single block
+// holding all of t would give.
 #include <algorithm>
 #include <cmath>
 
@@ -89,43 +87,25 @@ LodBuilder::Fit LodBuilder::wide_leaf_fits(const Tri& t, Point m) {
     const double budget = blk.budget[blk.grid->id({v.x - blk.origin.x, v.y - blk.origin.y})];
     return d2 > budget * budget;
   };
-  const double m2 = squared_deviation(m, t.left, t.right);
   const int first = static_cast<int>(std::find(ranged, ranged + n, false) - ranged);
-  if (over(m2, m, first)) return Fit::no;  // every part has m as a corner
-  const double dev_m = deviation_up(m2);
-  double offset[4];
-  for (int k = 0; k < n; ++k) {
-    offset[k] = dev_m;
-    if (!deeper[k]) continue;
-    const double c2 = squared_deviation(split[k], leg[k][0], leg[k][1]);
-    if (!ranged[k] && over(c2, split[k], k)) return Fit::no;
-    offset[k] += deviation_up(c2);
-  }
+  if (over(squared_deviation(m, t.left, t.right), m, first)) return Fit::no;  // every part has m as a corner
+  for (int k = 0; k < n; ++k)
+    if (deeper[k] && !ranged[k] && over(squared_deviation(split[k], leg[k][0], leg[k][1]), split[k], k)) return Fit::no;
   TriCorners corners;
   const Point corner[3] = {t.apex, t.left, t.right};
   for (int k = 0; k < 3; ++k) {
     const auto p = at(corner[k]);
     corners.x[k] = p[0], corners.y[k] = p[1], corners.z[k] = p[2];
   }
-  bool scanned = false;
+  ++stats_.scanned;
   for (int k = 0; k < n; ++k) {
     if (ranged[k]) continue;
     const Point b = block_of(tris[k]);
     const SurfaceBlock& blk = blocks_.block(b.x, b.y);
-    const Tri local = blk.local(tris[k]);
-    Point pm;
-    if (midpoint(local, pm)) {
-      const NestedBound& bound = blk.bounds[blk.grid->id(pm)];
-      if ((offset[k] + bound.error) * (1 + 1e-12) <= bound.min_budget) continue;
-    }
-    scanned = true;
-    if (!within_budget(*blk.grid, blk.positions(), blk.budget.data(), largest_, blk.local(t), corners, local,
-                       &stats_.scanned_nodes)) {
-      ++stats_.scanned;
+    if (!within_budget(*blk.grid, blk.positions(), blk.budget.data(), largest_, blk.local(t), corners,
+                       blk.local(tris[k]), &stats_.scanned_nodes))
       return Fit::no;
-    }
   }
-  ++(scanned ? stats_.scanned : stats_.proved);
   return Fit::yes;
 }
 

@@ -152,88 +152,49 @@ TEST(NodeBudgets, AreTheSameBitsAtEveryWidth) {
   }
 }
 
-// A block's nested bounds (error_bounds.h, over the block as a grid of its own): for every vertex v
-// and each triangle of v's diamond inside the block, every node of the triangle but its corners is
-// within bound(v) of its interpolation and has at least min_budget(v). And where v's descendants'
-// diamonds all lie inside the block (2h from its border) they are the whole grid's, bit for bit:
-// the block's diagonals follow the global hierarchy wherever it sits.
-TEST(SurfaceBlocks, NestedBoundsHoldAndMatchTheWholeGrids) {
+// The whole grid's nested bounds (error_bounds.h), as the builder makes them: for every vertex v and
+// each triangle of v's diamond inside the grid, every node of the triangle but its corners is within
+// bound(v) of its interpolation and has at least min_budget(v). Blocks have none: their triangles
+// are scanned (surface_blocks.h).
+TEST(SurfaceBlocks, NestedBoundsHoldOnTheWholeGridAndBlocksHaveNone) {
   for (auto [rows, cols] : {std::pair{129, 129}, {100, 77}, {65, 200}}) {
     const std::vector<float> s = analytic_ripples(rows, cols, 5, 0.5, 3u);
     const auto p = lod::interleaved_positions(s.data(), rows, cols);
     const float largest = lod::tile_ranges(p).largest();
     const lod::Camera cam{{cols / 2.0, 40, -30}, {cols / 2.0, 0, rows / 2.0}, 60, 1280, 720};
-    const std::size_t n = static_cast<std::size_t>(rows) * cols;
-    std::vector<float> x(n), y(n), z(n), budget(n);
-    lod::copy_positions(p, x.data(), y.data(), z.data());
-    const auto own = lod::soa_positions(x.data(), y.data(), z.data(), rows, cols);
-    lod::node_budgets(own, lod::budget_terms(cam, 1.0, largest), budget.data());
-    std::vector<lod::NestedBound> whole(n, lod::kNothingProved);
-    const lod::GridHierarchy grid(rows, cols);
-    lod::nested_bounds(grid, own, largest, budget.data(), whole.data());
-
     lod::SurfaceBlocks blocks(rows, cols);
     blocks.begin(p, lod::budget_terms(cam, 1.0, largest), largest);
-    int compared = 0, held = 0, centres = 0;
+    EXPECT_TRUE(blocks.block(0, 0).bounds.empty());
+    const lod::SurfaceBlock& b = blocks.whole();
+    ASSERT_EQ(b.bounds.size(), static_cast<std::size_t>(rows) * cols);
+    int bounded = 0;
+    long long held = 0;
     const bool full_check = rows == 100;  // node by node on one grid (a few million nodes)
-    for (int by = 0; by * lod::kBlockCells < rows - 1; ++by)
-      for (int bx = 0; bx * lod::kBlockCells < cols - 1; ++bx) {
-        const lod::SurfaceBlock& b = blocks.block(bx, by);
-        const int bc = b.grid->cols(), br = b.grid->rows();
-        for (int ly = 0; ly < br; ++ly)
-          for (int lx = 0; lx < bc; ++lx) {
-            const lod::NestedBound& local = b.bounds[b.grid->id({lx, ly})];
-            if (!std::isfinite(local.error)) continue;  // a corner, or a hypotenuse leaving the grid
-            const int h = (lx | ly) & -(lx | ly);
-            if (lx - 2 * h >= 0 && ly - 2 * h >= 0 && lx + 2 * h < bc && ly + 2 * h < br) {
-              const lod::NestedBound& global = whole[grid.id({b.origin.x + lx, b.origin.y + ly})];
-              ASSERT_EQ(local.error, global.error) << rows << "x" << cols << " block " << bx << "," << by
-                                                   << " vertex " << lx << "," << ly;
-              ASSERT_EQ(local.min_budget, global.min_budget);
-              ++compared;
+    for (int ly = 0; ly < rows; ++ly)
+      for (int lx = 0; lx < cols; ++lx) {
+        const lod::NestedBound& bound = b.bounds[b.grid->id({lx, ly})];
+        if (!std::isfinite(bound.error)) continue;  // a corner, or a hypotenuse leaving the grid
+        ++bounded;
+        if (!full_check) continue;
+        const lod::Diamond d = lod::GridHierarchy::diamond({lx, ly});
+        for (lod::Point apex : d.parents) {
+          const lod::Tri t = lod::oriented(apex, d.end0, d.end1);
+          if (!b.grid->within_grid(t)) continue;  // the half outside the grid
+          const lod::CellBox box = lod::box_of(t);
+          for (int ny = box.y0; ny <= box.y1; ++ny)
+            for (int nx = box.x0; nx <= box.x1; ++nx) {
+              const lod::Point q{nx, ny};
+              if (!inside(t, q) || q == t.apex || q == t.left || q == t.right) continue;  // corners: drawn
+              ASSERT_LE(miss(b, t, q), double(bound.error) * (1 + 1e-6)) << "vertex " << lx << "," << ly << " node " << nx << "," << ny;
+              ASSERT_GE(b.budget[b.grid->id(q)], bound.min_budget);
+              ++held;
             }
-            if (lx == lod::kBlockCells / 2 && ly == lx) {
-              // The block's centre: its diamond is the block and its hypotenuse the global
-              // hierarchy's diagonal there (either one, by the block's place), which the whole
-              // grid's pass cannot vouch for (its children's diamonds leave the block).
-              const lod::Diamond d = lod::GridHierarchy::diamond({b.origin.x + lx, b.origin.y + ly});
-              const auto at = [&](const std::vector<float>& c, lod::Point g) {
-                return c[b.grid->id({g.x - b.origin.x, g.y - b.origin.y})];
-              };
-              const std::size_t v = b.grid->id({lx, ly});
-              const float dx = b.x[v] - 0.5f * (at(b.x, d.end0) + at(b.x, d.end1));
-              const float dy = b.y[v] - 0.5f * (at(b.y, d.end0) + at(b.y, d.end1));
-              const float dz = b.z[v] - 0.5f * (at(b.z, d.end0) + at(b.z, d.end1));
-              float worst = 0;
-              for (lod::Point c : {lod::Point{0, ly}, lod::Point{bc - 1, ly}, lod::Point{lx, 0}, lod::Point{lx, br - 1}})
-                worst = std::max(worst, b.bounds[b.grid->id(c)].error);
-              const float slack = 16 * largest * std::numeric_limits<float>::epsilon();
-              EXPECT_EQ(local.error, (std::sqrt(dx * dx + dy * dy + dz * dz) + slack + worst) * (1 + 1e-5f))
-                  << rows << "x" << cols << " block " << bx << "," << by;
-              ++centres;
-            }
-            if (!full_check) continue;
-            const lod::Diamond d = lod::GridHierarchy::diamond({b.origin.x + lx, b.origin.y + ly});
-            for (lod::Point apex : d.parents) {
-              const lod::Tri t = b.local(lod::oriented(apex, d.end0, d.end1));
-              if (!b.grid->within_grid(t)) continue;  // the half outside the block
-              for (int ny = 0; ny < br; ++ny)
-                for (int nx = 0; nx < bc; ++nx) {
-                  const lod::Point q{nx, ny};
-                  if (!inside(t, q) || q == t.apex || q == t.left || q == t.right) continue;  // corners: drawn
-                  ASSERT_LE(miss(b, t, {nx, ny}), double(local.error) * (1 + 1e-6))
-                      << "block " << bx << "," << by << " vertex " << lx << "," << ly << " node " << nx << "," << ny;
-                  ASSERT_GE(b.budget[b.grid->id({nx, ny})], local.min_budget);
-                  ++held;
-                }
-            }
-          }
+        }
       }
-    EXPECT_GT(compared, rows * cols / 8) << rows << "x" << cols;
+    EXPECT_GT(bounded, rows * cols / 2) << rows << "x" << cols;
     if (full_check) {
-      EXPECT_GT(held, rows * cols);
+      EXPECT_GT(held, static_cast<long long>(rows) * cols);
     }
-    EXPECT_GE(centres, 4);
   }
 }
 
