@@ -45,7 +45,7 @@ struct BuildStats {
   std::size_t ranged = 0;        // accepted by the tile ranges (no node read)
   std::size_t blocks = 0;        // blocks of nodes read (surface_blocks.h)
   bool whole = false;            // the whole grid read as one block instead
-  std::size_t proved = 0;        // accepted by the nested bound alone
+  std::size_t proved = 0;        // accepted by the whole grid's nested bounds alone (0 with blocks)
   std::size_t scanned = 0;       // needed an exact scan
   long long scanned_nodes = 0;   // nodes visited by exact scans
   std::size_t brought = 0;       // times nodes were brought to the host (NodePositions::fetch)

@@ -1,7 +1,8 @@
 #pragma once
 // The exact test of one candidate leaf: does every node in the closed triangle lie within its
-// budget of the triangle's interpolation (barycentric in index space)? Used when the nested
-// bound cannot prove it; stops at the first node over budget.
+// budget of the triangle's interpolation (barycentric in index space)? Used for a block's
+// triangles, a wide leaf's parts, and the parts of a whole-grid triangle its nested bounds cannot
+// prove; stops at the first row with a node over budget.
 #include <cstddef>
 
 #include "lod/grid_hierarchy.h"
