@@ -20,6 +20,7 @@
 #include "lod/position_copy.h"
 #include "lod/mesh_checker.h"
 #include "lod/rippled_states.h"
+#include "lod/triangle_scan.h"
 
 namespace {
 
@@ -115,12 +116,13 @@ void BM_BlockCopy(benchmark::State& st) {
   const Pond& p = rain(1025);
   std::vector<std::pair<int, int>> at;
   std::mt19937 rng(1);
-  std::uniform_int_distribution<int> block(0, 63);
+  constexpr int kCells = pond::lod::kBlockCells, kNodes = kCells + 1;
+  std::uniform_int_distribution<int> block(0, (1025 - 2) / kCells);
   for (int k = 0; k < 466; ++k) at.emplace_back(st.range(0) ? 0 : block(rng), st.range(0) ? 0 : block(rng));
-  std::vector<float> x(17 * 17 + 3), y(x.size()), z(x.size());
+  std::vector<float> x(kNodes * kNodes + pond::lod::kScanOverread), y(x.size()), z(x.size());
   for (auto _ : st)
     for (auto [bx, by] : at) {
-      pond::lod::copy_window(p.positions(), by * 16, bx * 16, 17, 17, x.data(), y.data(), z.data());
+      pond::lod::copy_window(p.positions(), by * kCells, bx * kCells, kNodes, kNodes, x.data(), y.data(), z.data());
       benchmark::ClobberMemory();
     }
 }
@@ -190,9 +192,9 @@ void BM_LeafCoherence(benchmark::State& st) {
           }
     const double pond_move = *std::max_element(tile_move.begin(), tile_move.end());
     std::size_t in_view = 0, per_node = 0, per_leaf = 0, per_leaf_global = 0;
-    // The blocks (16 x 16 cells, by a leaf's first node) holding a leaf either bound fails: what a
+    // The blocks (surface_blocks.h, by a leaf's first node) holding a leaf either bound fails: what a
     // frame would still make to test those leaves again.
-    const std::size_t blocks_x = static_cast<std::size_t>(side) / 16 + 1;
+    const std::size_t blocks_x = static_cast<std::size_t>(side) / pond::lod::kBlockCells + 1;
     std::vector<char> failing_tile(blocks_x * blocks_x), failing_pond(blocks_x * blocks_x);
     for (std::size_t t = 0; t + 2 < leaves.size(); t += 3) {
       const std::uint32_t id[3] = {leaves[t], leaves[t + 1], leaves[t + 2]};
@@ -228,7 +230,8 @@ void BM_LeafCoherence(benchmark::State& st) {
       if (least_budget == HUGE_VAL) continue;  // wholly out of view
       ++in_view, per_node += over + 2 * move <= 0, per_leaf += largest_miss + 2 * move <= least_budget;
       per_leaf_global += largest_miss + 2 * pond_move <= least_budget;
-      const std::size_t block = static_cast<std::size_t>(y0 / 16) * blocks_x + static_cast<std::size_t>(x0 / 16);
+      const std::size_t block = static_cast<std::size_t>(y0 / pond::lod::kBlockCells) * blocks_x +
+                                static_cast<std::size_t>(x0 / pond::lod::kBlockCells);
       if (!(largest_miss + 2 * move <= least_budget)) failing_tile[block] = 1;
       if (!(largest_miss + 2 * pond_move <= least_budget)) failing_pond[block] = 1;
     }

@@ -43,7 +43,7 @@ const SurfaceBlock& SurfaceBlocks::block(int bx, int by) {
   if (used_ == pool_.size()) pool_.push_back(std::make_unique<SurfaceBlock>());
   SurfaceBlock& b = *pool_[used_];
   const core::GridWindow w = window(bx, by);
-  make(b, {w.col0, w.row0}, w.rows, w.cols, false);
+  make(b, {w.col0, w.row0}, w.rows, w.cols);
   made_in_[k] = frame_;
   slot_[k] = static_cast<std::uint32_t>(used_++);
   return b;
@@ -55,24 +55,23 @@ core::GridWindow SurfaceBlocks::window(int bx, int by) const {
 }
 
 const SurfaceBlock& SurfaceBlocks::whole() {
-  if (whole_made_in_ != frame_) make(whole_, {0, 0}, rows_, cols_, true);
+  if (whole_made_in_ != frame_) {
+    make(whole_, {0, 0}, rows_, cols_);
+    // The vertices nested_bounds() leaves alone depend on the grid's shape only: set them once.
+    if (whole_.bounds.empty()) whole_.bounds.assign(static_cast<std::size_t>(rows_) * static_cast<std::size_t>(cols_), kNothingProved);
+    nested_bounds(*whole_.grid, whole_.positions(), largest_, whole_.budget.data(), whole_.bounds.data());
+  }
   whole_made_in_ = frame_;
   return whole_;
 }
 
-void SurfaceBlocks::make(SurfaceBlock& b, Point origin, int rows, int cols, bool nested) {
+void SurfaceBlocks::make(SurfaceBlock& b, Point origin, int rows, int cols) {
   b.origin = origin;
   b.grid = shape(rows, cols);
   const std::size_t n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
   for (std::vector<float>* v : {&b.x, &b.y, &b.z, &b.budget}) v->resize(n + kScanOverread);
   copy_finite_window(positions_, b.origin.y, b.origin.x, rows, cols, b.x.data(), b.y.data(), b.z.data());
-  const NodePositions own = b.positions();
-  node_budgets(own, terms_, b.budget.data(), wide_budgets_);
-  if (!nested) return;
-  // The vertices nested_bounds() leaves alone depend on the shape only: set them on a change of shape.
-  if (b.bounds.size() != n || b.shaped_for != b.grid) b.bounds.assign(n, kNothingProved);
-  b.shaped_for = b.grid;
-  nested_bounds(*b.grid, own, largest_, b.budget.data(), b.bounds.data());
+  node_budgets(b.positions(), terms_, b.budget.data(), wide_budgets_);
 }
 
 }  // namespace pond::lod

@@ -31,7 +31,6 @@ struct SurfaceBlock {
   const GridHierarchy* grid;  // its nodes as a grid of their own (for ids and clipping)
   std::vector<float> x, y, z, budget;  // by local id, kScanOverread past the last node
   std::vector<NestedBound> bounds;  // the whole grid's only: empty in a block
-  const GridHierarchy* shaped_for = nullptr;  // the shape `bounds` was last set up for
 
   NodePositions positions() const { return soa_positions(x.data(), y.data(), z.data(), grid->rows(), grid->cols()); }
   Tri local(const Tri& t) const {
@@ -63,7 +62,7 @@ class SurfaceBlocks {
 
  private:
   const GridHierarchy* shape(int rows, int cols);
-  void make(SurfaceBlock& b, Point origin, int rows, int cols, bool nested);
+  void make(SurfaceBlock& b, Point origin, int rows, int cols);
 
   int rows_, cols_, blocks_x_, blocks_y_;
   NodePositions positions_;

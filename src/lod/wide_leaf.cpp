@@ -5,7 +5,6 @@
 // splits. Every part passes an exact test in the end, so the verdict is the one a single block
 // holding all of t would give.
 #include <algorithm>
-#include <cmath>
 
 #include "lod/lod_builder.h"
 #include "lod/position_copy.h"
