@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -150,6 +151,52 @@ TEST(NodeBudgets, AreTheSameBitsAtEveryWidth) {
       EXPECT_LT(in_view, n);
     }
   }
+}
+
+// A world box's least budget (camera_budget.h: BoxBudget) is at most the budget of every point in it
+// (5 x 5 x 5 of them, the corners among them), +infinity only when none is in view, and where every
+// corner is in view as large as the least corner's budget: random boxes, from random cameras.
+TEST(BoxBudget, IsTheLeastBudgetOfItsBox) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  int culled = 0, tight = 0;
+  for (int k = 0; k < 400; ++k) {
+    const lod::Camera cam{{100 * u(rng) - 50, 30 * u(rng) - 5, 100 * u(rng) - 50},
+                          {100 * u(rng) - 50, 2 * u(rng) - 1, 100 * u(rng) - 50}, 30 + 80 * u(rng), 1280, 720};
+    const lod::BudgetTerms terms = lod::budget_terms(cam, 1.0, 80.0f);
+    const lod::BoxBudget box_budget(terms);
+    for (int b = 0; b < 20; ++b) {
+      std::array<double, 3> lo, hi;
+      for (int i = 0; i < 3; ++i) {
+        const double a = 100 * u(rng) - 50, w = (i == 1 ? 2 : 20) * u(rng);
+        lo[i] = a, hi[i] = a + w;
+      }
+      std::vector<float> x, y, z;
+      for (int i = 0; i < 125; ++i) {
+        x.push_back(float(lo[0] + (hi[0] - lo[0]) * (i % 5) / 4.0));
+        y.push_back(float(lo[1] + (hi[1] - lo[1]) * (i / 5 % 5) / 4.0));
+        z.push_back(float(lo[2] + (hi[2] - lo[2]) * (i / 25) / 4.0));
+      }
+      std::vector<float> budget(x.size());
+      lod::node_budgets(lod::soa_positions(x.data(), y.data(), z.data(), 5, 25), terms, budget.data());
+      const double least = box_budget.least(lo, hi);
+      bool any_in_view = false, corners_in_view = true;
+      double least_corner = HUGE_VAL;
+      for (int i = 0; i < 125; ++i) {
+        ASSERT_LE(least, double(budget[i]) * (1 + 1e-5)) << "camera " << k << " box " << b << " point " << i;
+        any_in_view = any_in_view || std::isfinite(budget[i]);
+        const bool corner = i % 5 % 4 == 0 && i / 5 % 5 % 4 == 0 && i / 25 % 4 == 0;
+        if (corner) corners_in_view = corners_in_view && std::isfinite(budget[i]), least_corner = std::min(least_corner, double(budget[i]));
+      }
+      if (!any_in_view) culled += std::isinf(least);
+      if (corners_in_view) {
+        EXPECT_GE(least, least_corner * (1 - 1e-3) - 1e-4) << "camera " << k << " box " << b;
+        ++tight;
+      }
+    }
+  }
+  EXPECT_GT(culled, 100);  // boxes out of view are culled, not only given small budgets
+  EXPECT_GT(tight, 100);
 }
 
 // The whole grid's nested bounds (error_bounds.h), as the builder makes them: for every vertex v and

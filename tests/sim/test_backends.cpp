@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "core/cpu_features_mask.h"
 #include "core/errors.h"
 #include "shared/exact_math.h"
 #include "sim/backends.h"
@@ -171,24 +172,7 @@ TEST(Backends, FastMathStaysCloseToExact) {
   EXPECT_LT(worst, 1e-3 * peak);
 }
 
-// POND_CPU_FEATURES_MASK set for one scope (core/cpu_features.h), the previous value restored after.
-class CpuFeaturesMask {
- public:
-  explicit CpuFeaturesMask(const char* mask) {
-    if (const char* old = std::getenv(kName)) old_ = old;
-    ::setenv(kName, mask, 1);
-  }
-  ~CpuFeaturesMask() {
-    if (old_) ::setenv(kName, old_->c_str(), 1);
-    else ::unsetenv(kName);
-  }
-  CpuFeaturesMask(const CpuFeaturesMask&) = delete;
-  CpuFeaturesMask& operator=(const CpuFeaturesMask&) = delete;
-
- private:
-  static constexpr const char* kName = "POND_CPU_FEATURES_MASK";
-  std::optional<std::string> old_;
-};
+using test::CpuFeaturesMask;
 
 std::string forcing_error(Backend b) {
   try {

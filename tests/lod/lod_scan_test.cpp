@@ -1,0 +1,148 @@
+// The exact triangle scan (triangle_scan.h) against a node-by-node check in double, and the
+// builder's meshes the same with the AVX2 node budgets hidden (POND_CPU_FEATURES_MASK) as with them.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/cpu_features_mask.h"
+#include "lod/lod_builder.h"
+#include "lod/rippled_states.h"
+#include "lod/surface_blocks.h"
+#include "lod/tile_ranges.h"
+#include "lod/triangle_scan.h"
+
+namespace pond::lod_test {
+namespace {
+
+// Every triangle of the hierarchy inside the grid, at most `widest` cells across, with the parts
+// the builder scans against it: itself, its two children and its four grandchildren.
+struct Scan {
+  lod::Tri t, region;
+};
+void collect(const lod::GridHierarchy& g, const lod::Tri& t, int widest, std::vector<Scan>& out) {
+  lod::Point m;
+  if (!lod::midpoint(t, m)) return;
+  const lod::CellBox box = lod::box_of(t);
+  if (g.within_grid(t) && box.x1 - box.x0 <= widest && box.y1 - box.y0 <= widest) {
+    out.push_back({t, t});
+    for (const lod::Tri& half : {lod::child_left(t, m), lod::child_right(t, m)}) {
+      out.push_back({t, half});
+      lod::Point c;
+      if (!lod::midpoint(half, c)) continue;
+      out.push_back({t, lod::child_left(half, c)});
+      out.push_back({t, lod::child_right(half, c)});
+    }
+  }
+  collect(g, lod::child_left(t, m), widest, out);
+  collect(g, lod::child_right(t, m), widest, out);
+}
+
+// The verdict node by node in double, from integer barycentric weights; `near` is set when a node
+// lies so close to its budget (1e-9 relative) that two correct computations may differ.
+bool within_in_double(const lod::SurfaceBlock& b, const lod::Tri& t, const lod::Tri& region, bool& near) {
+  const lod::GridHierarchy& g = *b.grid;
+  const lod::Point c[3] = {t.apex, t.left, t.right};
+  const long long det = static_cast<long long>(c[1].x - c[0].x) * (c[2].y - c[0].y) -
+                        static_cast<long long>(c[1].y - c[0].y) * (c[2].x - c[0].x);
+  const lod::CellBox box = lod::box_of(region);
+  const lod::Point r[3] = {region.apex, region.left, region.right};
+  bool within = true;
+  for (int y = box.y0; y <= box.y1; ++y)
+    for (int x = box.x0; x <= box.x1; ++x) {
+      // The weight of the corner opposite edge (e, f), times det.
+      const auto weight = [&](lod::Point e, lod::Point f) {
+        return static_cast<long long>(e.x - x) * (f.y - y) - static_cast<long long>(e.y - y) * (f.x - x);
+      };
+      bool in_region = true;
+      for (int k = 0; k < 3; ++k) {
+        const lod::Point a = r[k], e = r[(k + 1) % 3], f = r[(k + 2) % 3];
+        const long long inner = static_cast<long long>(e.x - x) * (f.y - y) - static_cast<long long>(e.y - y) * (f.x - x);
+        const long long whole = static_cast<long long>(e.x - a.x) * (f.y - a.y) - static_cast<long long>(e.y - a.y) * (f.x - a.x);
+        in_region = in_region && (whole > 0 ? inner >= 0 : inner <= 0);
+      }
+      if (!in_region) continue;
+      double miss2 = 0;
+      const std::uint32_t n = g.id({x, y});
+      for (const std::vector<float>* v : {&b.x, &b.y, &b.z}) {
+        double at = 0;
+        for (int k = 0; k < 3; ++k)
+          at += double(weight(c[(k + 1) % 3], c[(k + 2) % 3])) / double(det) * (*v)[g.id(c[k])];
+        const double d = (*v)[n] - at;
+        miss2 += d * d;
+      }
+      const double budget = b.budget[n];
+      if (std::isfinite(budget) && budget > 0 && std::abs(std::sqrt(miss2) - budget) <= 1e-9 * budget) near = true;
+      within = within && miss2 <= budget * budget;
+    }
+  return within;
+}
+
+// Rain and calm water with a few rings, from above, grazing and inside, at three tolerances: every
+// scan of a part the builder may scan, against the check in double.
+TEST(TriangleScan, VerdictsAreTheExactOnes) {
+  for (const auto& [what, state] : {std::pair<std::string, std::vector<float>>{"rain", simulated_pond(65, 65, 60, 6, 10, 3)},
+                                    {"rings", simulated_pond(65, 65, 4, 1, 30, 5)}}) {
+    const auto p = lod::interleaved_positions(state.data(), 65, 65);
+    const float largest = lod::tile_ranges(p).largest();
+    const lod::Camera views[] = {{{32, 40, -20}, {32, 0, 32}, 60, 1280, 720},
+                                 {{32, 1.5, -10}, {32, 0.3, 40}, 50, 1280, 720},
+                                 {{30, 2, 30}, {60, 0, 40}, 90, 640, 480}};
+    for (const lod::Camera& cam : views)
+      for (double tau : {0.3, 1.0, 3.0}) {
+        lod::SurfaceBlocks blocks(65, 65);
+        blocks.begin(p, lod::budget_terms(cam, tau, largest), largest);
+        const lod::SurfaceBlock& w = blocks.whole();
+        std::vector<Scan> scans;
+        for (const lod::Tri& root : w.grid->roots()) collect(*w.grid, root, 32, scans);
+        int fine = 0, decided = 0;
+        for (const Scan& s : scans) {
+          bool near = false;
+          const bool expected = within_in_double(w, s.t, s.region, near);
+          const bool within = lod::within_budget(*w.grid, w.positions(), w.budget.data(), largest, s.t, s.region, nullptr);
+          if (!near) {
+            ASSERT_EQ(within, expected) << what << " tau " << tau << " apex " << s.t.apex.x << "," << s.t.apex.y
+                                        << " region apex " << s.region.apex.x << "," << s.region.apex.y;
+            ++decided;
+          }
+          fine += within;
+        }
+        // Both verdicts occur, and nearly every scan is decided by the check.
+        EXPECT_GT(fine, 0) << what << " tau " << tau;
+        EXPECT_LT(fine, static_cast<int>(scans.size())) << what << " tau " << tau;
+        EXPECT_GT(decided, static_cast<int>(scans.size()) * 99 / 100);
+      }
+  }
+}
+
+// The builder, frame after frame (blocks first, then the whole grid), draws the same triangles with
+// the node budgets' AVX2 copy as with the SSE2 one.
+TEST(LodBuilder, SameMeshWithTheAvx2BudgetsHidden) {
+  if (!lod::wide_budgets_available()) GTEST_SKIP() << "no AVX2 copy in this build, or no AVX2 on this CPU";
+  const std::vector<float> state = simulated_pond(129, 129, 150, 10, 10, 7);
+  const auto p = lod::interleaved_positions(state.data(), 129, 129);
+  const lod::Camera views[] = {{{64, 30, -15}, {64, 0, 60}, 60, 1280, 720},
+                               {{64, 1.2, -5}, {64, 0.2, 80}, 50, 1280, 720},
+                               {{60, 3, 60}, {100, 0, 70}, 90, 1280, 720}};
+  for (const lod::Camera& cam : views) {
+    lod::LodBuilder wide(129, 129), narrow(129, 129);
+    std::vector<std::uint32_t> a(wide.max_indices()), b(narrow.max_indices());
+    for (int frame = 0; frame < 2; ++frame) {
+      const std::size_t na = wide.build(p, cam, 1.0, a);
+      std::size_t nb = 0;
+      {
+        const test::CpuFeaturesMask mask("avx2");
+        nb = narrow.build(p, cam, 1.0, b);
+      }
+      ASSERT_EQ(na, nb) << "frame " << frame;
+      EXPECT_TRUE(std::equal(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(na), b.begin())) << "frame " << frame;
+      EXPECT_GT(wide.stats().scanned, 0) << "frame " << frame;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pond::lod_test

@@ -1,0 +1,85 @@
+// The builder's position copies (position_copy.h): the largest |coordinate| they return, over every
+// layout, window and lane, against one taken node by node; NaN and infinities are never lost.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "lod/node_positions.h"
+#include "lod/position_copy.h"
+
+namespace pond::lod_test {
+namespace {
+
+constexpr int kRows = 13, kCols = 11;  // rows of 11: two four-node groups and a tail of three
+
+// Coordinates of every size (denormals and -0 among them), the grid's three layouts over one data.
+struct Layouts {
+  std::vector<float> records, x, y, z;
+  explicit Layouts(std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> mantissa(-2, 2);
+    std::uniform_int_distribution<int> exponent(-140, 20);
+    for (int k = 0; k < kRows * kCols; ++k) {
+      float v[3];
+      for (float& c : v) c = k % 17 == 3 ? -0.0f : std::ldexp(mantissa(rng), exponent(rng));
+      x.push_back(v[0]), y.push_back(v[1]), z.push_back(v[2]);
+      records.insert(records.end(), {v[0], v[1], v[2], 9e9f, 9e9f, 9e9f});  // velocities: never read
+    }
+  }
+  std::vector<std::pair<std::string, lod::NodePositions>> views() const {
+    return {{"records", lod::interleaved_positions(records.data(), kRows, kCols)},
+            {"arrays", lod::soa_positions(x.data(), y.data(), z.data(), kRows, kCols)},
+            {"displacements", lod::grid_displacements(x.data(), y.data(), z.data(), kRows, kCols, 0.5f)}};
+  }
+};
+
+std::uint32_t largest_bits(const std::vector<float>& x, const std::vector<float>& y, const std::vector<float>& z) {
+  std::uint32_t largest = 0;
+  for (const std::vector<float>* v : {&x, &y, &z})
+    for (float c : *v) largest = std::max(largest, std::bit_cast<std::uint32_t>(c) & 0x7fffffffu);
+  return largest;
+}
+
+TEST(PositionCopy, LargestIsTheLargestMagnitudeCopied) {
+  for (std::uint32_t seed : {1u, 2u, 3u}) {
+    const Layouts data(seed);
+    for (const auto& [name, p] : data.views())
+      for (auto [row0, col0, rows, cols] : {std::tuple{0, 0, kRows, kCols}, {2, 1, 5, 9}, {4, 3, 9, 5}, {12, 10, 1, 1}}) {
+        std::vector<float> x(static_cast<std::size_t>(rows * cols)), y(x.size()), z(x.size());
+        const float largest = lod::copy_window(p, row0, col0, rows, cols, x.data(), y.data(), z.data());
+        EXPECT_EQ(std::bit_cast<std::uint32_t>(largest), largest_bits(x, y, z)) << name << " window at " << row0 << "," << col0;
+      }
+  }
+}
+
+// A NaN or an infinity in any coordinate, in a four-node group's every lane or in the tail, comes
+// out as a largest that is not finite.
+TEST(PositionCopy, NonFiniteCoordinatesAreNeverLost) {
+  for (float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+                    -std::numeric_limits<float>::infinity()})
+    for (int coordinate = 0; coordinate < 3; ++coordinate)
+      for (int col = 0; col < kCols; ++col) {
+        Layouts data(7);
+        const std::size_t n = static_cast<std::size_t>(5 * kCols + col);
+        (coordinate == 0 ? data.x : coordinate == 1 ? data.y : data.z)[n] = bad;
+        data.records[6 * n + static_cast<std::size_t>(coordinate)] = bad;
+        for (const auto& [name, p] : data.views()) {
+          std::vector<float> x(static_cast<std::size_t>(kRows * kCols)), y(x.size()), z(x.size());
+          const float largest = lod::copy_positions(p, x.data(), y.data(), z.data());
+          EXPECT_FALSE(std::isfinite(largest)) << name << " coordinate " << coordinate << " col " << col << " " << bad;
+          if (std::isinf(bad)) {
+            EXPECT_EQ(largest, std::numeric_limits<float>::infinity()) << name;
+          }
+        }
+      }
+}
+
+}  // namespace
+}  // namespace pond::lod_test
