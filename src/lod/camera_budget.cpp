@@ -71,25 +71,32 @@ BudgetTerms budget_terms(const Camera& c, double tolerance_px, float largest) {
   return t;
 }
 
+BoxBudget::BoxBudget(const BudgetTerms& terms) : t_(terms) {
+  const ViewBasis& b = t_.basis;
+  // n . (p - eye) for n = forward, and the four side planes' normals.
+  const auto plane = [&](const Vec& n) { return Plane{{n[0], n[1], n[2]}, -dot(n, b.eye)}; };
+  depth_ = plane(b.forward);
+  near_depth_ = plane(scale(b.forward, -1));
+  const Vec fx = scale(b.forward, t_.tan_x), fy = scale(b.forward, t_.tan_y);
+  sides_[0] = plane(sub(fx, b.right)), sides_[1] = plane(sub(fx, scale(b.right, -1)));
+  sides_[2] = plane(sub(fy, b.up)), sides_[3] = plane(sub(fy, scale(b.up, -1)));
+  // Far above the double rounding here and the float rounding of node_budgets.
+  margin_ = 4 * t_.delta * (1 + t_.tan_x + t_.tan_y);
+}
+
+double BoxBudget::Plane::largest(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
+  return n[0] * (n[0] > 0 ? hi[0] : lo[0]) + n[1] * (n[1] > 0 ? hi[1] : lo[1]) + n[2] * (n[2] > 0 ? hi[2] : lo[2]) + c;
+}
+
 double BoxBudget::least(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
-  // Depth and screen offsets are linear, so their extremes over the box are at its corners. The box
-  // is outside when every corner is outside one plane (depth > 0, |sx| <= tx depth, |sy| <= ty depth)
-  // by a margin far above the double rounding here and the float rounding of node_budgets.
-  double least_depth = std::numeric_limits<double>::infinity();
-  bool in[5] = {false, false, false, false, false};
-  const double margin = 4 * t_.delta * (1 + t_.tan_x + t_.tan_y);
-  for (int k = 0; k < 8; ++k) {
-    const Vec corner{k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]};
-    const Vec d = sub(corner, t_.basis.eye);
-    const double depth = dot(d, t_.basis.forward), sx = dot(d, t_.basis.right), sy = dot(d, t_.basis.up);
-    least_depth = std::min(least_depth, depth);
-    in[0] |= depth > -margin;
-    in[1] |= t_.tan_x * depth - sx > -margin, in[2] |= t_.tan_x * depth + sx > -margin;
-    in[3] |= t_.tan_y * depth - sy > -margin, in[4] |= t_.tan_y * depth + sy > -margin;
-  }
-  // Looking along +-y the roll is free (view_basis): only the depth plane culls.
-  const bool outside = !in[0] || (!t_.basis.cone && (!in[1] || !in[2] || !in[3] || !in[4]));
+  // The box is outside when it lies wholly outside one plane (depth > 0, |sx| <= tx depth,
+  // |sy| <= ty depth) by the margin. Looking along +-y the roll is free (view_basis): only the
+  // depth plane culls.
+  bool outside = depth_.largest(lo, hi) <= -margin_;
+  if (!t_.basis.cone)
+    for (const Plane& side : sides_) outside = outside || side.largest(lo, hi) <= -margin_;
   if (outside) return std::numeric_limits<double>::infinity();
+  const double least_depth = -near_depth_.largest(lo, hi);
   return t_.per_depth * std::max(least_depth - t_.delta, 0.0);
 }
 

@@ -49,11 +49,20 @@ BudgetTerms budget_terms(const Camera& camera, double tolerance_px, float larges
 // below 0. In double.
 class BoxBudget {
  public:
-  explicit BoxBudget(const BudgetTerms& terms) : t_(terms) {}
+  explicit BoxBudget(const BudgetTerms& terms);
   double least(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const;
 
  private:
+  // A linear function n . p + c of a world point: its extremes over a box lie at the corners the
+  // signs of n pick, so each takes one evaluation rather than eight.
+  struct Plane {
+    double n[3], c;
+    double largest(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const;
+  };
   BudgetTerms t_;
+  Plane depth_, near_depth_;  // depth, and its negation (least depth = -near_depth_'s largest)
+  Plane sides_[4];            // tan_x depth -+ sx and tan_y depth -+ sy: >= 0 inside the frustum
+  double margin_ = 0;
 };
 
 // Writes budget[n] (world units) for every node of `positions` (stride 1). Computed in float
