@@ -15,22 +15,27 @@
 namespace pond::lod {
 namespace {
 
-// The largest magnitude is taken on the bit patterns with the sign cleared: they order like the
-// magnitudes (inf and NaN above every finite value) and, as non-negative int32, compare right
-// with SSE2's signed compare.
+// The largest magnitude is returned as a bit pattern with the sign cleared: those order like the
+// magnitudes, with inf and NaN above every finite value.
 std::uint32_t magnitude_bits(float v) { return std::bit_cast<std::uint32_t>(v) & 0x7fffffffu; }
 
-__m128i max_magnitude_bits(__m128i largest, __m128 v) {
-  const __m128i bits = _mm_and_si128(_mm_castps_si128(v), _mm_set1_epi32(0x7fffffff));
-  const __m128i greater = _mm_cmpgt_epi32(bits, largest);
-  return _mm_or_si128(_mm_and_si128(greater, bits), _mm_andnot_si128(greater, largest));
-}
-
-std::uint32_t largest_of(__m128i largest4) {
-  alignas(16) std::uint32_t lanes[4];
-  _mm_store_si128(reinterpret_cast<__m128i*>(lanes), largest4);
-  return std::max({lanes[0], lanes[1], lanes[2], lanes[3]});
-}
+// The running largest |coordinate| of four-node vectors, in floats: `big` keeps the largest
+// magnitudes (inf included) and `nan` flags a NaN, which maxps alone would drop. Fewer operations
+// than a maximum on the bit patterns, which SSE2 has no instruction for.
+struct LargestMagnitude {
+  __m128 big = _mm_setzero_ps(), nan = _mm_setzero_ps();
+  void add(__m128 x, __m128 y, __m128 z) {
+    const __m128 abs = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
+    big = _mm_max_ps(big, _mm_max_ps(_mm_max_ps(_mm_and_ps(x, abs), _mm_and_ps(y, abs)), _mm_and_ps(z, abs)));
+    nan = _mm_or_ps(nan, _mm_or_ps(_mm_cmpunord_ps(x, y), _mm_cmpunord_ps(z, z)));
+  }
+  std::uint32_t bits() const {
+    if (_mm_movemask_ps(nan) != 0) return 0x7fc00000u;  // a quiet NaN
+    alignas(16) float lanes[4];
+    _mm_store_ps(lanes, big);
+    return magnitude_bits(std::max({lanes[0], lanes[1], lanes[2], lanes[3]}));
+  }
+};
 
 // Displacements in grid units -> world: x = (col + ux) * h, y = uy * h, z = (row + uz) * h, row by
 // row (no division per node), four columns at a time. SSE2 adds and multiplies round like the
@@ -41,7 +46,7 @@ float copy_displacements(const NodePositions& p, int row0, int col0, int rows, i
   const std::size_t first = static_cast<std::size_t>(row0) * pitch + static_cast<std::size_t>(col0);
   const float h = p.grid_spacing;
   const __m128 h4 = _mm_set1_ps(h), step4 = _mm_set1_ps(4.0f);
-  __m128i largest4 = _mm_setzero_si128();
+  LargestMagnitude largest4;
   std::uint32_t largest = 0;
   // Row i's source nodes start at i * pitch, its copies at i * cols.
   const float fc = static_cast<float>(col0);
@@ -58,7 +63,7 @@ float copy_displacements(const NodePositions& p, int row0, int col0, int rows, i
         const __m128 vy = _mm_mul_ps(_mm_loadu_ps(p.y + s), h4);
         const __m128 vz = _mm_mul_ps(_mm_add_ps(fi4, _mm_loadu_ps(p.z + s)), h4);
         _mm_storeu_ps(x + k, vx), _mm_storeu_ps(y + k, vy), _mm_storeu_ps(z + k, vz);
-        largest4 = max_magnitude_bits(max_magnitude_bits(max_magnitude_bits(largest4, vx), vy), vz);
+        largest4.add(vx, vy, vz);
       }
     }
     for (; j < cols; ++j) {
@@ -69,7 +74,7 @@ float copy_displacements(const NodePositions& p, int row0, int col0, int rows, i
       largest = std::max({largest, magnitude_bits(x[k]), magnitude_bits(y[k]), magnitude_bits(z[k])});
     }
   }
-  return std::bit_cast<float>(std::max(largest, largest_of(largest4)));
+  return std::bit_cast<float>(std::max(largest, largest4.bits()));
 }
 
 // Copies n records of `stride` floats (x at px[k * stride], ...) to x[k], y[k], z[k]; returns the
@@ -81,16 +86,16 @@ std::uint32_t copy_records(const float* px, const float* py, const float* pz, st
   if (py == px + 1 && pz == px + 2 && stride >= 4) {
     // Interleaved records (STATE.npy: x, y, z, vx, vy, vz): each record's first four floats are
     // one load, four records are transposed into x, y, z (and an unused fourth) vectors.
-    __m128i largest4 = _mm_setzero_si128();
+    LargestMagnitude largest4;
     for (; k + 4 <= n; k += 4) {
       const float* r = px + k * stride;
       __m128 vx = _mm_loadu_ps(r), vy = _mm_loadu_ps(r + stride);
       __m128 vz = _mm_loadu_ps(r + 2 * stride), unused = _mm_loadu_ps(r + 3 * stride);
       _MM_TRANSPOSE4_PS(vx, vy, vz, unused);
       _mm_storeu_ps(x + k, vx), _mm_storeu_ps(y + k, vy), _mm_storeu_ps(z + k, vz);
-      largest4 = max_magnitude_bits(max_magnitude_bits(max_magnitude_bits(largest4, vx), vy), vz);
+      largest4.add(vx, vy, vz);
     }
-    largest = largest_of(largest4);
+    largest = largest4.bits();
   }
   for (; k < n; ++k) {
     x[k] = px[k * stride], y[k] = py[k * stride], z[k] = pz[k * stride];
