@@ -99,7 +99,7 @@ void BM_WholeGridPass(benchmark::State& st) {
   std::vector<pond::lod::NestedBound> bounds(n, pond::lod::kNothingProved);
   for (auto _ : st) {
     switch (st.range(1)) {
-      case 0: pond::lod::copy_finite_window(p.positions(), 0, 0, side, side, x.data(), y.data(), z.data()); break;
+      case 0: pond::lod::copy_finite_block(p.positions(), 0, 0, side, side, x.data(), y.data(), z.data()); break;
       case 1: pond::lod::node_budgets(own, terms, budget.data()); break;
       default: pond::lod::nested_bounds(grid, own, largest, budget.data(), bounds.data()); break;
     }
@@ -122,7 +122,7 @@ void BM_BlockCopy(benchmark::State& st) {
   std::vector<float> x(kNodes * kNodes + pond::lod::kScanOverread), y(x.size()), z(x.size());
   for (auto _ : st)
     for (auto [bx, by] : at) {
-      pond::lod::copy_window(p.positions(), by * kCells, bx * kCells, kNodes, kNodes, x.data(), y.data(), z.data());
+      pond::lod::copy_finite_block(p.positions(), by * kCells, bx * kCells, kNodes, kNodes, x.data(), y.data(), z.data());
       benchmark::ClobberMemory();
     }
 }

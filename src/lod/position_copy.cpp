@@ -19,35 +19,49 @@ namespace {
 // magnitudes, with inf and NaN above every finite value.
 std::uint32_t magnitude_bits(float v) { return std::bit_cast<std::uint32_t>(v) & 0x7fffffffu; }
 
-// The running largest |coordinate| of four-node vectors, in floats: `big` keeps the largest
-// magnitudes (inf included) and `nan` flags a NaN, which maxps alone would drop. Fewer operations
-// than a maximum on the bit patterns, which SSE2 has no instruction for.
+// What a copy learns of the coordinates on the way, four nodes at a time and then the tail.
+// LargestMagnitude: the largest |coordinate|, in floats: `big` keeps the largest magnitudes (inf
+// included) and `nan` flags a NaN, which maxps alone would drop (fewer operations than a maximum
+// on bit patterns, which SSE2 has no instruction for). Its bits() are those of magnitude_bits.
 struct LargestMagnitude {
   __m128 big = _mm_setzero_ps(), nan = _mm_setzero_ps();
+  std::uint32_t tail = 0;
   void add(__m128 x, __m128 y, __m128 z) {
     const __m128 abs = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
     big = _mm_max_ps(big, _mm_max_ps(_mm_max_ps(_mm_and_ps(x, abs), _mm_and_ps(y, abs)), _mm_and_ps(z, abs)));
     nan = _mm_or_ps(nan, _mm_or_ps(_mm_cmpunord_ps(x, y), _mm_cmpunord_ps(z, z)));
   }
+  void add(float x, float y, float z) { tail = std::max({tail, magnitude_bits(x), magnitude_bits(y), magnitude_bits(z)}); }
   std::uint32_t bits() const {
     if (_mm_movemask_ps(nan) != 0) return 0x7fc00000u;  // a quiet NaN
     alignas(16) float lanes[4];
     _mm_store_ps(lanes, big);
-    return magnitude_bits(std::max({lanes[0], lanes[1], lanes[2], lanes[3]}));
+    return std::max(tail, magnitude_bits(std::max({lanes[0], lanes[1], lanes[2], lanes[3]})));
   }
+};
+
+// MaybeNotFinite: only whether a coordinate might not be finite, for copies that need no largest.
+// (x + y + z) * 0 is NaN when one is inf or NaN (or, harmlessly, when the sum overflows), else
+// +-0; OR-ing the bit patterns keeps a NaN's (all exponent bits, some mantissa bit) and, unlike a
+// sum, makes no long chain of latencies.
+struct MaybeNotFinite {
+  __m128 seen = _mm_setzero_ps();
+  float tail = 0;
+  void add(__m128 x, __m128 y, __m128 z) { seen = _mm_or_ps(seen, _mm_mul_ps(_mm_add_ps(_mm_add_ps(x, y), z), _mm_setzero_ps())); }
+  void add(float x, float y, float z) { tail += (x + y + z) * 0.0f; }
+  bool any() const { return _mm_movemask_ps(_mm_cmpunord_ps(seen, seen)) != 0 || tail != tail; }
 };
 
 // Displacements in grid units -> world: x = (col + ux) * h, y = uy * h, z = (row + uz) * h, row by
 // row (no division per node), four columns at a time. SSE2 adds and multiplies round like the
 // scalar ones, so every node gets the same bits as the scalar tail.
-float copy_displacements(const NodePositions& p, int row0, int col0, int rows, int window_cols, float* x, float* y,
-                         float* z) {
+template <class Tracker>
+void copy_displacements(const NodePositions& p, int row0, int col0, int rows, int window_cols, float* x, float* y,
+                        float* z, Tracker& seen) {
   const std::size_t cols = static_cast<std::size_t>(window_cols), stride = p.stride, pitch = p.row_pitch;
   const std::size_t first = static_cast<std::size_t>(row0) * pitch + static_cast<std::size_t>(col0);
   const float h = p.grid_spacing;
   const __m128 h4 = _mm_set1_ps(h), step4 = _mm_set1_ps(4.0f);
-  LargestMagnitude largest4;
-  std::uint32_t largest = 0;
   // Row i's source nodes start at i * pitch, its copies at i * cols.
   const float fc = static_cast<float>(col0);
   for (std::size_t i = 0, row = 0, src_row = first; i < static_cast<std::size_t>(rows);
@@ -63,7 +77,7 @@ float copy_displacements(const NodePositions& p, int row0, int col0, int rows, i
         const __m128 vy = _mm_mul_ps(_mm_loadu_ps(p.y + s), h4);
         const __m128 vz = _mm_mul_ps(_mm_add_ps(fi4, _mm_loadu_ps(p.z + s)), h4);
         _mm_storeu_ps(x + k, vx), _mm_storeu_ps(y + k, vy), _mm_storeu_ps(z + k, vz);
-        largest4.add(vx, vy, vz);
+        seen.add(vx, vy, vz);
       }
     }
     for (; j < cols; ++j) {
@@ -71,37 +85,58 @@ float copy_displacements(const NodePositions& p, int row0, int col0, int rows, i
       x[k] = (static_cast<float>(static_cast<std::size_t>(col0) + j) + p.x[s]) * h;
       y[k] = p.y[s] * h;
       z[k] = (fi + p.z[s]) * h;
-      largest = std::max({largest, magnitude_bits(x[k]), magnitude_bits(y[k]), magnitude_bits(z[k])});
+      seen.add(x[k], y[k], z[k]);
     }
   }
-  return std::bit_cast<float>(std::max(largest, largest4.bits()));
 }
 
-// Copies n records of `stride` floats (x at px[k * stride], ...) to x[k], y[k], z[k]; returns the
-// largest magnitude's bits.
-std::uint32_t copy_records(const float* px, const float* py, const float* pz, std::size_t stride, std::size_t n,
-                           float* x, float* y, float* z) {
+// Copies n records of `stride` floats (x at px[k * stride], ...) to x[k], y[k], z[k].
+template <class Tracker>
+void copy_records(const float* px, const float* py, const float* pz, std::size_t stride, std::size_t n, float* x,
+                  float* y, float* z, Tracker& seen) {
   std::size_t k = 0;
-  std::uint32_t largest = 0;
   if (py == px + 1 && pz == px + 2 && stride >= 4) {
     // Interleaved records (STATE.npy: x, y, z, vx, vy, vz): each record's first four floats are
     // one load, four records are transposed into x, y, z (and an unused fourth) vectors.
-    LargestMagnitude largest4;
     for (; k + 4 <= n; k += 4) {
       const float* r = px + k * stride;
       __m128 vx = _mm_loadu_ps(r), vy = _mm_loadu_ps(r + stride);
       __m128 vz = _mm_loadu_ps(r + 2 * stride), unused = _mm_loadu_ps(r + 3 * stride);
       _MM_TRANSPOSE4_PS(vx, vy, vz, unused);
       _mm_storeu_ps(x + k, vx), _mm_storeu_ps(y + k, vy), _mm_storeu_ps(z + k, vz);
-      largest4.add(vx, vy, vz);
+      seen.add(vx, vy, vz);
     }
-    largest = largest4.bits();
   }
   for (; k < n; ++k) {
     x[k] = px[k * stride], y[k] = py[k * stride], z[k] = pz[k * stride];
-    largest = std::max({largest, magnitude_bits(x[k]), magnitude_bits(y[k]), magnitude_bits(z[k])});
+    seen.add(x[k], y[k], z[k]);
   }
-  return largest;
+}
+
+template <class Tracker>
+void copy_window_with(const NodePositions& p, int row0, int col0, int rows, int window_cols, float* x, float* y,
+                      float* z, Tracker& seen) {
+  if (p.grid_spacing > 0) return copy_displacements(p, row0, col0, rows, window_cols, x, y, z, seen);
+  const std::size_t cols = static_cast<std::size_t>(window_cols), stride = p.stride;
+  const std::size_t first = static_cast<std::size_t>(row0) * p.row_pitch + static_cast<std::size_t>(col0);
+  // A compact whole view is one run of rows * cols records; otherwise, one run per row.
+  if (p.row_pitch == cols && first == 0 && rows == p.rows && window_cols == p.cols)
+    return copy_records(p.x, p.y, p.z, stride, p.nodes(), x, y, z, seen);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(rows); ++i) {
+    const std::size_t from = (first + i * p.row_pitch) * stride, to = i * cols;
+    copy_records(p.x + from, p.y + from, p.z + from, stride, cols, x + to, y + to, z + to, seen);
+  }
+}
+
+// Throws InputError naming the first node of the copied window with a non-finite coordinate.
+void name_non_finite(const NodePositions& p, int row0, int col0, int rows, int cols, const float* x, const float* y,
+                     const float* z) {
+  for (int k = 0; k < rows * cols; ++k)
+    if (!std::isfinite(x[k]) || !std::isfinite(y[k]) || !std::isfinite(z[k])) {
+      const std::size_t row = static_cast<std::size_t>(row0 + k / cols), col = static_cast<std::size_t>(col0 + k % cols);
+      throw InputError("node " + std::to_string(row * static_cast<std::size_t>(p.cols) + col) + " (row " +
+                       std::to_string(row) + ", col " + std::to_string(col) + ") has a non-finite position");
+    }
 }
 
 }  // namespace
@@ -112,31 +147,22 @@ float copy_positions(const NodePositions& p, float* x, float* y, float* z) {
 
 float copy_window(const NodePositions& p, int row0, int col0, int rows, int window_cols, float* x, float* y,
                   float* z) {
-  if (p.grid_spacing > 0) return copy_displacements(p, row0, col0, rows, window_cols, x, y, z);
-  const std::size_t cols = static_cast<std::size_t>(window_cols), stride = p.stride;
-  const std::size_t first = static_cast<std::size_t>(row0) * p.row_pitch + static_cast<std::size_t>(col0);
-  // A compact whole view is one run of rows * cols records; otherwise, one run per row.
-  if (p.row_pitch == cols && first == 0 && rows == p.rows && window_cols == p.cols)
-    return std::bit_cast<float>(copy_records(p.x, p.y, p.z, stride, p.nodes(), x, y, z));
-  std::uint32_t largest = 0;
-  for (std::size_t i = 0; i < static_cast<std::size_t>(rows); ++i) {
-    const std::size_t from = (first + i * p.row_pitch) * stride, to = i * cols;
-    largest = std::max(largest, copy_records(p.x + from, p.y + from, p.z + from, stride, cols, x + to, y + to, z + to));
-  }
-  return std::bit_cast<float>(largest);
+  LargestMagnitude seen;
+  copy_window_with(p, row0, col0, rows, window_cols, x, y, z, seen);
+  return std::bit_cast<float>(seen.bits());
 }
 
 float copy_finite_window(const NodePositions& p, int row0, int col0, int rows, int cols, float* x, float* y,
                          float* z) {
   const float largest = copy_window(p, row0, col0, rows, cols, x, y, z);
-  if (largest <= std::numeric_limits<float>::max()) return largest;  // false for inf and NaN
-  for (int k = 0; k < rows * cols; ++k)
-    if (!std::isfinite(x[k]) || !std::isfinite(y[k]) || !std::isfinite(z[k])) {
-      const std::size_t row = static_cast<std::size_t>(row0 + k / cols), col = static_cast<std::size_t>(col0 + k % cols);
-      throw InputError("node " + std::to_string(row * static_cast<std::size_t>(p.cols) + col) + " (row " +
-                       std::to_string(row) + ", col " + std::to_string(col) + ") has a non-finite position");
-    }
+  if (!(largest <= std::numeric_limits<float>::max())) name_non_finite(p, row0, col0, rows, cols, x, y, z);  // inf, NaN
   return largest;
+}
+
+void copy_finite_block(const NodePositions& p, int row0, int col0, int rows, int cols, float* x, float* y, float* z) {
+  MaybeNotFinite seen;
+  copy_window_with(p, row0, col0, rows, cols, x, y, z, seen);
+  if (seen.any()) name_non_finite(p, row0, col0, rows, cols, x, y, z);
 }
 
 std::array<float, 3> world_position(const NodePositions& p, int row, int col) {

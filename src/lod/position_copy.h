@@ -25,6 +25,10 @@ float copy_window(const NodePositions& positions, int row0, int col0, int rows, 
 float copy_finite_window(const NodePositions& positions, int row0, int col0, int rows, int cols, float* x, float* y,
                          float* z);
 
+// copy_finite_window() without the largest: only the check, which costs less (the builder's blocks).
+void copy_finite_block(const NodePositions& positions, int row0, int col0, int rows, int cols, float* x, float* y,
+                       float* z);
+
 // Node (row, col)'s world position, as the copies compute it.
 std::array<float, 3> world_position(const NodePositions& positions, int row, int col);
 

@@ -1,5 +1,6 @@
 // The builder's position copies (position_copy.h): the largest |coordinate| they return, over every
-// layout, window and lane, against one taken node by node; NaN and infinities are never lost.
+// layout, window and lane, against one taken node by node; NaN and infinities are never lost, and
+// the blocks' copy refuses them by name but takes coordinates whose sum overflows.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.h"
 #include "lod/node_positions.h"
 #include "lod/position_copy.h"
 
@@ -79,6 +81,34 @@ TEST(PositionCopy, NonFiniteCoordinatesAreNeverLost) {
           }
         }
       }
+}
+
+TEST(PositionCopy, BlocksRefuseNonFiniteCoordinatesByName) {
+  for (float bad : {std::numeric_limits<float>::quiet_NaN(), -std::numeric_limits<float>::infinity()})
+    for (int coordinate = 0; coordinate < 3; ++coordinate)
+      for (int col = 1; col < kCols; ++col) {
+        Layouts data(9);
+        const std::size_t n = static_cast<std::size_t>(6 * kCols + col);
+        (coordinate == 0 ? data.x : coordinate == 1 ? data.y : data.z)[n] = bad;
+        data.records[6 * n + static_cast<std::size_t>(coordinate)] = bad;
+        for (const auto& [name, p] : data.views()) {
+          std::vector<float> x(static_cast<std::size_t>(kRows * kCols)), y(x.size()), z(x.size());
+          const std::string where = "node " + std::to_string(n) + " (row 6, col " + std::to_string(col) + ")";
+          try {
+            lod::copy_finite_block(p, 4, std::min(col - 1, kCols - 5), 5, 5, x.data(), y.data(), z.data());
+            ADD_FAILURE() << name << ": " << where << " not refused";
+          } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << name << ": " << e.what();
+          }
+          EXPECT_NO_THROW(lod::copy_finite_block(p, 0, 0, 5, kCols, x.data(), y.data(), z.data())) << name;  // rows 0-4
+        }
+      }
+  // Finite coordinates near the largest float: their sum overflows, and they are still taken.
+  std::vector<float> big(kRows * kCols, 3e38f);
+  std::vector<float> x(static_cast<std::size_t>(kRows * kCols)), y(x.size()), z(x.size());
+  EXPECT_NO_THROW(lod::copy_finite_block(lod::soa_positions(big.data(), big.data(), big.data(), kRows, kCols), 0, 0,
+                                         kRows, kCols, x.data(), y.data(), z.data()));
+  EXPECT_EQ(x[kRows * kCols - 1], 3e38f);
 }
 
 }  // namespace
