@@ -13,6 +13,7 @@ namespace pond::lod {
 namespace {
 
 using Vec = std::array<double, 3>;
+Vec add(const Vec& a, const Vec& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 Vec sub(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 Vec cross(const Vec& a, const Vec& b) {
@@ -76,16 +77,19 @@ BoxBudget::BoxBudget(const BudgetTerms& terms) : t_(terms) {
   // n . (p - eye) for n = forward, and the four side planes' normals.
   const auto plane = [&](const Vec& n) { return Plane{{n[0], n[1], n[2]}, -dot(n, b.eye)}; };
   depth_ = plane(b.forward);
-  near_depth_ = plane(scale(b.forward, -1));
   const Vec fx = scale(b.forward, t_.tan_x), fy = scale(b.forward, t_.tan_y);
-  sides_[0] = plane(sub(fx, b.right)), sides_[1] = plane(sub(fx, scale(b.right, -1)));
-  sides_[2] = plane(sub(fy, b.up)), sides_[3] = plane(sub(fy, scale(b.up, -1)));
+  sides_[0] = plane(sub(fx, b.right)), sides_[1] = plane(add(fx, b.right));
+  sides_[2] = plane(sub(fy, b.up)), sides_[3] = plane(add(fy, b.up));
   // Far above the double rounding here and the float rounding of node_budgets.
   margin_ = 4 * t_.delta * (1 + t_.tan_x + t_.tan_y);
 }
 
 double BoxBudget::Plane::largest(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
   return n[0] * (n[0] > 0 ? hi[0] : lo[0]) + n[1] * (n[1] > 0 ? hi[1] : lo[1]) + n[2] * (n[2] > 0 ? hi[2] : lo[2]) + c;
+}
+
+double BoxBudget::Plane::smallest(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
+  return largest(hi, lo);  // the corner of the other signs
 }
 
 double BoxBudget::least(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
@@ -96,7 +100,7 @@ double BoxBudget::least(const std::array<double, 3>& lo, const std::array<double
   if (!t_.basis.cone)
     for (const Plane& side : sides_) outside = outside || side.largest(lo, hi) <= -margin_;
   if (outside) return std::numeric_limits<double>::infinity();
-  const double least_depth = -near_depth_.largest(lo, hi);
+  const double least_depth = depth_.smallest(lo, hi);
   return t_.per_depth * std::max(least_depth - t_.delta, 0.0);
 }
 

@@ -58,10 +58,11 @@ class BoxBudget {
   struct Plane {
     double n[3], c;
     double largest(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const;
+    double smallest(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const;
   };
   BudgetTerms t_;
-  Plane depth_, near_depth_;  // depth, and its negation (least depth = -near_depth_'s largest)
-  Plane sides_[4];            // tan_x depth -+ sx and tan_y depth -+ sy: >= 0 inside the frustum
+  Plane depth_;
+  Plane sides_[4];  // tan_x depth -+ sx and tan_y depth -+ sy: >= 0 inside the frustum
   double margin_ = 0;
 };
 

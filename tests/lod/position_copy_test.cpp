@@ -35,6 +35,11 @@ struct Layouts {
       records.insert(records.end(), {v[0], v[1], v[2], 9e9f, 9e9f, 9e9f});  // velocities: never read
     }
   }
+  // Coordinate `c` (0: x, 1: y, 2: z) of node n, in every layout.
+  void set(std::size_t n, int c, float v) {
+    (c == 0 ? x : c == 1 ? y : z)[n] = v;
+    records[6 * n + static_cast<std::size_t>(c)] = v;
+  }
   std::vector<std::pair<std::string, lod::NodePositions>> views() const {
     return {{"records", lod::interleaved_positions(records.data(), kRows, kCols)},
             {"arrays", lod::soa_positions(x.data(), y.data(), z.data(), kRows, kCols)},
@@ -70,8 +75,7 @@ TEST(PositionCopy, NonFiniteCoordinatesAreNeverLost) {
       for (int col = 0; col < kCols; ++col) {
         Layouts data(7);
         const std::size_t n = static_cast<std::size_t>(5 * kCols + col);
-        (coordinate == 0 ? data.x : coordinate == 1 ? data.y : data.z)[n] = bad;
-        data.records[6 * n + static_cast<std::size_t>(coordinate)] = bad;
+        data.set(n, coordinate, bad);
         for (const auto& [name, p] : data.views()) {
           std::vector<float> x(static_cast<std::size_t>(kRows * kCols)), y(x.size()), z(x.size());
           const float largest = lod::copy_positions(p, x.data(), y.data(), z.data());
@@ -89,8 +93,7 @@ TEST(PositionCopy, BlocksRefuseNonFiniteCoordinatesByName) {
       for (int col = 1; col < kCols; ++col) {
         Layouts data(9);
         const std::size_t n = static_cast<std::size_t>(6 * kCols + col);
-        (coordinate == 0 ? data.x : coordinate == 1 ? data.y : data.z)[n] = bad;
-        data.records[6 * n + static_cast<std::size_t>(coordinate)] = bad;
+        data.set(n, coordinate, bad);
         for (const auto& [name, p] : data.views()) {
           std::vector<float> x(static_cast<std::size_t>(kRows * kCols)), y(x.size()), z(x.size());
           const std::string where = "node " + std::to_string(n) + " (row 6, col " + std::to_string(col) + ")";
