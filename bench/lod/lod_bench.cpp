@@ -36,6 +36,22 @@ struct Pond {
     return *ranges_;
   }
   mutable std::optional<pond::lod::TileRanges> ranges_{};
+  // The same nodes as a running CPU solver hands them to the renderer (water_source.cpp): three
+  // arrays of displacements from the rest grid (spacing 1), in grid units. col + (x - col) is x
+  // again exactly, so the builder sees the same world positions.
+  pond::lod::NodePositions solver_positions() const {
+    if (ux_.empty()) {
+      const std::size_t n = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
+      ux_.resize(n), uy_.resize(n), uz_.resize(n);
+      for (std::size_t k = 0; k < n; ++k) {
+        ux_[k] = state[6 * k] - static_cast<float>(k % static_cast<std::size_t>(side));
+        uy_[k] = state[6 * k + 1];
+        uz_[k] = state[6 * k + 2] - static_cast<float>(k / static_cast<std::size_t>(side));
+      }
+    }
+    return pond::lod::grid_displacements(ux_.data(), uy_.data(), uz_.data(), side, side, 1.0f);
+  }
+  mutable std::vector<float> ux_{}, uy_{}, uz_{};
 };
 
 const Pond& drops_everywhere(int side, double amplitude) {
@@ -128,28 +144,41 @@ void BM_BlockCopy(benchmark::State& st) {
 }
 BENCHMARK(BM_BlockCopy)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
-// Build time per frame (the surface is the same each iteration; the builder redoes everything).
-void BM_BuildRain(benchmark::State& st) {
-  const int side = static_cast<int>(st.range(0));
-  const Pond& p = rain(side);
-  pond::lod::LodBuilder b(side, side);
+// Build time per frame (the surface is the same each iteration; the builder redoes everything),
+// from `positions` of the rain pond.
+void time_builds(benchmark::State& st, pond::lod::LodBuilder& b, const pond::lod::NodePositions& positions,
+                        const Pond& p) {
+  const int side = p.side;
   std::vector<std::uint32_t> out(b.max_indices());
-  const auto view_positions = p.positions();
-  const pond::lod::TileRanges& ranges = p.ranges();
   std::size_t n = 0;
   for (auto _ : st) {
-    n = b.build(view_positions, ranges, lod_camera(view(side)), 1.0, out);
+    n = b.build(positions, p.ranges(), lod_camera(view(side)), 1.0, out);
     benchmark::DoNotOptimize(out.data());
   }
   report_counts(st, n / 3, side);
+  st.counters["blocks"] = static_cast<double>(b.stats().blocks);
+}
+
+void BM_BuildRain(benchmark::State& st) {
+  const Pond& p = rain(static_cast<int>(st.range(0)));
+  pond::lod::LodBuilder b(p.side, p.side);
+  time_builds(st, b, p.positions(), p);
   st.counters["tested_tris"] = static_cast<double>(b.stats().tested);
   st.counters["ranged_tris"] = static_cast<double>(b.stats().ranged);
-  st.counters["blocks"] = static_cast<double>(b.stats().blocks);
   st.counters["scanned_tris"] = static_cast<double>(b.stats().scanned);
   st.counters["proved_tris"] = static_cast<double>(b.stats().proved);
   st.counters["scan_nodes"] = static_cast<double>(b.stats().scanned_nodes);
 }
 BENCHMARK(BM_BuildRain)->Arg(50)->Arg(257)->Arg(1025)->Arg(2049)->Arg(4097)->Unit(benchmark::kMillisecond);
+
+// BM_BuildRain's frames in the layout the live frame reads with a CPU solver (Pond::solver_positions):
+// the same meshes, with the copies reading three arrays of displacements instead of interleaved records.
+void BM_BuildRainSolverLayout(benchmark::State& st) {
+  const Pond& p = rain(static_cast<int>(st.range(0)));
+  pond::lod::LodBuilder b(p.side, p.side);
+  time_builds(st, b, p.solver_positions(), p);
+}
+BENCHMARK(BM_BuildRainSolverLayout)->Arg(257)->Arg(1025)->Arg(2049)->Arg(4097)->Unit(benchmark::kMillisecond);
 
 // Frame-to-frame coherence, measured for a design not built yet: how many of one frame's leaves in
 // view would pass again one step later, proved from what they missed by then plus twice the most
