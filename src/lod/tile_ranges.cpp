@@ -5,6 +5,8 @@
 #include <limits>
 #include <string>
 
+#include <emmintrin.h>  // SSE2: a node's four tiles, three bounds at a time
+
 #include "core/errors.h"
 #include "lod/position_copy.h"
 
@@ -57,16 +59,25 @@ TileRect TileRanges::tiles_of(int x0, int x1, int y0, int y1) const {
 }
 
 TileBounds TileRanges::at_node(int x, int y) const {
-  const auto first = [](int k, int tiles) { return std::clamp((k - 1) / kTileCells, 0, tiles - 1); };
-  const auto last = [](int k, int tiles) { return std::min(k / kTileCells, tiles - 1); };
-  TileBounds r{-kInf, -kInf, -kInf, kInf, kInf, kInf};
-  for (int b = first(y, tiles_y_); b <= last(y, tiles_y_); ++b)
-    for (int a = first(x, tiles_x_); a <= last(x, tiles_x_); ++a) {
-      const TileBounds& t = levels_[0][static_cast<std::size_t>(b) * static_cast<std::size_t>(tiles_x_) + static_cast<std::size_t>(a)];
-      r = {std::max(r.min_x, t.min_x), std::max(r.min_y, t.min_y), std::max(r.min_z, t.min_z),
-           std::min(r.max_x, t.max_x), std::min(r.max_y, t.max_y), std::min(r.max_z, t.max_z)};
-    }
-  return r;
+  // The tiles holding the node: one, two (on a tile border) or four (at a tile corner). Taking the
+  // four (a0, b0), (a1, b0), (a0, b1), (a1, b1), with a0 = a1 off a column border and b0 = b1 off a
+  // row border, counts some tile twice, which an intersection does not mind: no branches.
+  const int a0 = std::clamp((x - 1) / kTileCells, 0, tiles_x_ - 1), a1 = std::min(x / kTileCells, tiles_x_ - 1);
+  const int b0 = std::clamp((y - 1) / kTileCells, 0, tiles_y_ - 1), b1 = std::min(y / kTileCells, tiles_y_ - 1);
+  const auto tile = [&](int a, int b) {
+    return reinterpret_cast<const float*>(&levels_[0][static_cast<std::size_t>(b) * static_cast<std::size_t>(tiles_x_) +
+                                                      static_cast<std::size_t>(a)]);
+  };
+  // A tile as two overlapping vectors, (min x, min y, min z, max x) and (min z, max x, max y, max z):
+  // the greatest of the first's lanes 0-2 and the least of the second's lanes 1-3 are the bounds.
+  __m128 least = _mm_loadu_ps(tile(a0, b0)), greatest = _mm_loadu_ps(tile(a0, b0) + 2);
+  for (const float* t : {tile(a1, b0), tile(a0, b1), tile(a1, b1)}) {
+    least = _mm_max_ps(least, _mm_loadu_ps(t));
+    greatest = _mm_min_ps(greatest, _mm_loadu_ps(t + 2));
+  }
+  alignas(16) float lo[4], hi[4];
+  _mm_store_ps(lo, least), _mm_store_ps(hi, greatest);
+  return {lo[0], lo[1], lo[2], hi[1], hi[2], hi[3]};
 }
 
 int TileRanges::level_for(const TileRect& r) const {

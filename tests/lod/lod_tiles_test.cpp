@@ -95,6 +95,39 @@ TEST(TileRanges, RejectNonFiniteInput) {
   EXPECT_THROW(lod::tile_ranges(bounds, 40, 40, 1.0f), InternalError);  // 9 tiles, not 4
 }
 
+// A node's range is the intersection of the tiles holding it (one, two or four), on grids whose
+// last tiles are narrower, with random bounds.
+TEST(TileRanges, AtNodeIsTheIntersectionOfItsTiles) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-3, 3);
+  for (auto [rows, cols] : {std::pair{2, 2}, {17, 17}, {18, 40}, {65, 65}, {100, 37}}) {
+    const int tx = static_cast<int>(shared::tiles_along(static_cast<shared::uint>(cols)));
+    const int ty = static_cast<int>(shared::tiles_along(static_cast<shared::uint>(rows)));
+    std::vector<lod::TileBounds> tiles(static_cast<std::size_t>(tx) * static_cast<std::size_t>(ty));
+    for (lod::TileBounds& t : tiles) {
+      const auto [x0, x1] = std::minmax({u(rng), u(rng)});  // the list's form: values, not references
+      const auto [y0, y1] = std::minmax({u(rng), u(rng)});
+      const auto [z0, z1] = std::minmax({u(rng), u(rng)});
+      t = {x0, y0, z0, x1, y1, z1};
+    }
+    const lod::TileRanges r(rows, cols, 1.0, tiles, 1000.0f);
+    int mismatches = 0;
+    for (int y = 0; y < rows; ++y)
+      for (int x = 0; x < cols; ++x) {
+        std::array<float, 6> want{-INFINITY, -INFINITY, -INFINITY, INFINITY, INFINITY, INFINITY};
+        for (int b = std::max(0, (y - 1) / lod::kTileCells); b <= std::min(y / lod::kTileCells, ty - 1); ++b)
+          for (int a = std::max(0, (x - 1) / lod::kTileCells); a <= std::min(x / lod::kTileCells, tx - 1); ++a) {
+            const lod::TileBounds& t = tiles[static_cast<std::size_t>(b) * static_cast<std::size_t>(tx) + static_cast<std::size_t>(a)];
+            const std::array<float, 6> v{t.min_x, t.min_y, t.min_z, t.max_x, t.max_y, t.max_z};
+            for (std::size_t k = 0; k < 6; ++k) want[k] = k < 3 ? std::max(want[k], v[k]) : std::min(want[k], v[k]);
+          }
+        const lod::TileBounds got = r.at_node(x, y);
+        mismatches += std::array<float, 6>{got.min_x, got.min_y, got.min_z, got.max_x, got.max_y, got.max_z} != want;
+      }
+    EXPECT_EQ(mismatches, 0) << rows << "x" << cols;
+  }
+}
+
 // The deviation of node n from t's interpolation (world units), n inside t (weights exact).
 double miss(const lod::SurfaceBlock& b, const lod::Tri& t, lod::Point n) {
   const lod::Point a = t.apex, l = t.left, r = t.right;
