@@ -75,7 +75,9 @@ BudgetTerms budget_terms(const Camera& c, double tolerance_px, float largest) {
 BoxBudget::BoxBudget(const BudgetTerms& terms) : t_(terms) {
   const ViewBasis& b = t_.basis;
   // n . (p - eye) for n = forward, and the four side planes' normals.
-  const auto plane = [&](const Vec& n) { return Plane{{n[0], n[1], n[2]}, -dot(n, b.eye)}; };
+  const auto plane = [&](const Vec& n) {
+    return Plane{{n[0], n[1], n[2]}, -dot(n, b.eye), {n[0] > 0, n[1] > 0, n[2] > 0}};
+  };
   depth_ = plane(b.forward);
   const Vec fx = scale(b.forward, t_.tan_x), fy = scale(b.forward, t_.tan_y);
   sides_[0] = plane(sub(fx, b.right)), sides_[1] = plane(add(fx, b.right));
@@ -85,7 +87,8 @@ BoxBudget::BoxBudget(const BudgetTerms& terms) : t_(terms) {
 }
 
 double BoxBudget::Plane::largest(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
-  return n[0] * (n[0] > 0 ? hi[0] : lo[0]) + n[1] * (n[1] > 0 ? hi[1] : lo[1]) + n[2] * (n[2] > 0 ? hi[2] : lo[2]) + c;
+  const double* corner[2] = {lo.data(), hi.data()};
+  return n[0] * corner[upper[0]][0] + n[1] * corner[upper[1]][1] + n[2] * corner[upper[2]][2] + c;
 }
 
 double BoxBudget::Plane::smallest(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {

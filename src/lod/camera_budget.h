@@ -54,9 +54,11 @@ class BoxBudget {
 
  private:
   // A linear function n . p + c of a world point: its extremes over a box lie at the corners the
-  // signs of n pick, so each takes one evaluation rather than eight.
+  // signs of n pick, so each takes one evaluation rather than eight. `upper[i]`: n[i] > 0, the
+  // coordinate the largest takes from the box's upper corner (an index, not a branch).
   struct Plane {
     double n[3], c;
+    int upper[3];
     double largest(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const;
     double smallest(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const;
   };
