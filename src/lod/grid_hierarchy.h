@@ -18,12 +18,15 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace pond::lod {
 
 struct Point {
-  int x = 0, y = 0;  // column, row
+  // Column, row. Not initialized by default: the builder makes a GridPolygon (eight points) for
+  // every triangle it tests, and zeroing them showed in its instruction counts.
+  int x, y;
   friend bool operator==(Point, Point) = default;
 };
 
@@ -101,14 +104,9 @@ class GridHierarchy {
 struct GridPolygon {
   Point corner[8];
   int count = 0;
+  std::span<const Point> corners() const { return {corner, static_cast<std::size_t>(count)}; }
 };
 GridPolygon clip_to_grid(const Tri& t, int rows, int cols);
-// t's corners as a polygon (t inside the grid).
-inline GridPolygon polygon_of(const Tri& t) {
-  GridPolygon p;
-  p.corner[0] = t.apex, p.corner[1] = t.left, p.corner[2] = t.right, p.count = 3;
-  return p;
-}
 
 // The hypotenuse midpoint of t; false when the hypotenuse is a cell diagonal (no node there).
 inline bool midpoint(const Tri& t, Point& m) {

@@ -59,7 +59,8 @@ LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
   // the same outcome, so the mesh does not depend on which blocks were made or brought before.
   // The block first where it is made already (sharper, and its nodes are at hand), else the ranges.
   const auto ranged = [&] {
-    const GridPolygon corners = inside ? polygon_of(t) : clipped;
+    const Point own[3] = {t.apex, t.left, t.right};
+    const std::span<const Point> corners = inside ? std::span<const Point>(own) : clipped.corners();
     const bool fine = RangeProof(*ranges_, *box_budget_).proves(x0, std::min(x1, cols() - 1), y0, std::min(y1, rows() - 1), corners);
     stats_.ranged += fine;
     if (fine) note_corners(corners);
@@ -162,7 +163,7 @@ bool LodBuilder::leaf_is_fine(const SurfaceBlock& blk, const Tri& t, Point mid_p
     else if (!proved[0]) unproved[parts++] = quarter[0];
     else if (!proved[1]) unproved[parts++] = quarter[1];
   };
-  Point m;
+  Point m{};
   midpoint(t, m);
   try_half(child_left(t, m), left2);
   try_half(child_right(t, m), right2);
@@ -348,9 +349,9 @@ bool LodBuilder::in_a_block(int row, int col, bool or_queued) {
 }
 
 // With NodePositions::fetch: a leaf accepted on the ranges; its corners are read at the end.
-void LodBuilder::note_corners(const GridPolygon& corners) {
+void LodBuilder::note_corners(std::span<const Point> corners) {
   if (!positions_.fetch) return;
-  for (int k = 0; k < corners.count; ++k) ranged_corners_.push_back(grid_.id(corners.corner[k]));
+  for (const Point& p : corners) ranged_corners_.push_back(grid_.id(p));
 }
 
 // The blocks holding a triangle of `triangles` small enough to lie in one (those the block path

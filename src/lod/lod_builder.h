@@ -96,7 +96,7 @@ class LodBuilder {
   void refine();
   void read_corners(std::span<const std::uint32_t> triangles);
   bool in_a_block(int row, int col, bool or_queued);
-  void note_corners(const GridPolygon& corners);
+  void note_corners(std::span<const Point> corners);
   bool leaf_is_fine(const SurfaceBlock& b, const Tri& t, Point m);
   bool clipped_leaf_is_fine(const SurfaceBlock& b, const GridPolygon& polygon);
   void activate(Point v);

@@ -13,11 +13,11 @@ constexpr int kMostChecks = 48;
 
 }  // namespace
 
-bool RangeProof::proves(int x0, int x1, int y0, int y1, const GridPolygon& corners) const {
+bool RangeProof::proves(int x0, int x1, int y0, int y1, std::span<const Point> corners) const {
   Band band{{0, 0, 0}, {0, 0, 0}, x0, x1, y0, y1};
   for (int i = 0; i < 3; ++i) band.least[i] = HUGE_VAL, band.greatest[i] = -HUGE_VAL;
-  for (int k = 0; k < corners.count; ++k) {
-    const TileBounds c = ranges_.at_node(corners.corner[k].x, corners.corner[k].y);
+  for (const Point& corner : corners) {
+    const TileBounds c = ranges_.at_node(corner.x, corner.y);
     const double lo[3] = {c.min_x, c.min_y, c.min_z}, hi[3] = {c.max_x, c.max_y, c.max_z};
     for (int i = 0; i < 3; ++i) band.least[i] = std::min(band.least[i], lo[i]), band.greatest[i] = std::max(band.greatest[i], hi[i]);
   }

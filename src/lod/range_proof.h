@@ -7,6 +7,8 @@
 // greatest - lo. Each cell of the range pyramid is held against the least budget of its own world
 // box (camera_budget.h); a cell that fails is tried by its four quarters, down to single tiles, so
 // a long triangle is not judged by its nearest node's budget and its farthest wave at once.
+#include <span>
+
 #include "lod/camera_budget.h"
 #include "lod/grid_hierarchy.h"
 #include "lod/tile_ranges.h"
@@ -19,7 +21,7 @@ class RangeProof {
 
   // Are the nodes of columns [x0, x1] and rows [y0, y1] (inside the grid) within budget of the
   // piecewise-linear interpolation between `corners` (grid nodes of that rectangle)?
-  bool proves(int x0, int x1, int y0, int y1, const GridPolygon& corners) const;
+  bool proves(int x0, int x1, int y0, int y1, std::span<const Point> corners) const;
 
  private:
   struct Band {

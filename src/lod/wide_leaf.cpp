@@ -46,7 +46,7 @@ LodBuilder::Fit LodBuilder::wide_leaf_fits(const Tri& t, Point m) {
   // Parts the tile ranges prove against t's interpolation need no nodes (t as a whole failed them).
   // If one is left, every part's block must be on the host (t's corners and splits are in them),
   // all asked for at once; only the others' blocks are made.
-  const GridPolygon polygon = polygon_of(t);
+  const Point polygon[3] = {t.apex, t.left, t.right};
   const RangeProof range_proof(*ranges_, *box_budget_);
   bool ranged[4], all_ranged = true, held = true;
   for (int k = 0; k < n; ++k) {
