@@ -1,7 +1,10 @@
 #include "lod/triangle_scan.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdlib>
 #include <limits>
+#include <vector>
 
 #include <emmintrin.h>  // SSE2: the row scan, four nodes at a time
 
@@ -39,6 +42,36 @@ class RowSpans {
   };
   Line left_[2], right_[2];
 };
+
+// A small triangle's rows relative to its apex, which depend on its legs only: the first column
+// and length of each (RowSpans') and the weights of its first node, made once per shape. The
+// builder's blocks hold triangles of a few sizes in eight orientations, so a row of a block's
+// scan reads its set-up instead of working it out.
+struct ShapeRow {
+  int dy, dx0, len;
+  float u0, w0;
+};
+constexpr int kTabledLeg = 16;  // legs up to this many cells (a block's triangles)
+
+const std::vector<ShapeRow>* shape_rows(int lx, int ly, int rx, int ry, float inv_len2) {
+  const int size = std::max(std::abs(lx), std::abs(ly));
+  if (size > kTabledLeg) return nullptr;
+  const auto sign = [](int v) { return v > 0 ? 2 : v < 0 ? 0 : 1; };
+  const int level = std::countr_zero(static_cast<unsigned>(size));  // legs are (2^k, 0) or (2^k, 2^k) turned
+  const std::size_t key = static_cast<std::size_t>(((level * 3 + sign(lx)) * 3 + sign(ly)) * 9 + sign(rx) * 3 + sign(ry));
+  thread_local std::vector<std::vector<ShapeRow>> shapes(5 * 81);
+  std::vector<ShapeRow>& rows = shapes[key];
+  if (rows.empty()) {
+    const Tri t{{0, 0}, {lx, ly}, {rx, ry}};
+    const RowSpans spans(t);
+    for (int y = std::min({0, ly, ry}); y <= std::max({0, ly, ry}); ++y) {
+      const int x0 = spans.first(y);
+      rows.push_back({y, x0, spans.last(y) - x0 + 1, static_cast<float>(x0 * lx + y * ly) * inv_len2,
+                      static_cast<float>(x0 * rx + y * ry) * inv_len2});
+    }
+  }
+  return &rows;
+}
 
 // A triangle's interpolation for the row scan, as SSE2 vectors built once per triangle: the apex
 // and the legs in world space, the weights' steps per column, and the budgets' rounding slack.
@@ -162,19 +195,30 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
   long long count = 0;
   bool ok = true;
   bool undecided = false;
-  const RowSpans spans(region);
-  for (int y = y0; y <= y1 && ok; ++y) {
-    const int x0 = spans.first(y), len = spans.last(y) - x0 + 1;
-    const long long dx = x0 - t.apex.x, dy = y - t.apex.y;
-    // Weights along the row are linear in x; the row is tested whole (no early exit inside, it
-    // goes four nodes at a time) and the scan stops after the first row with a node over budget.
-    const float u0 = static_cast<float>(dx * lx + dy * ly) * inv_len2;
-    const float w0 = static_cast<float>(dx * rx + dy * ry) * inv_len2;
-    const std::size_t base = static_cast<std::size_t>(y) * cols + static_cast<std::size_t>(x0);
+  // A triangle scanned whole and small enough has its rows in a table; otherwise they are found.
+  const std::vector<ShapeRow>* tabled =
+      region.apex == t.apex && region.left == t.left && region.right == t.right ? shape_rows(lx, ly, rx, ry, inv_len2) : nullptr;
+  // Each row is tested whole (no early exit inside, it goes four nodes at a time) and the scan
+  // stops after the first row with a node over budget.
+  const auto row = [&](std::ptrdiff_t base, int len, float u0, float w0) {
     const RowVerdict v = scan_row(p.x + base, p.y + base, p.z + base, budget + base, len, u0, w0, plane);
     count += len;
     ok = !v.over;
     undecided |= v.close;
+  };
+  const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(cols);
+  if (tabled) {
+    const std::ptrdiff_t apex = t.apex.y * pitch + t.apex.x;
+    for (auto r = tabled->begin(); r != tabled->end() && ok; ++r) row(apex + r->dy * pitch + r->dx0, r->len, r->u0, r->w0);
+  } else {
+    const RowSpans spans(region);
+    for (int y = y0; y <= y1 && ok; ++y) {
+      // Weights along the row are linear in x.
+      const int x0 = spans.first(y);
+      const long long dx = x0 - t.apex.x, dy = y - t.apex.y;
+      row(y * pitch + x0, spans.last(y) - x0 + 1, static_cast<float>(dx * lx + dy * ly) * inv_len2,
+          static_cast<float>(dx * rx + dy * ry) * inv_len2);
+    }
   }
   if (visited) *visited += count;
   if (ok && undecided) return within_budget_double(grid, p, budget, t, c, region);
