@@ -73,11 +73,13 @@ const std::vector<ShapeRow>* shape_rows(int lx, int ly, int rx, int ry, float in
   return &rows;
 }
 
-// A triangle's interpolation for the row scan, as SSE2 vectors built once per triangle: the apex
-// and the legs in world space, the weights' steps per column, and the budgets' rounding slack.
+// A triangle's interpolation for the row scan: the apex and the legs in world space (per axis), and
+// as SSE2 vectors built once per triangle, how much the interpolation moves per column and the
+// budgets' rounding slack. Along a row it is linear, so a row needs its first node's value only.
 struct ScanPlane {
-  __m128 ax, ay, az, lx, ly, lz, rx, ry, rz;
-  __m128 du, dw, slack;
+  float a[3], l[3], r[3];
+  __m128 step[3];
+  __m128 slack;
 };
 
 struct RowVerdict {
@@ -85,27 +87,24 @@ struct RowVerdict {
   bool close;  // a node is so near its budget that float cannot tell
 };
 
-// The nodes k = 0 .. len-1 of a row whose first node has weights u0, w0, four at a time. The
-// last group's lanes past the row read the following nodes (or the arrays' padding) and are
-// masked out, so there is no scalar tail. Each lane does the scalar formula's operations in the
-// same order: the same bits.
-RowVerdict scan_row(const float* px, const float* py, const float* pz, const float* pb, int len,
-                    float u0_row, float w0_row, const ScanPlane& r) {
+// The nodes k = 0 .. len-1 of a row whose first node has weights u0, w0, four at a time: node k
+// against the interpolation at the first node plus k steps. The last group's lanes past the row
+// read the following nodes (or the arrays' padding) and are masked out, so there is no scalar tail.
+RowVerdict scan_row(const float* px, const float* py, const float* pz, const float* pb, int len, float u0,
+                    float w0, const ScanPlane& r) {
   const __m128 lanes = _mm_setr_ps(0, 1, 2, 3), zero = _mm_setzero_ps();
   const __m128 grow = _mm_set1_ps(1 + 1e-6f), shrink = _mm_set1_ps(1 - 1e-6f);
-  const __m128 u0 = _mm_set1_ps(u0_row), w0 = _mm_set1_ps(w0_row);
+  const __m128 x0 = _mm_set1_ps(r.a[0] + u0 * r.l[0] + w0 * r.r[0]);
+  const __m128 y0 = _mm_set1_ps(r.a[1] + u0 * r.l[1] + w0 * r.r[1]);
+  const __m128 z0 = _mm_set1_ps(r.a[2] + u0 * r.l[2] + w0 * r.r[2]);
   const __m128 end = _mm_set1_ps(static_cast<float>(len));
   __m128 over = zero, close = zero;
   for (int k = 0; k < len; k += 4) {
     const __m128 kf = _mm_add_ps(_mm_set1_ps(static_cast<float>(k)), lanes);  // exact integers
     const __m128 live = _mm_cmplt_ps(kf, end);
-    const __m128 u = _mm_add_ps(u0, _mm_mul_ps(kf, r.du)), w = _mm_add_ps(w0, _mm_mul_ps(kf, r.dw));
-    const __m128 ex = _mm_sub_ps(_mm_loadu_ps(px + k),
-                                 _mm_add_ps(_mm_add_ps(r.ax, _mm_mul_ps(u, r.lx)), _mm_mul_ps(w, r.rx)));
-    const __m128 ey = _mm_sub_ps(_mm_loadu_ps(py + k),
-                                 _mm_add_ps(_mm_add_ps(r.ay, _mm_mul_ps(u, r.ly)), _mm_mul_ps(w, r.ry)));
-    const __m128 ez = _mm_sub_ps(_mm_loadu_ps(pz + k),
-                                 _mm_add_ps(_mm_add_ps(r.az, _mm_mul_ps(u, r.lz)), _mm_mul_ps(w, r.rz)));
+    const __m128 ex = _mm_sub_ps(_mm_loadu_ps(px + k), _mm_add_ps(x0, _mm_mul_ps(kf, r.step[0])));
+    const __m128 ey = _mm_sub_ps(_mm_loadu_ps(py + k), _mm_add_ps(y0, _mm_mul_ps(kf, r.step[1])));
+    const __m128 ez = _mm_sub_ps(_mm_loadu_ps(pz + k), _mm_add_ps(z0, _mm_mul_ps(kf, r.step[2])));
     const __m128 e2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(ex, ex), _mm_mul_ps(ey, ey)), _mm_mul_ps(ez, ez));
     const __m128 b = _mm_loadu_ps(pb + k);
     const __m128 high = _mm_add_ps(b, r.slack), low = _mm_max_ps(_mm_sub_ps(b, r.slack), zero);
@@ -177,18 +176,22 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
   const int lx = t.left.x - t.apex.x, ly = t.left.y - t.apex.y;
   const int rx = t.right.x - t.apex.x, ry = t.right.y - t.apex.y;
   const float inv_len2 = 1.0f / static_cast<float>(static_cast<long long>(lx) * lx + static_cast<long long>(ly) * ly);
-  // In float so that rows vectorize. Every component of the miss vector is then within about
-  // 24 eps * largest of its exact value (weights err by a few eps and multiply differences of
-  // at most 2 * largest; three sums of magnitude <= 3 * largest), so its length is within
-  // 42 eps * largest. With 64 eps * largest of slack each way, a node is surely within or surely
-  // over its budget; the rare triangle with a node in between is decided in double.
+  // In float so that rows vectorize. With M = `largest`, each component of the miss vector is
+  // within 16 eps * M of its exact value: the legs (differences of coordinates <= M) err by eps * M;
+  // a row's first value a + u0 l + w0 r (weights in [0, 1]) by 6 eps * M; the step du l + dw r,
+  // times k, by 6 eps * M (k du and k dw are differences of two nodes' weights, <= 1 each); the
+  // product, the sum and the difference by 3.5 eps * M. So the length is within 28 eps * M, and
+  // with 64 eps * M of slack each way a node is surely within or surely over its budget; the rare
+  // triangle with a node in between is decided in double.
   const float slack = 64 * largest * std::numeric_limits<float>::epsilon();
-  const float ax = c.x[0], ay = c.y[0], az = c.z[0];
-  const ScanPlane plane{_mm_set1_ps(ax), _mm_set1_ps(ay), _mm_set1_ps(az),
-                        _mm_set1_ps(c.x[1] - ax), _mm_set1_ps(c.y[1] - ay), _mm_set1_ps(c.z[1] - az),
-                        _mm_set1_ps(c.x[2] - ax), _mm_set1_ps(c.y[2] - ay), _mm_set1_ps(c.z[2] - az),
-                        _mm_set1_ps(static_cast<float>(lx) * inv_len2),
-                        _mm_set1_ps(static_cast<float>(rx) * inv_len2), _mm_set1_ps(slack)};
+  const float du = static_cast<float>(lx) * inv_len2, dw = static_cast<float>(rx) * inv_len2;
+  ScanPlane plane;
+  for (int i = 0; i < 3; ++i) {
+    const float* v = i == 0 ? c.x : i == 1 ? c.y : c.z;
+    plane.a[i] = v[0], plane.l[i] = v[1] - v[0], plane.r[i] = v[2] - v[0];
+    plane.step[i] = _mm_set1_ps(du * plane.l[i] + dw * plane.r[i]);
+  }
+  plane.slack = _mm_set1_ps(slack);
   const int y0 = std::min({region.apex.y, region.left.y, region.right.y});
   const int y1 = std::max({region.apex.y, region.left.y, region.right.y});
   const std::size_t cols = static_cast<std::size_t>(grid.cols());
