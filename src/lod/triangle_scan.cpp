@@ -43,25 +43,26 @@ class RowSpans {
   Line left_[2], right_[2];
 };
 
-// A small triangle's rows relative to its apex, which depend on its legs only: the first column
-// and length of each (RowSpans') and the weights of its first node, made once per shape. The
-// builder's blocks hold triangles of a few sizes in eight orientations, so a row of a block's
-// scan reads its set-up instead of working it out.
+// A triangle's rows relative to its apex, which depend on its legs only: the first column and
+// length of each (RowSpans') and the weights of its first node, made once per shape. Triangles
+// come in a few sizes in eight orientations, so a scan's row reads its set-up instead of working
+// it out.
 struct ShapeRow {
   int dy, dx0, len;
   float u0, w0;
 };
-constexpr int kTabledLeg = 16;  // legs up to this many cells (a block's triangles)
+constexpr int kTabledLevels = 13;  // legs up to 2^12 cells; larger ones find their rows
 
-const std::vector<ShapeRow>* shape_rows(int lx, int ly, int rx, int ry, float inv_len2) {
+const std::vector<ShapeRow>* shape_rows(int lx, int ly, int rx, int ry) {
   const int size = std::max(std::abs(lx), std::abs(ly));
-  if (size > kTabledLeg) return nullptr;
+  if (size >= 1 << kTabledLevels || (size & (size - 1)) != 0) return nullptr;  // not a hierarchy's legs
   const auto sign = [](int v) { return v > 0 ? 2 : v < 0 ? 0 : 1; };
   const int level = std::countr_zero(static_cast<unsigned>(size));  // legs are (2^k, 0) or (2^k, 2^k) turned
   const std::size_t key = static_cast<std::size_t>(((level * 3 + sign(lx)) * 3 + sign(ly)) * 9 + sign(rx) * 3 + sign(ry));
-  thread_local std::vector<std::vector<ShapeRow>> shapes(5 * 81);
+  thread_local std::vector<std::vector<ShapeRow>> shapes(kTabledLevels * 81);
   std::vector<ShapeRow>& rows = shapes[key];
   if (rows.empty()) {
+    const float inv_len2 = 1.0f / static_cast<float>(lx * lx + ly * ly);  // as within_budget's
     const Tri t{{0, 0}, {lx, ly}, {rx, ry}};
     const RowSpans spans(t);
     for (int y = std::min({0, ly, ry}); y <= std::max({0, ly, ry}); ++y) {
@@ -198,9 +199,11 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
   long long count = 0;
   bool ok = true;
   bool undecided = false;
-  // A triangle scanned whole and small enough has its rows in a table; otherwise they are found.
+  // The region's rows from the table of its shape (with their weights where it is t itself).
+  const bool whole = region.apex == t.apex && region.left == t.left && region.right == t.right;
   const std::vector<ShapeRow>* tabled =
-      region.apex == t.apex && region.left == t.left && region.right == t.right ? shape_rows(lx, ly, rx, ry, inv_len2) : nullptr;
+      shape_rows(region.left.x - region.apex.x, region.left.y - region.apex.y, region.right.x - region.apex.x,
+                 region.right.y - region.apex.y);
   // Each row is tested whole (no early exit inside, it goes four nodes at a time) and the scan
   // stops after the first row with a node over budget.
   const auto row = [&](std::ptrdiff_t base, int len, float u0, float w0) {
@@ -211,8 +214,17 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
   };
   const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(cols);
   if (tabled) {
-    const std::ptrdiff_t apex = t.apex.y * pitch + t.apex.x;
-    for (auto r = tabled->begin(); r != tabled->end() && ok; ++r) row(apex + r->dy * pitch + r->dx0, r->len, r->u0, r->w0);
+    const std::ptrdiff_t apex = region.apex.y * pitch + region.apex.x;
+    const long long ox = region.apex.x - t.apex.x, oy = region.apex.y - t.apex.y;  // region's apex from t's
+    if (whole) {
+      for (auto r = tabled->begin(); r != tabled->end() && ok; ++r) row(apex + r->dy * pitch + r->dx0, r->len, r->u0, r->w0);
+    } else {  // a part: t's weights of each row's first node
+      for (auto r = tabled->begin(); r != tabled->end() && ok; ++r) {
+        const long long dx = ox + r->dx0, dy = oy + r->dy;
+        row(apex + r->dy * pitch + r->dx0, r->len, static_cast<float>(dx * lx + dy * ly) * inv_len2,
+            static_cast<float>(dx * rx + dy * ry) * inv_len2);
+      }
+    }
   } else {
     const RowSpans spans(region);
     for (int y = y0; y <= y1 && ok; ++y) {
