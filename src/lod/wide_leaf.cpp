@@ -46,17 +46,17 @@ LodBuilder::Fit LodBuilder::wide_leaf_fits(const Tri& t, Point m) {
   // Parts the tile ranges prove against t's interpolation need no nodes (t as a whole failed them).
   // If one is left, every part's block must be on the host (t's corners and splits are in them),
   // all asked for at once; only the others' blocks are made.
-  const Point polygon[3] = {t.apex, t.left, t.right};
+  const Point vertices[3] = {t.apex, t.left, t.right};
   const RangeProof range_proof(*ranges_, *box_budget_);
   bool ranged[4], all_ranged = true, held = true;
   for (int k = 0; k < n; ++k) {
     const CellBox b = box_of(tris[k]);
-    ranged[k] = range_proof.proves(b.x0, b.x1, b.y0, b.y1, polygon);
+    ranged[k] = range_proof.proves(b.x0, b.x1, b.y0, b.y1, vertices);
     all_ranged = all_ranged && ranged[k];
   }
   if (all_ranged) {
     ++stats_.ranged;
-    note_corners(polygon);
+    note_corners(vertices);
     return Fit::yes;
   }
   for (int k = 0; k < n; ++k) {

@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <random>
 #include <string>
@@ -47,6 +48,21 @@ struct Layouts {
   }
 };
 
+// For each value of `bads`, coordinate and column from `first_col` on: a pond (seed `seed`) whose
+// node (row, column) has that value in that coordinate, each of its views handed to
+// check(name, view, node, coordinate, column, value).
+template <class Check>
+void with_one_bad_node(std::uint32_t seed, int row, int first_col, std::initializer_list<float> bads, Check check) {
+  for (float bad : bads)
+    for (int coordinate = 0; coordinate < 3; ++coordinate)
+      for (int col = first_col; col < kCols; ++col) {
+        Layouts data(seed);
+        const std::size_t n = static_cast<std::size_t>(row * kCols + col);
+        data.set(n, coordinate, bad);
+        for (const auto& [name, p] : data.views()) check(name, p, n, coordinate, col, bad);
+      }
+}
+
 std::uint32_t largest_bits(const std::vector<float>& x, const std::vector<float>& y, const std::vector<float>& z) {
   std::uint32_t largest = 0;
   for (const std::vector<float>* v : {&x, &y, &z})
@@ -69,43 +85,32 @@ TEST(PositionCopy, LargestIsTheLargestMagnitudeCopied) {
 // A NaN or an infinity in any coordinate, in a four-node group's every lane or in the tail, comes
 // out as a largest that is not finite.
 TEST(PositionCopy, NonFiniteCoordinatesAreNeverLost) {
-  for (float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
-                    -std::numeric_limits<float>::infinity()})
-    for (int coordinate = 0; coordinate < 3; ++coordinate)
-      for (int col = 0; col < kCols; ++col) {
-        Layouts data(7);
-        const std::size_t n = static_cast<std::size_t>(5 * kCols + col);
-        data.set(n, coordinate, bad);
-        for (const auto& [name, p] : data.views()) {
-          std::vector<float> x(static_cast<std::size_t>(kRows * kCols)), y(x.size()), z(x.size());
-          const float largest = lod::copy_positions(p, x.data(), y.data(), z.data());
-          EXPECT_FALSE(std::isfinite(largest)) << name << " coordinate " << coordinate << " col " << col << " " << bad;
-          if (std::isinf(bad)) {
-            EXPECT_EQ(largest, std::numeric_limits<float>::infinity()) << name;
-          }
-        }
-      }
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  with_one_bad_node(7, 5, 0, {std::numeric_limits<float>::quiet_NaN(), kInf, -kInf},
+                    [](const std::string& name, const lod::NodePositions& p, std::size_t, int coordinate, int col, float bad) {
+                      std::vector<float> x(static_cast<std::size_t>(kRows * kCols)), y(x.size()), z(x.size());
+                      const float largest = lod::copy_positions(p, x.data(), y.data(), z.data());
+                      EXPECT_FALSE(std::isfinite(largest)) << name << " coordinate " << coordinate << " col " << col << " " << bad;
+                      if (std::isinf(bad)) {
+                        EXPECT_EQ(largest, std::numeric_limits<float>::infinity()) << name;
+                      }
+                    });
 }
 
 TEST(PositionCopy, BlocksRefuseNonFiniteCoordinatesByName) {
-  for (float bad : {std::numeric_limits<float>::quiet_NaN(), -std::numeric_limits<float>::infinity()})
-    for (int coordinate = 0; coordinate < 3; ++coordinate)
-      for (int col = 1; col < kCols; ++col) {
-        Layouts data(9);
-        const std::size_t n = static_cast<std::size_t>(6 * kCols + col);
-        data.set(n, coordinate, bad);
-        for (const auto& [name, p] : data.views()) {
-          std::vector<float> x(static_cast<std::size_t>(kRows * kCols)), y(x.size()), z(x.size());
-          const std::string where = "node " + std::to_string(n) + " (row 6, col " + std::to_string(col) + ")";
-          try {
-            lod::copy_finite_block(p, 4, std::min(col - 1, kCols - 5), 5, 5, x.data(), y.data(), z.data());
-            ADD_FAILURE() << name << ": " << where << " not refused";
-          } catch (const InputError& e) {
-            EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << name << ": " << e.what();
-          }
-          EXPECT_NO_THROW(lod::copy_finite_block(p, 0, 0, 5, kCols, x.data(), y.data(), z.data())) << name;  // rows 0-4
-        }
-      }
+  with_one_bad_node(9, 6, 1, {std::numeric_limits<float>::quiet_NaN(), -std::numeric_limits<float>::infinity()},
+                    [](const std::string& name, const lod::NodePositions& p, std::size_t n, int, int col, float) {
+                      std::vector<float> x(static_cast<std::size_t>(kRows * kCols)), y(x.size()), z(x.size());
+                      const std::string where = "node " + std::to_string(n) + " (row 6, col " + std::to_string(col) + ")";
+                      try {
+                        lod::copy_finite_block(p, 4, std::min(col - 1, kCols - 5), 5, 5, x.data(), y.data(), z.data());
+                        ADD_FAILURE() << name << ": " << where << " not refused";
+                      } catch (const InputError& e) {
+                        EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << name << ": " << e.what();
+                      }
+                      // rows 0-4 hold no bad node
+                      EXPECT_NO_THROW(lod::copy_finite_block(p, 0, 0, 5, kCols, x.data(), y.data(), z.data())) << name;
+                    });
   // Finite coordinates near the largest float: their sum overflows, and they are still taken.
   std::vector<float> big(kRows * kCols, 3e38f);
   std::vector<float> x(static_cast<std::size_t>(kRows * kCols)), y(x.size()), z(x.size());
