@@ -129,7 +129,7 @@ bool LodBuilder::leaf_is_fine(const SurfaceBlock& blk, const Tri& t, Point mid_p
   if (over(right2, t.apex, t.right)) return false;
   if (!bounds) {  // a block's triangle: scanned whole
     ++stats_.scanned;
-    return within_budget(grid, blk.positions(), budget, largest_, t, &stats_.scanned_nodes);
+    return within_budget(grid, blk.positions(), blk.scan_budgets(), largest_, t, &stats_.scanned_nodes);
   }
 
   // Proofs by parts. Split at m, t's children t1 = (m, apex, left) and t2 = (m, right, apex) are
@@ -174,7 +174,7 @@ bool LodBuilder::leaf_is_fine(const SurfaceBlock& blk, const Tri& t, Point mid_p
   ++stats_.scanned;
   const NodePositions own = blk.positions();
   for (int k = 0; k < parts; ++k)
-    if (!within_budget(grid, own, budget, largest_, t, unproved[k], &stats_.scanned_nodes))
+    if (!within_budget(grid, own, blk.scan_budgets(), largest_, t, unproved[k], &stats_.scanned_nodes))
       return false;
   return true;
 }

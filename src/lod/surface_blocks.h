@@ -18,6 +18,7 @@
 #include "lod/grid_hierarchy.h"
 #include "core/node_runs.h"
 #include "lod/node_positions.h"
+#include "lod/triangle_scan.h"
 
 namespace pond::lod {
 
@@ -29,9 +30,10 @@ constexpr int kBlockCells = 16;
 struct SurfaceBlock {
   Point origin;               // its first node in the grid
   const GridHierarchy* grid;  // its nodes as a grid of their own (for ids and clipping)
-  std::vector<float> x, y, z, budget;  // by local id, kScanOverread past the last node
+  std::vector<float> x, y, z, budget, sure2;  // by local id, kScanOverread past the last node
   std::vector<NestedBound> bounds;  // the whole grid's only: empty in a block
 
+  ScanBudgets scan_budgets() const { return {budget.data(), sure2.data()}; }
   NodePositions positions() const { return soa_positions(x.data(), y.data(), z.data(), grid->rows(), grid->cols()); }
   Tri local(const Tri& t) const {
     const auto at = [&](Point p) { return Point{p.x - origin.x, p.y - origin.y}; };

@@ -88,32 +88,46 @@ struct RowVerdict {
   bool close;  // a node is so near its budget that float cannot tell
 };
 
-// The nodes k = 0 .. len-1 of a row whose first node has weights u0, w0, four at a time: node k
-// against the interpolation at the first node plus k steps. The last group's lanes past the row
-// read the following nodes (or the arrays' padding) and are masked out, so there is no scalar tail.
-RowVerdict scan_row(const float* px, const float* py, const float* pz, const float* pb, int len, float u0,
-                    float w0, const ScanPlane& r) {
-  const __m128 lanes = _mm_setr_ps(0, 1, 2, 3), zero = _mm_setzero_ps();
-  const __m128 grow = _mm_set1_ps(1 + 1e-6f), shrink = _mm_set1_ps(1 - 1e-6f);
-  const __m128 x0 = _mm_set1_ps(r.a[0] + u0 * r.l[0] + w0 * r.r[0]);
-  const __m128 y0 = _mm_set1_ps(r.a[1] + u0 * r.l[1] + w0 * r.r[1]);
-  const __m128 z0 = _mm_set1_ps(r.a[2] + u0 * r.l[2] + w0 * r.r[2]);
-  const __m128 end = _mm_set1_ps(static_cast<float>(len));
+// The squared misses of a row's nodes k .. k+3 (kf: those k as floats) from the interpolation,
+// which is `first` at the row's first node and moves by a step per column.
+inline __m128 squared_miss(const float* px, const float* py, const float* pz, int k, __m128 kf, const __m128 first[3],
+                           const ScanPlane& r) {
+  const __m128 ex = _mm_sub_ps(_mm_loadu_ps(px + k), _mm_add_ps(first[0], _mm_mul_ps(kf, r.step[0])));
+  const __m128 ey = _mm_sub_ps(_mm_loadu_ps(py + k), _mm_add_ps(first[1], _mm_mul_ps(kf, r.step[1])));
+  const __m128 ez = _mm_sub_ps(_mm_loadu_ps(pz + k), _mm_add_ps(first[2], _mm_mul_ps(kf, r.step[2])));
+  return _mm_add_ps(_mm_add_ps(_mm_mul_ps(ex, ex), _mm_mul_ps(ey, ey)), _mm_mul_ps(ez, ez));
+}
+
+// The nodes k = 0 .. len-1 of a row, four at a time. The last group's lanes past the row read the
+// following nodes (or the arrays' padding) and are masked out, so there is no scalar tail.
+// First, one compare a node: is any miss over its sure-within threshold (scan_thresholds())? Only
+// a row where one is gets the exact test, which tells a node surely over from one too close to call.
+RowVerdict scan_row(const float* px, const float* py, const float* pz, const ScanBudgets& budgets, int len,
+                    const __m128 first[3], const ScanPlane& r) {
+  const __m128 zero = _mm_setzero_ps(), four = _mm_set1_ps(4), end = _mm_set1_ps(static_cast<float>(len));
+  const __m128 lanes = _mm_setr_ps(0, 1, 2, 3);  // exact integers
+  __m128 maybe = zero, kf = lanes;
+  for (int k = 0; k < len; k += 4, kf = _mm_add_ps(kf, four)) {
+    const __m128 e2 = _mm_and_ps(_mm_cmplt_ps(kf, end), squared_miss(px, py, pz, k, kf, first, r));  // 0 past the row
+    maybe = _mm_or_ps(maybe, _mm_cmpgt_ps(e2, _mm_loadu_ps(budgets.sure2 + k)));
+  }
+  if (_mm_movemask_ps(maybe) == 0) return {false, false};
+  const __m128 grow = _mm_set1_ps(1 + 1e-6f);
   __m128 over = zero, close = zero;
-  for (int k = 0; k < len; k += 4) {
-    const __m128 kf = _mm_add_ps(_mm_set1_ps(static_cast<float>(k)), lanes);  // exact integers
+  kf = lanes;
+  for (int k = 0; k < len; k += 4, kf = _mm_add_ps(kf, four)) {
     const __m128 live = _mm_cmplt_ps(kf, end);
-    const __m128 ex = _mm_sub_ps(_mm_loadu_ps(px + k), _mm_add_ps(x0, _mm_mul_ps(kf, r.step[0])));
-    const __m128 ey = _mm_sub_ps(_mm_loadu_ps(py + k), _mm_add_ps(y0, _mm_mul_ps(kf, r.step[1])));
-    const __m128 ez = _mm_sub_ps(_mm_loadu_ps(pz + k), _mm_add_ps(z0, _mm_mul_ps(kf, r.step[2])));
-    const __m128 e2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(ex, ex), _mm_mul_ps(ey, ey)), _mm_mul_ps(ez, ez));
-    const __m128 b = _mm_loadu_ps(pb + k);
-    const __m128 high = _mm_add_ps(b, r.slack), low = _mm_max_ps(_mm_sub_ps(b, r.slack), zero);
+    const __m128 e2 = squared_miss(px, py, pz, k, kf, first, r);
+    const __m128 high = _mm_add_ps(_mm_loadu_ps(budgets.budget + k), r.slack);
     over = _mm_or_ps(over, _mm_and_ps(live, _mm_cmpgt_ps(e2, _mm_mul_ps(_mm_mul_ps(high, high), grow))));
-    close = _mm_or_ps(close, _mm_and_ps(live, _mm_cmpgt_ps(e2, _mm_mul_ps(_mm_mul_ps(low, low), shrink))));
+    close = _mm_or_ps(close, _mm_and_ps(live, _mm_cmpgt_ps(e2, _mm_loadu_ps(budgets.sure2 + k))));
   }
   return {_mm_movemask_ps(over) != 0, _mm_movemask_ps(close) != 0};
 }
+
+// The float scan's rounding slack on a budget, for |coordinates| up to `largest` (see the analysis
+// in within_budget()).
+float scan_slack(float largest) { return 64 * largest * std::numeric_limits<float>::epsilon(); }
 
 }  // namespace
 
@@ -152,12 +166,20 @@ bool within_budget_double(const GridHierarchy& grid, const NodePositions& p, con
 
 }  // namespace
 
-bool within_budget(const GridHierarchy& grid, const NodePositions& p, const float* budget,
-                   float largest, const Tri& t, long long* visited) {
-  return within_budget(grid, p, budget, largest, t, t, visited);
+void scan_thresholds(const float* budget, std::size_t n, float largest, float* sure2) {
+  const __m128 slack = _mm_set1_ps(scan_slack(largest)), shrink = _mm_set1_ps(1 - 1e-6f), zero = _mm_setzero_ps();
+  for (std::size_t k = 0; k < n; k += 4) {  // the last group's lanes past n into the padding
+    const __m128 low = _mm_max_ps(_mm_sub_ps(_mm_loadu_ps(budget + k), slack), zero);
+    _mm_storeu_ps(sure2 + k, _mm_mul_ps(_mm_mul_ps(low, low), shrink));
+  }
 }
 
-bool within_budget(const GridHierarchy& grid, const NodePositions& p, const float* budget,
+bool within_budget(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets,
+                   float largest, const Tri& t, long long* visited) {
+  return within_budget(grid, p, budgets, largest, t, t, visited);
+}
+
+bool within_budget(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets,
                    float largest, const Tri& t, const Tri& region, long long* visited) {
   TriCorners c;
   const Point corner[3] = {t.apex, t.left, t.right};
@@ -165,10 +187,10 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
     const std::uint32_t n = grid.id(corner[k]);
     c.x[k] = p.x[n], c.y[k] = p.y[n], c.z[k] = p.z[n];
   }
-  return within_budget(grid, p, budget, largest, t, c, region, visited);
+  return within_budget(grid, p, budgets, largest, t, c, region, visited);
 }
 
-bool within_budget(const GridHierarchy& grid, const NodePositions& p, const float* budget,
+bool within_budget(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets,
                    float largest, const Tri& t, const TriCorners& c, const Tri& region, long long* visited) {
   // Legs apex->left and apex->right are orthogonal and of equal length, so the barycentric
   // weights of left and right are plain projections onto them. The squared leg length is a
@@ -184,7 +206,7 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
   // product, the sum and the difference by 3.5 eps * M. So the length is within 28 eps * M, and
   // with 64 eps * M of slack each way a node is surely within or surely over its budget; the rare
   // triangle with a node in between is decided in double.
-  const float slack = 64 * largest * std::numeric_limits<float>::epsilon();
+  const float slack = scan_slack(largest);
   const float du = static_cast<float>(lx) * inv_len2, dw = static_cast<float>(rx) * inv_len2;
   ScanPlane plane;
   for (int i = 0; i < 3; ++i) {
@@ -207,7 +229,11 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
   // Each row is tested whole (no early exit inside, it goes four nodes at a time) and the scan
   // stops after the first row with a node over budget.
   const auto row = [&](std::ptrdiff_t base, int len, float u0, float w0) {
-    const RowVerdict v = scan_row(p.x + base, p.y + base, p.z + base, budget + base, len, u0, w0, plane);
+    const __m128 first[3] = {_mm_set1_ps(plane.a[0] + u0 * plane.l[0] + w0 * plane.r[0]),
+                             _mm_set1_ps(plane.a[1] + u0 * plane.l[1] + w0 * plane.r[1]),
+                             _mm_set1_ps(plane.a[2] + u0 * plane.l[2] + w0 * plane.r[2])};
+    const RowVerdict v = scan_row(p.x + base, p.y + base, p.z + base, {budgets.budget + base, budgets.sure2 + base}, len,
+                                  first, plane);
     count += len;
     ok = !v.over;
     undecided |= v.close;
@@ -236,7 +262,7 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const floa
     }
   }
   if (visited) *visited += count;
-  if (ok && undecided) return within_budget_double(grid, p, budget, t, c, region);
+  if (ok && undecided) return within_budget_double(grid, p, budgets.budget, t, c, region);
   return ok;
 }
 

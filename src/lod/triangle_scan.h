@@ -14,14 +14,25 @@ namespace pond::lod {
 // many floats past the last node (values there are ignored).
 constexpr std::size_t kScanOverread = 3;
 
+// The nodes' budgets and, from them (scan_thresholds()), the squared miss at or below which a
+// node is surely within its budget however float rounds: most rows need that one compare a node.
+struct ScanBudgets {
+  const float* budget;
+  const float* sure2;
+};
+
+// Writes sure2 for the n nodes of `budget`, of positions whose |coordinates| are at most
+// `largest`. Both arrays are readable and writable kScanOverread floats past the last node.
+void scan_thresholds(const float* budget, std::size_t n, float largest, float* sure2);
+
 // positions: stride 1; `largest` bounds every |coordinate| (it sizes the float rounding margin).
 // Counts the nodes visited into *visited (statistics).
-bool within_budget(const GridHierarchy& grid, const NodePositions& positions, const float* budget,
+bool within_budget(const GridHierarchy& grid, const NodePositions& positions, const ScanBudgets& budgets,
                    float largest, const Tri& t, long long* visited);
 
 // The same test for the nodes of `region`, a triangle inside t (one of its descendants), against
 // t's interpolation.
-bool within_budget(const GridHierarchy& grid, const NodePositions& positions, const float* budget,
+bool within_budget(const GridHierarchy& grid, const NodePositions& positions, const ScanBudgets& budgets,
                    float largest, const Tri& t, const Tri& region, long long* visited);
 
 // The same test where t's corners need not be in `positions` (a triangle over several blocks,
@@ -30,7 +41,7 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& positions, co
 struct TriCorners {
   float x[3], y[3], z[3];
 };
-bool within_budget(const GridHierarchy& grid, const NodePositions& positions, const float* budget,
+bool within_budget(const GridHierarchy& grid, const NodePositions& positions, const ScanBudgets& budgets,
                    float largest, const Tri& t, const TriCorners& corners, const Tri& region, long long* visited);
 
 // The same test for the fan (corner[0], corner[k], corner[k+1]) of a clipped triangle, in double.

@@ -101,7 +101,7 @@ LodBuilder::Fit LodBuilder::wide_leaf_fits(const Tri& t, Point m) {
     if (ranged[k]) continue;
     const Point b = block_of(tris[k]);
     const SurfaceBlock& blk = blocks_.block(b.x, b.y);
-    if (!within_budget(*blk.grid, blk.positions(), blk.budget.data(), largest_, blk.local(t), corners,
+    if (!within_budget(*blk.grid, blk.positions(), blk.scan_budgets(), largest_, blk.local(t), corners,
                        blk.local(tris[k]), &stats_.scanned_nodes))
       return Fit::no;
   }

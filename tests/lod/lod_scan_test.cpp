@@ -102,7 +102,7 @@ TEST(TriangleScan, VerdictsAreTheExactOnes) {
         for (const Scan& s : scans) {
           bool near = false;
           const bool expected = within_in_double(w, s.t, s.region, near);
-          const bool within = lod::within_budget(*w.grid, w.positions(), w.budget.data(), largest, s.t, s.region, nullptr);
+          const bool within = lod::within_budget(*w.grid, w.positions(), w.scan_budgets(), largest, s.t, s.region, nullptr);
           if (!near) {
             ASSERT_EQ(within, expected) << what << " tau " << tau << " apex " << s.t.apex.x << "," << s.t.apex.y
                                         << " region apex " << s.region.apex.x << "," << s.region.apex.y;
