@@ -22,7 +22,8 @@ SurfaceBlocks::SurfaceBlocks(int rows, int cols)
 
 void SurfaceBlocks::begin(const NodePositions& positions, const BudgetTerms& terms, float largest) {
   positions_ = positions, terms_ = terms, largest_ = largest;
-  wide_budgets_ = core::cpu_has(core::CpuFeature::avx2);  // once a frame: it reads the environment
+  // Once a frame: cpu_has reads the environment. The copies exist where this build has node_budgets'.
+  wide_ = core::cpu_has(core::CpuFeature::avx2) && wide_budgets_available();
   used_ = 0;
   if (++frame_ == 0) {  // after 2^32 frames: every stamp would look current
     std::fill(made_in_.begin(), made_in_.end(), 0u);
@@ -71,7 +72,8 @@ void SurfaceBlocks::make(SurfaceBlock& b, Point origin, int rows, int cols) {
   const std::size_t n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
   for (std::vector<float>* v : {&b.x, &b.y, &b.z, &b.budget, &b.sure2}) v->resize(n + kScanOverread);
   copy_finite_block(positions_, b.origin.y, b.origin.x, rows, cols, b.x.data(), b.y.data(), b.z.data());
-  node_budgets(b.positions(), terms_, b.budget.data(), wide_budgets_);
+  b.wide = wide_;
+  node_budgets(b.positions(), terms_, b.budget.data(), wide_);
   scan_thresholds(b.budget.data(), n, largest_, b.sure2.data());
 }
 

@@ -32,8 +32,9 @@ struct SurfaceBlock {
   const GridHierarchy* grid;  // its nodes as a grid of their own (for ids and clipping)
   std::vector<float> x, y, z, budget, sure2;  // by local id, kScanOverread past the last node
   std::vector<NestedBound> bounds;  // the whole grid's only: empty in a block
+  bool wide = false;  // its budgets and scans may use their AVX2 copies (SurfaceBlocks::begin)
 
-  ScanBudgets scan_budgets() const { return {budget.data(), sure2.data()}; }
+  ScanBudgets scan_budgets() const { return {budget.data(), sure2.data(), wide}; }
   NodePositions positions() const { return soa_positions(x.data(), y.data(), z.data(), grid->rows(), grid->cols()); }
   Tri local(const Tri& t) const {
     const auto at = [&](Point p) { return Point{p.x - origin.x, p.y - origin.y}; };
@@ -70,7 +71,7 @@ class SurfaceBlocks {
   NodePositions positions_;
   BudgetTerms terms_;
   float largest_ = 0;
-  bool wide_budgets_ = false;  // node_budgets' AVX2 copy allowed (POND_CPU_FEATURES_MASK)
+  bool wide_ = false;  // the AVX2 copies of the budgets and scans allowed (POND_CPU_FEATURES_MASK)
   std::uint32_t frame_ = 0;
   std::vector<std::uint32_t> made_in_;  // per block: the frame it was made in (0: never)
   std::vector<std::uint32_t> slot_;     // per block: its slot in pool_ when made this frame

@@ -10,15 +10,16 @@
 
 namespace pond::lod {
 
-// Rows are read four nodes at a time: the position and budget arrays must stay readable this
-// many floats past the last node (values there are ignored).
-constexpr std::size_t kScanOverread = 3;
+// Rows are read eight nodes at a time (four without AVX2): the position and budget arrays must
+// stay readable this many floats past the last node (values there are ignored).
+constexpr std::size_t kScanOverread = 7;
 
 // The nodes' budgets and, from them (scan_thresholds()), the squared miss at or below which a
 // node is surely within its budget however float rounds: most rows need that one compare a node.
 struct ScanBudgets {
   const float* budget;
   const float* sure2;
+  bool wide;  // the AVX2 copy of the scan may run (scan_rows.h): callers pass SurfaceBlock::wide
 };
 
 // Writes sure2 for the n nodes of `budget`, of positions whose |coordinates| are at most

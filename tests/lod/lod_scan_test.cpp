@@ -102,7 +102,15 @@ TEST(TriangleScan, VerdictsAreTheExactOnes) {
         for (const Scan& s : scans) {
           bool near = false;
           const bool expected = within_in_double(w, s.t, s.region, near);
-          const bool within = lod::within_budget(*w.grid, w.positions(), w.scan_budgets(), largest, s.t, s.region, nullptr);
+          // The SSE2 copy, and the AVX2 one where it runs: the same verdict, near or not.
+          lod::ScanBudgets budgets = w.scan_budgets();
+          budgets.wide = false;
+          const bool within = lod::within_budget(*w.grid, w.positions(), budgets, largest, s.t, s.region, nullptr);
+          if (lod::wide_budgets_available()) {
+            budgets.wide = true;
+            ASSERT_EQ(lod::within_budget(*w.grid, w.positions(), budgets, largest, s.t, s.region, nullptr), within)
+                << what << " tau " << tau << " apex " << s.t.apex.x << "," << s.t.apex.y;
+          }
           if (!near) {
             ASSERT_EQ(within, expected) << what << " tau " << tau << " apex " << s.t.apex.x << "," << s.t.apex.y
                                         << " region apex " << s.region.apex.x << "," << s.region.apex.y;
@@ -119,8 +127,8 @@ TEST(TriangleScan, VerdictsAreTheExactOnes) {
 }
 
 // The builder, frame after frame (blocks first, then the whole grid), draws the same triangles with
-// the node budgets' AVX2 copy as with the SSE2 one.
-TEST(LodBuilder, SameMeshWithTheAvx2BudgetsHidden) {
+// the AVX2 copies of the node budgets and the scan as with the SSE2 ones.
+TEST(LodBuilder, SameMeshWithTheAvx2CopiesHidden) {
   if (!lod::wide_budgets_available()) GTEST_SKIP() << "no AVX2 copy in this build, or no AVX2 on this CPU";
   const std::vector<float> state = simulated_pond(129, 129, 150, 10, 10, 7);
   const auto p = lod::interleaved_positions(state.data(), 129, 129);

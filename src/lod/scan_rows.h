@@ -1,0 +1,215 @@
+#pragma once
+// The exact scan's float pass (triangle_scan.h), built twice like the node budgets (budget_loop.h):
+// by triangle_scan.cpp with SSE2 lanes, four nodes a group, and by triangle_scan_avx2.cpp with
+// AVX2 lanes, eight. A lane does its node's operations in the same order in both, so both copies
+// compute the same bits and give the same verdicts. Its templates are in an unnamed namespace:
+// each file keeps its own copy, not the linker's pick.
+//
+// L, the lanes: a vector type V of L::width floats, and set1, iota (0, 1, ...), load (unaligned),
+// add, sub, mul, and_, or_, less and greater (lane masks), any (a mask has a lane set).
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "lod/grid_hierarchy.h"
+#include "lod/node_positions.h"
+#include "lod/triangle_scan.h"
+
+namespace pond::lod {
+
+// The columns where each row of the closed triangle meets it. Its edges run at 0, 45 or 90
+// degrees, so on the rows it spans the triangle lies between at most two lines on the left and
+// two on the right, x = at_row0 + slope * y with integer slopes (a flat edge only ends the rows):
+// the first column is the largest of the left lines, the last the smallest of the right ones.
+class RowSpans {
+ public:
+  explicit RowSpans(const Tri& t) {
+    const Point v[3] = {t.apex, t.left, t.right};
+    int left = 0, right = 0;
+    for (int k = 0; k < 3; ++k) {
+      const Point a = v[k], b = v[(k + 1) % 3], c = v[(k + 2) % 3];
+      if (a.y == b.y) continue;
+      const int slope = (b.x - a.x) / (b.y - a.y);
+      const Line line{a.x - slope * a.y, slope};
+      // The third corner lies right of a left edge. Every triangle has a line on each side.
+      if (c.x > line.at(c.y)) left_[left++] = line;
+      else right_[right++] = line;
+    }
+    if (left == 1) left_[1] = left_[0];
+    if (right == 1) right_[1] = right_[0];
+  }
+  int first(int y) const { return std::max(left_[0].at(y), left_[1].at(y)); }
+  int last(int y) const { return std::min(right_[0].at(y), right_[1].at(y)); }
+
+ private:
+  struct Line {
+    int at_row0, slope;
+    int at(int y) const { return at_row0 + slope * y; }
+  };
+  Line left_[2], right_[2];
+};
+
+// A triangle's rows relative to its apex, which depend on its legs only: the first column and
+// length of each (RowSpans') and the weights of its first node, made once per shape. Triangles
+// come in a few sizes in eight orientations, so a scan's row reads its set-up instead of working
+// it out.
+struct ShapeRow {
+  int dy, dx0, len;
+  float u0, w0;
+};
+// The rows of the triangle with legs (lx, ly) and (rx, ry) from its apex, or nullptr for legs the
+// tables do not hold (triangle_scan.cpp).
+const std::vector<ShapeRow>* shape_rows(int lx, int ly, int rx, int ry);
+
+// The scan in double, for triangles the float scan cannot decide (triangle_scan.cpp).
+bool within_budget_double(const GridHierarchy& grid, const NodePositions& p, const float* budget, const Tri& t,
+                          const TriCorners& c, const Tri& region);
+
+#if POND_LOD_AVX2
+// scan_triangle's AVX2 copy (triangle_scan_avx2.cpp).
+bool scan_triangle_avx2(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, float largest,
+                        const Tri& t, const TriCorners& c, const Tri& region, long long* visited);
+#endif
+
+namespace {
+
+// A triangle's interpolation for the row scan: the apex and the legs in world space (per axis), and
+// as vectors built once per triangle, how much the interpolation moves per column and the budgets'
+// rounding slack. Along a row it is linear, so a row needs its first node's value only.
+template <class L>
+struct ScanPlane {
+  float a[3], l[3], r[3];
+  typename L::V step[3];
+  typename L::V slack;
+};
+
+struct RowVerdict {
+  bool over;   // a node is over its budget for sure
+  bool close;  // a node is so near its budget that float cannot tell
+};
+
+// The squared misses of a row's nodes k .. k + L::width - 1 (kf: those k as floats) from the
+// interpolation, which is `first` at the row's first node and moves by a step per column.
+template <class L>
+inline typename L::V squared_miss(const float* px, const float* py, const float* pz, int k, typename L::V kf,
+                                  const typename L::V first[3], const ScanPlane<L>& r) {
+  using V = typename L::V;
+  const V ex = L::sub(L::load(px + k), L::add(first[0], L::mul(kf, r.step[0])));
+  const V ey = L::sub(L::load(py + k), L::add(first[1], L::mul(kf, r.step[1])));
+  const V ez = L::sub(L::load(pz + k), L::add(first[2], L::mul(kf, r.step[2])));
+  return L::add(L::add(L::mul(ex, ex), L::mul(ey, ey)), L::mul(ez, ez));
+}
+
+// The nodes k = 0 .. len-1 of a row, L::width at a time. The last group's lanes past the row read
+// the following nodes (or the arrays' padding) and are masked out, so there is no scalar tail.
+// First, one compare a node: is any miss over its sure-within threshold (scan_thresholds())? Only
+// a row where one is gets the exact test, which tells a node surely over from one too close to call.
+template <class L>
+RowVerdict scan_row(const float* px, const float* py, const float* pz, const ScanBudgets& budgets, int len,
+                    const typename L::V first[3], const ScanPlane<L>& r) {
+  using V = typename L::V;
+  const V zero = L::set1(0), width = L::set1(L::width), end = L::set1(static_cast<float>(len));
+  V maybe = zero, kf = L::iota();  // exact integers
+  for (int k = 0; k < len; k += L::width, kf = L::add(kf, width)) {
+    const V e2 = L::and_(L::less(kf, end), squared_miss<L>(px, py, pz, k, kf, first, r));  // 0 past the row
+    maybe = L::or_(maybe, L::greater(e2, L::load(budgets.sure2 + k)));
+  }
+  if (!L::any(maybe)) return {false, false};
+  const V grow = L::set1(1 + 1e-6f);
+  V over = zero, close = zero;
+  kf = L::iota();
+  for (int k = 0; k < len; k += L::width, kf = L::add(kf, width)) {
+    const V live = L::less(kf, end);
+    const V e2 = squared_miss<L>(px, py, pz, k, kf, first, r);
+    const V high = L::add(L::load(budgets.budget + k), r.slack);
+    over = L::or_(over, L::and_(live, L::greater(e2, L::mul(L::mul(high, high), grow))));
+    close = L::or_(close, L::and_(live, L::greater(e2, L::load(budgets.sure2 + k))));
+  }
+  return {L::any(over), L::any(close)};
+}
+
+// The float scan's rounding slack on a budget, for |coordinates| up to `largest` (see the analysis
+// in scan_triangle()).
+inline float scan_slack(float largest) { return 64 * largest * std::numeric_limits<float>::epsilon(); }
+
+// The float scan of `region`'s nodes against t's interpolation (triangle_scan.h's within_budget).
+template <class L>
+bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, float largest,
+                   const Tri& t, const TriCorners& c, const Tri& region, long long* visited) {
+  // Legs apex->left and apex->right are orthogonal and of equal length, so the barycentric
+  // weights of left and right are plain projections onto them. The squared leg length is a
+  // power of two (legs are (2^k, 0) or (2^k, 2^k) turned), so every weight, the integer
+  // projection times its inverse, is exact in float.
+  const int lx = t.left.x - t.apex.x, ly = t.left.y - t.apex.y;
+  const int rx = t.right.x - t.apex.x, ry = t.right.y - t.apex.y;
+  const float inv_len2 = 1.0f / static_cast<float>(static_cast<long long>(lx) * lx + static_cast<long long>(ly) * ly);
+  // In float so that rows vectorize. With M = `largest`, each component of the miss vector is
+  // within 16 eps * M of its exact value: the legs (differences of coordinates <= M) err by eps * M;
+  // a row's first value a + u0 l + w0 r (weights in [0, 1]) by 6 eps * M; the step du l + dw r,
+  // times k, by 6 eps * M (k du and k dw are differences of two nodes' weights, <= 1 each); the
+  // product, the sum and the difference by 3.5 eps * M. So the length is within 28 eps * M, and
+  // with 64 eps * M of slack each way a node is surely within or surely over its budget; the rare
+  // triangle with a node in between is decided in double.
+  const float slack = scan_slack(largest);
+  const float du = static_cast<float>(lx) * inv_len2, dw = static_cast<float>(rx) * inv_len2;
+  ScanPlane<L> plane;
+  for (int i = 0; i < 3; ++i) {
+    const float* v = i == 0 ? c.x : i == 1 ? c.y : c.z;
+    plane.a[i] = v[0], plane.l[i] = v[1] - v[0], plane.r[i] = v[2] - v[0];
+    plane.step[i] = L::set1(du * plane.l[i] + dw * plane.r[i]);
+  }
+  plane.slack = L::set1(slack);
+  const int y0 = std::min({region.apex.y, region.left.y, region.right.y});
+  const int y1 = std::max({region.apex.y, region.left.y, region.right.y});
+  const std::size_t cols = static_cast<std::size_t>(grid.cols());
+  long long count = 0;
+  bool ok = true;
+  bool undecided = false;
+  // The region's rows from the table of its shape (with their weights where it is t itself).
+  const bool whole = region.apex == t.apex && region.left == t.left && region.right == t.right;
+  const std::vector<ShapeRow>* tabled =
+      shape_rows(region.left.x - region.apex.x, region.left.y - region.apex.y, region.right.x - region.apex.x,
+                 region.right.y - region.apex.y);
+  // Each row is tested whole (no early exit inside, it goes L::width nodes at a time) and the scan
+  // stops after the first row with a node over budget.
+  const auto row = [&](std::ptrdiff_t base, int len, float u0, float w0) {
+    const typename L::V first[3] = {L::set1(plane.a[0] + u0 * plane.l[0] + w0 * plane.r[0]),
+                                    L::set1(plane.a[1] + u0 * plane.l[1] + w0 * plane.r[1]),
+                                    L::set1(plane.a[2] + u0 * plane.l[2] + w0 * plane.r[2])};
+    const RowVerdict v = scan_row<L>(p.x + base, p.y + base, p.z + base, {budgets.budget + base, budgets.sure2 + base, budgets.wide}, len,
+                                  first, plane);
+    count += len;
+    ok = !v.over;
+    undecided |= v.close;
+  };
+  const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(cols);
+  if (tabled) {
+    const std::ptrdiff_t apex = region.apex.y * pitch + region.apex.x;
+    const long long ox = region.apex.x - t.apex.x, oy = region.apex.y - t.apex.y;  // region's apex from t's
+    if (whole) {
+      for (auto r = tabled->begin(); r != tabled->end() && ok; ++r) row(apex + r->dy * pitch + r->dx0, r->len, r->u0, r->w0);
+    } else {  // a part: t's weights of each row's first node
+      for (auto r = tabled->begin(); r != tabled->end() && ok; ++r) {
+        const long long dx = ox + r->dx0, dy = oy + r->dy;
+        row(apex + r->dy * pitch + r->dx0, r->len, static_cast<float>(dx * lx + dy * ly) * inv_len2,
+            static_cast<float>(dx * rx + dy * ry) * inv_len2);
+      }
+    }
+  } else {
+    const RowSpans spans(region);
+    for (int y = y0; y <= y1 && ok; ++y) {
+      // Weights along the row are linear in x.
+      const int x0 = spans.first(y);
+      const long long dx = x0 - t.apex.x, dy = y - t.apex.y;
+      row(y * pitch + x0, spans.last(y) - x0 + 1, static_cast<float>(dx * lx + dy * ly) * inv_len2,
+          static_cast<float>(dx * rx + dy * ry) * inv_len2);
+    }
+  }
+  if (visited) *visited += count;
+  if (ok && undecided) return within_budget_double(grid, p, budgets.budget, t, c, region);
+  return ok;
+}
+
+}  // namespace
+}  // namespace pond::lod

@@ -1,0 +1,34 @@
+// The exact scan's AVX2 copy (scan_rows.h), chosen by within_budget where ScanBudgets::wide.
+#include <immintrin.h>
+
+#include "lod/scan_rows.h"
+
+namespace pond::lod {
+namespace {
+
+// scan_rows.h's lanes with AVX2: eight floats. The compares are the SSE2 copy's (ordered, on
+// values that are never NaN).
+struct Avx2Lanes {
+  using V = __m256;
+  static constexpr int width = 8;
+  static V set1(float v) { return _mm256_set1_ps(v); }
+  static V iota() { return _mm256_setr_ps(0, 1, 2, 3, 4, 5, 6, 7); }
+  static V load(const float* p) { return _mm256_loadu_ps(p); }
+  static V add(V a, V b) { return _mm256_add_ps(a, b); }
+  static V sub(V a, V b) { return _mm256_sub_ps(a, b); }
+  static V mul(V a, V b) { return _mm256_mul_ps(a, b); }
+  static V and_(V a, V b) { return _mm256_and_ps(a, b); }
+  static V or_(V a, V b) { return _mm256_or_ps(a, b); }
+  static V less(V a, V b) { return _mm256_cmp_ps(a, b, _CMP_LT_OS); }
+  static V greater(V a, V b) { return _mm256_cmp_ps(a, b, _CMP_GT_OS); }
+  static bool any(V m) { return _mm256_movemask_ps(m) != 0; }
+};
+
+}  // namespace
+
+bool scan_triangle_avx2(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, float largest,
+                        const Tri& t, const TriCorners& c, const Tri& region, long long* visited) {
+  return scan_triangle<Avx2Lanes>(grid, p, budgets, largest, t, c, region, visited);
+}
+
+}  // namespace pond::lod
