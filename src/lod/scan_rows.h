@@ -8,7 +8,9 @@
 // L, the lanes: a vector type V of L::width floats, and set1, iota (0, 1, ...), load (unaligned),
 // add, sub, mul, and_, or_, less and greater (lane masks), any (a mask has a lane set).
 #include <algorithm>
+#include <bit>
 #include <cstddef>
+#include <cstdlib>
 #include <limits>
 #include <vector>
 
@@ -58,13 +60,16 @@ struct ShapeRow {
   int dy, dx0, len;
   float u0, w0;
 };
-// The rows of the triangle with legs (lx, ly) and (rx, ry) from its apex, or nullptr for legs the
-// tables do not hold (triangle_scan.cpp).
-const std::vector<ShapeRow>* shape_rows(int lx, int ly, int rx, int ry);
+constexpr int kTabledLevels = 13;  // legs up to 2^12 cells; larger ones find their rows
+// Fills `rows`, the table of the triangle with legs (lx, ly) and (rx, ry) from its apex, and
+// returns it (triangle_scan.cpp). Out of line: the lookup below stays small.
+const std::vector<ShapeRow>* make_shape_rows(std::vector<ShapeRow>& rows, int lx, int ly, int rx, int ry);
 
-// The scan in double, for triangles the float scan cannot decide (triangle_scan.cpp).
-bool within_budget_double(const GridHierarchy& grid, const NodePositions& p, const float* budget, const Tri& t,
-                          const TriCorners& c, const Tri& region);
+// The scan in double of row y's columns x0 .. x1 against t's interpolation, for a row the float
+// pass cannot decide (triangle_scan.cpp). Every node is judged within 1e-13 relative, far inside
+// the budgets' own 1e-5 margin.
+bool row_within_budget_double(const GridHierarchy& grid, const NodePositions& p, const float* budget, const Tri& t,
+                              const TriCorners& c, int y, int x0, int x1);
 
 #if POND_LOD_AVX2
 // scan_triangle's AVX2 copy (triangle_scan_avx2.cpp).
@@ -73,6 +78,19 @@ bool scan_triangle_avx2(const GridHierarchy& grid, const NodePositions& p, const
 #endif
 
 namespace {
+
+// The rows of the triangle with legs (lx, ly) and (rx, ry) from its apex, or nullptr for legs the
+// tables do not hold. Each thread, and each copy of the scan, keeps its own tables.
+inline const std::vector<ShapeRow>* shape_rows(int lx, int ly, int rx, int ry) {
+  const int size = std::max(std::abs(lx), std::abs(ly));
+  if (size == 0 || size >= 1 << kTabledLevels || (size & (size - 1)) != 0) return nullptr;  // not a hierarchy's legs
+  const auto sign = [](int v) { return (v > 0) - (v < 0) + 1; };
+  const int level = std::countr_zero(static_cast<unsigned>(size));  // legs are (2^k, 0) or (2^k, 2^k) turned
+  const std::size_t key = static_cast<std::size_t>(((level * 3 + sign(lx)) * 3 + sign(ly)) * 9 + sign(rx) * 3 + sign(ry));
+  thread_local std::vector<std::vector<ShapeRow>> shapes(kTabledLevels * 81);
+  std::vector<ShapeRow>& rows = shapes[key];
+  return rows.empty() ? make_shape_rows(rows, lx, ly, rx, ry) : &rows;
+}
 
 // A triangle's interpolation for the row scan: the apex and the legs in world space (per axis), and
 // as vectors built once per triangle, how much the interpolation moves per column and the budgets'
@@ -150,7 +168,7 @@ bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const Scan
   // times k, by 6 eps * M (k du and k dw are differences of two nodes' weights, <= 1 each); the
   // product, the sum and the difference by 3.5 eps * M. So the length is within 28 eps * M, and
   // with 64 eps * M of slack each way a node is surely within or surely over its budget; the rare
-  // triangle with a node in between is decided in double.
+  // row with a node in between is decided in double.
   const float slack = scan_slack(largest);
   const float du = static_cast<float>(lx) * inv_len2, dw = static_cast<float>(rx) * inv_len2;
   ScanPlane<L> plane;
@@ -165,25 +183,25 @@ bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const Scan
   const std::size_t cols = static_cast<std::size_t>(grid.cols());
   long long count = 0;
   bool ok = true;
-  bool undecided = false;
   // The region's rows from the table of its shape (with their weights where it is t itself).
   const bool whole = region.apex == t.apex && region.left == t.left && region.right == t.right;
   const std::vector<ShapeRow>* tabled =
       shape_rows(region.left.x - region.apex.x, region.left.y - region.apex.y, region.right.x - region.apex.x,
                  region.right.y - region.apex.y);
-  // Each row is tested whole (no early exit inside, it goes L::width nodes at a time) and the scan
-  // stops after the first row with a node over budget.
+  // Each row is tested whole (no early exit inside, it goes L::width nodes at a time), a row float
+  // cannot decide once more in double, and the scan stops after the first row with a node over.
+  const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(cols);
   const auto row = [&](std::ptrdiff_t base, int len, float u0, float w0) {
     const typename L::V first[3] = {L::set1(plane.a[0] + u0 * plane.l[0] + w0 * plane.r[0]),
                                     L::set1(plane.a[1] + u0 * plane.l[1] + w0 * plane.r[1]),
                                     L::set1(plane.a[2] + u0 * plane.l[2] + w0 * plane.r[2])};
-    const RowVerdict v = scan_row<L>(p.x + base, p.y + base, p.z + base, {budgets.budget + base, budgets.sure2 + base, budgets.wide}, len,
-                                  first, plane);
+    const RowVerdict v = scan_row<L>(p.x + base, p.y + base, p.z + base,
+                                     {budgets.budget + base, budgets.sure2 + base, budgets.wide}, len, first, plane);
     count += len;
-    ok = !v.over;
-    undecided |= v.close;
+    ok = !v.over && (!v.close || row_within_budget_double(grid, p, budgets.budget, t, c, static_cast<int>(base / pitch),
+                                                          static_cast<int>(base % pitch),
+                                                          static_cast<int>(base % pitch) + len - 1));
   };
-  const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(cols);
   if (tabled) {
     const std::ptrdiff_t apex = region.apex.y * pitch + region.apex.x;
     const long long ox = region.apex.x - t.apex.x, oy = region.apex.y - t.apex.y;  // region's apex from t's
@@ -207,7 +225,6 @@ bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const Scan
     }
   }
   if (visited) *visited += count;
-  if (ok && undecided) return within_budget_double(grid, p, budgets.budget, t, c, region);
   return ok;
 }
 

@@ -1,9 +1,6 @@
 #include "lod/triangle_scan.h"
 
 #include <algorithm>
-#include <bit>
-#include <cstdlib>
-#include <limits>
 #include <vector>
 
 #include <emmintrin.h>  // SSE2: the baseline's row scan, four nodes at a time
@@ -30,61 +27,43 @@ struct Sse2Lanes {
   static bool any(V m) { return _mm_movemask_ps(m) != 0; }
 };
 
-constexpr int kTabledLevels = 13;  // legs up to 2^12 cells; larger ones find their rows
-
 }  // namespace
 
-const std::vector<ShapeRow>* shape_rows(int lx, int ly, int rx, int ry) {
-  const int size = std::max(std::abs(lx), std::abs(ly));
-  if (size >= 1 << kTabledLevels || (size & (size - 1)) != 0) return nullptr;  // not a hierarchy's legs
-  const auto sign = [](int v) { return v > 0 ? 2 : v < 0 ? 0 : 1; };
-  const int level = std::countr_zero(static_cast<unsigned>(size));  // legs are (2^k, 0) or (2^k, 2^k) turned
-  const std::size_t key = static_cast<std::size_t>(((level * 3 + sign(lx)) * 3 + sign(ly)) * 9 + sign(rx) * 3 + sign(ry));
-  thread_local std::vector<std::vector<ShapeRow>> shapes(kTabledLevels * 81);
-  std::vector<ShapeRow>& rows = shapes[key];
-  if (rows.empty()) {
-    const float inv_len2 = 1.0f / static_cast<float>(lx * lx + ly * ly);  // as within_budget's
-    const Tri t{{0, 0}, {lx, ly}, {rx, ry}};
-    const RowSpans spans(t);
-    for (int y = std::min({0, ly, ry}); y <= std::max({0, ly, ry}); ++y) {
-      const int x0 = spans.first(y);
-      rows.push_back({y, x0, spans.last(y) - x0 + 1, static_cast<float>(x0 * lx + y * ly) * inv_len2,
-                      static_cast<float>(x0 * rx + y * ry) * inv_len2});
-    }
+const std::vector<ShapeRow>* make_shape_rows(std::vector<ShapeRow>& rows, int lx, int ly, int rx, int ry) {
+  const float inv_len2 = 1.0f / static_cast<float>(lx * lx + ly * ly);  // as scan_triangle's
+  const Tri t{{0, 0}, {lx, ly}, {rx, ry}};
+  const RowSpans spans(t);
+  for (int y = std::min({0, ly, ry}); y <= std::max({0, ly, ry}); ++y) {
+    const int x0 = spans.first(y);
+    rows.push_back({y, x0, spans.last(y) - x0 + 1, static_cast<float>(x0 * lx + y * ly) * inv_len2,
+                    static_cast<float>(x0 * rx + y * ry) * inv_len2});
   }
   return &rows;
 }
 
-// Every node is judged within 1e-13 relative, far inside the budgets' own 1e-5 margin.
-bool within_budget_double(const GridHierarchy& grid, const NodePositions& p, const float* budget,
-                          const Tri& t, const TriCorners& c, const Tri& region) {
+bool row_within_budget_double(const GridHierarchy& grid, const NodePositions& p, const float* budget, const Tri& t,
+                              const TriCorners& c, int y, int x0, int x1) {
   const int lx = t.left.x - t.apex.x, ly = t.left.y - t.apex.y;
   const int rx = t.right.x - t.apex.x, ry = t.right.y - t.apex.y;
   const double inv_len2 = 1.0 / (double(lx) * lx + double(ly) * ly);
   const double ax = c.x[0], ay = c.y[0], az = c.z[0];
   const double lx3 = c.x[1] - ax, ly3 = c.y[1] - ay, lz3 = c.z[1] - az;
   const double rx3 = c.x[2] - ax, ry3 = c.y[2] - ay, rz3 = c.z[2] - az;
-  const int y0 = std::min({region.apex.y, region.left.y, region.right.y});
-  const int y1 = std::max({region.apex.y, region.left.y, region.right.y});
   const std::size_t cols = static_cast<std::size_t>(grid.cols());
-  const RowSpans spans(region);
-  for (int y = y0; y <= y1; ++y) {
-    const int dy = y - t.apex.y;
-    for (int x = spans.first(y), x1 = spans.last(y); x <= x1; ++x) {
-      const int dx = x - t.apex.x;
-      const double u = (double(dx) * lx + double(dy) * ly) * inv_len2;
-      const double w = (double(dx) * rx + double(dy) * ry) * inv_len2;
-      const std::size_t n = static_cast<std::size_t>(y) * cols + static_cast<std::size_t>(x);
-      const double ex = p.x[n] - (ax + u * lx3 + w * rx3);
-      const double ey = p.y[n] - (ay + u * ly3 + w * ry3);
-      const double ez = p.z[n] - (az + u * lz3 + w * rz3);
-      const double b = budget[n];
-      if (ex * ex + ey * ey + ez * ez > b * b) return false;
-    }
+  const int dy = y - t.apex.y;
+  for (int x = x0; x <= x1; ++x) {
+    const int dx = x - t.apex.x;
+    const double u = (double(dx) * lx + double(dy) * ly) * inv_len2;
+    const double w = (double(dx) * rx + double(dy) * ry) * inv_len2;
+    const std::size_t n = static_cast<std::size_t>(y) * cols + static_cast<std::size_t>(x);
+    const double ex = p.x[n] - (ax + u * lx3 + w * rx3);
+    const double ey = p.y[n] - (ay + u * ly3 + w * ry3);
+    const double ez = p.z[n] - (az + u * lz3 + w * rz3);
+    const double b = budget[n];
+    if (ex * ex + ey * ey + ez * ez > b * b) return false;
   }
   return true;
 }
-
 
 void scan_thresholds(const float* budget, std::size_t n, float largest, float* sure2) {
   const __m128 slack = _mm_set1_ps(scan_slack(largest)), shrink = _mm_set1_ps(1 - 1e-6f), zero = _mm_setzero_ps();
