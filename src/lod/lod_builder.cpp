@@ -262,11 +262,16 @@ std::size_t LodBuilder::build(const NodePositions& p, const TileRanges& ranges, 
     copy_nodes(p, out.first(written), x_.data(), y_.data(), z_.data());
     world_[0] = x_, world_[1] = y_, world_[2] = z_;
   }
-  // Frame to frame the view and the water change little: when the blocks this frame needed hold
-  // most of the grid's nodes, the next frame makes the whole grid in one pass instead.
-  const std::size_t block_nodes = static_cast<std::size_t>(kBlockCells + 1) * (kBlockCells + 1);
-  const std::size_t enough = 6 * p.nodes() / (10 * block_nodes) + 1;  // the fewest over 60 % of the nodes
-  whole_ = (whole_ ? blocks_needed(out.first(written), enough) : blocks_.made()) >= enough;
+  // Frame to frame the view and the water change little, so this frame's counts choose how the
+  // next one reads its nodes: the whole grid in one pass, whose nested bounds prove most large
+  // triangles without a scan, or blocks, whose triangles are scanned. Costs in units of the whole
+  // pass's per node (docs/perf.md, "Blocks or the whole grid"): a block made, and the scans a tested
+  // triangle needs in blocks beyond those of the whole grid. The whole grid when the blocks this
+  // frame needed (made, or where it was read whole, holding a drawn small triangle) cost more.
+  constexpr double kBlockCost = 113, kTestCost = 4.5;
+  const double spare = static_cast<double>(p.nodes()) - kTestCost * static_cast<double>(stats_.tested);
+  const std::size_t enough = spare < 0 ? 0 : static_cast<std::size_t>(spare / kBlockCost) + 1;  // blocks
+  whole_ = enough == 0 || (whole_ ? blocks_needed(out.first(written), enough) : blocks_.made()) >= enough;
   if (whole_) reads_.reset();
   return written;
 }
