@@ -2,7 +2,7 @@
 // The builder's node-level data, made only where the refinement needs it: per block of
 // kBlockCells x kBlockCells cells (aligned like the tiles, neighbours sharing their border nodes),
 // the nodes' world positions and budgets in block-local coordinates. Or the whole grid as one
-// block, when most of it is needed, with its nested error bounds (error_bounds.h) too: there
+// block, where that costs less (lod_builder.cpp), with its nested error bounds (error_bounds.h) too: there
 // triangles of any size are tested on nodes, and the bounds prove large ones without a scan. A
 // block's triangles are small enough that scanning them costs less than bounding every node of
 // the block (docs/perf.md, "Nested bounds for the whole grid only").
@@ -53,8 +53,8 @@ class SurfaceBlocks {
   void begin(const NodePositions& positions, const BudgetTerms& terms, float largest);
   // Block (bx, by), made on first use this frame. Throws InputError on a non-finite position in it.
   const SurfaceBlock& block(int bx, int by);
-  // The whole grid as one block, made on first use this frame: the cheaper way when most blocks are
-  // needed (one pass, no border twice, no per-block set-up), with the grid's nested bounds.
+  // The whole grid as one block, made on first use this frame: one pass, no border twice, no
+  // per-block set-up, with the grid's nested bounds.
   const SurfaceBlock& whole();
   std::size_t made() const { return used_; }
   // Block (bx, by)'s nodes in the grid.
