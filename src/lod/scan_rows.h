@@ -5,14 +5,17 @@
 // compute the same bits and give the same verdicts. Its templates are in an unnamed namespace:
 // each file keeps its own copy, not the linker's pick.
 //
-// L, the lanes: a vector type V of L::width floats, and set1, iota (0, 1, ...), load (unaligned),
-// add, sub, mul, and_, or_, less and greater (lane masks), any (a mask has a lane set).
+// L, the lanes: a vector type V of L::width floats, and set1, splat<i> (lane i of an __m128 in
+// every lane), iota (0, 1, ...), load (unaligned), add, sub, mul, and_, or_, less and greater (lane
+// masks), any (a mask has a lane set).
 #include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstdlib>
 #include <limits>
 #include <vector>
+
+#include <xmmintrin.h>  // a row's first value, its three coordinates in one vector
 
 #include "lod/grid_hierarchy.h"
 #include "lod/node_positions.h"
@@ -92,12 +95,12 @@ inline const std::vector<ShapeRow>* shape_rows(int lx, int ly, int rx, int ry) {
   return rows.empty() ? make_shape_rows(rows, lx, ly, rx, ry) : &rows;
 }
 
-// A triangle's interpolation for the row scan: the apex and the legs in world space (per axis), and
-// as vectors built once per triangle, how much the interpolation moves per column and the budgets'
-// rounding slack. Along a row it is linear, so a row needs its first node's value only.
+// A triangle's interpolation for the row scan: the apex and the legs in world space (x, y, z, 0),
+// and as vectors built once per triangle, how much the interpolation moves per column and the
+// budgets' rounding slack. Along a row it is linear, so a row needs its first node's value only.
 template <class L>
 struct ScanPlane {
-  float a[3], l[3], r[3];
+  __m128 a, l, r;
   typename L::V step[3];
   typename L::V slack;
 };
@@ -172,11 +175,14 @@ bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const Scan
   const float slack = scan_slack(largest);
   const float du = static_cast<float>(lx) * inv_len2, dw = static_cast<float>(rx) * inv_len2;
   ScanPlane<L> plane;
+  float at_apex[3], left[3], right[3];  // the apex and the legs, per axis
   for (int i = 0; i < 3; ++i) {
     const float* v = i == 0 ? c.x : i == 1 ? c.y : c.z;
-    plane.a[i] = v[0], plane.l[i] = v[1] - v[0], plane.r[i] = v[2] - v[0];
-    plane.step[i] = L::set1(du * plane.l[i] + dw * plane.r[i]);
+    at_apex[i] = v[0], left[i] = v[1] - v[0], right[i] = v[2] - v[0];
+    plane.step[i] = L::set1(du * left[i] + dw * right[i]);
   }
+  plane.a = _mm_setr_ps(at_apex[0], at_apex[1], at_apex[2], 0), plane.l = _mm_setr_ps(left[0], left[1], left[2], 0);
+  plane.r = _mm_setr_ps(right[0], right[1], right[2], 0);
   plane.slack = L::set1(slack);
   const int y0 = std::min({region.apex.y, region.left.y, region.right.y});
   const int y1 = std::max({region.apex.y, region.left.y, region.right.y});
@@ -192,9 +198,10 @@ bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const Scan
   // cannot decide once more in double, and the scan stops after the first row with a node over.
   const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(cols);
   const auto row = [&](std::ptrdiff_t base, int len, float u0, float w0) {
-    const typename L::V first[3] = {L::set1(plane.a[0] + u0 * plane.l[0] + w0 * plane.r[0]),
-                                    L::set1(plane.a[1] + u0 * plane.l[1] + w0 * plane.r[1]),
-                                    L::set1(plane.a[2] + u0 * plane.l[2] + w0 * plane.r[2])};
+    // The row's first value a + u0 l + w0 r, the three coordinates at once, each rounded as alone.
+    const __m128 f = _mm_add_ps(_mm_add_ps(plane.a, _mm_mul_ps(_mm_set1_ps(u0), plane.l)),
+                                _mm_mul_ps(_mm_set1_ps(w0), plane.r));
+    const typename L::V first[3] = {L::template splat<0>(f), L::template splat<1>(f), L::template splat<2>(f)};
     const RowVerdict v = scan_row<L>(p.x + base, p.y + base, p.z + base,
                                      {budgets.budget + base, budgets.sure2 + base, budgets.wide}, len, first, plane);
     count += len;

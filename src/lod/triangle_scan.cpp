@@ -15,6 +15,8 @@ struct Sse2Lanes {
   using V = __m128;
   static constexpr int width = 4;
   static V set1(float v) { return _mm_set1_ps(v); }
+  template <int i>
+  static V splat(__m128 v) { return _mm_shuffle_ps(v, v, _MM_SHUFFLE(i, i, i, i)); }
   static V iota() { return _mm_setr_ps(0, 1, 2, 3); }
   static V load(const float* p) { return _mm_loadu_ps(p); }
   static V add(V a, V b) { return _mm_add_ps(a, b); }

@@ -12,6 +12,8 @@ struct Avx2Lanes {
   using V = __m256;
   static constexpr int width = 8;
   static V set1(float v) { return _mm256_set1_ps(v); }
+  template <int i>
+  static V splat(__m128 v) { return _mm256_broadcastss_ps(_mm_shuffle_ps(v, v, _MM_SHUFFLE(i, i, i, i))); }
   static V iota() { return _mm256_setr_ps(0, 1, 2, 3, 4, 5, 6, 7); }
   static V load(const float* p) { return _mm256_loadu_ps(p); }
   static V add(V a, V b) { return _mm256_add_ps(a, b); }
