@@ -119,5 +119,23 @@ TEST(PositionCopy, BlocksRefuseNonFiniteCoordinatesByName) {
   EXPECT_EQ(x[kRows * kCols - 1], 3e38f);
 }
 
+// copy_nodes finds each id's row and column without a division: every node of grids up to the
+// largest side (65536), each landing at its own column and row.
+TEST(PositionCopy, CopiedNodesLandAtTheirIds) {
+  for (auto [rows, cols] : {std::pair{2, 65536}, {65536, 2}, {257, 257}, {1000, 1025}, {3, 40001}}) {
+    const std::size_t n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
+    const std::vector<float> rest(n, 0.0f);  // displacements: a node's world position is (col, 0, row)
+    const auto p = lod::grid_displacements(rest.data(), rest.data(), rest.data(), rows, cols, 1.0f);
+    std::vector<std::uint32_t> ids(n);
+    for (std::size_t k = 0; k < n; ++k) ids[k] = static_cast<std::uint32_t>(k);
+    std::vector<float> x(n, -1.0f), y(n, -1.0f), z(n, -1.0f);
+    lod::copy_nodes(p, ids, x.data(), y.data(), z.data());
+    for (std::size_t k = 0; k < n; ++k) {
+      ASSERT_EQ(x[k], static_cast<float>(k % static_cast<std::size_t>(cols))) << rows << "x" << cols << " id " << k;
+      ASSERT_EQ(z[k], static_cast<float>(k / static_cast<std::size_t>(cols))) << rows << "x" << cols << " id " << k;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace pond::lod_test
