@@ -97,7 +97,6 @@ bool LodBuilder::block_held(int bx, int by) {
 
 bool LodBuilder::leaf_is_fine(const SurfaceBlock& blk, const Tri& t, Point mid_point) {
   const GridHierarchy& grid = *blk.grid;
-  const float *px = blk.x.data(), *py = blk.y.data(), *pz = blk.z.data(), *budget = blk.budget.data();
   // A block's triangle is scanned whole, at once: with a compare a node, the scan's first rows cost
   // less than quick rejects at its edges' midpoints (docs/perf.md, "A block's triangle scanned at once").
   if (blk.bounds.empty()) {
@@ -105,6 +104,7 @@ bool LodBuilder::leaf_is_fine(const SurfaceBlock& blk, const Tri& t, Point mid_p
     return within_budget(grid, blk.positions(), blk.scan_budgets(), largest_, t, &stats_.scanned_nodes);
   }
   const NestedBound* bounds = blk.bounds.data();
+  const float *px = blk.x.data(), *py = blk.y.data(), *pz = blk.z.data(), *budget = blk.budget.data();
   if (const NestedBound& b = bounds[grid.id(mid_point)]; b.error <= b.min_budget) {
     ++stats_.proved;
     return true;

@@ -13,14 +13,19 @@ constexpr int kMostChecks = 48;
 
 }  // namespace
 
-bool RangeProof::proves(int x0, int x1, int y0, int y1, std::span<const Point> corners) const {
-  Band band{{0, 0, 0}, {0, 0, 0}, x0, x1, y0, y1};
-  for (int i = 0; i < 3; ++i) band.least[i] = HUGE_VAL, band.greatest[i] = -HUGE_VAL;
+RangeProof::Span3 RangeProof::interpolation_range(std::span<const Point> corners) const {
+  Span3 r;
+  for (int i = 0; i < 3; ++i) r.least[i] = HUGE_VAL, r.greatest[i] = -HUGE_VAL;
   for (const Point& corner : corners) {
     const TileBounds c = ranges_.at_node(corner.x, corner.y);
     const double lo[3] = {c.min_x, c.min_y, c.min_z}, hi[3] = {c.max_x, c.max_y, c.max_z};
-    for (int i = 0; i < 3; ++i) band.least[i] = std::min(band.least[i], lo[i]), band.greatest[i] = std::max(band.greatest[i], hi[i]);
+    for (int i = 0; i < 3; ++i) r.least[i] = std::min(r.least[i], lo[i]), r.greatest[i] = std::max(r.greatest[i], hi[i]);
   }
+  return r;
+}
+
+bool RangeProof::proves(int x0, int x1, int y0, int y1, const Span3& range) const {
+  const Band band{range, x0, x1, y0, y1};
   const TileRect tiles = ranges_.tiles_of(x0, x1, y0, y1);
   const int k = ranges_.level_for(tiles);
   int checks = 0;
@@ -39,9 +44,9 @@ bool RangeProof::cell_proves(int k, int a, int b, const Band& band, int& checks)
   if (x0 > x1 || y0 > y1) return true;
   if (++checks > kMostChecks) return false;
   const TileBounds& r = ranges_.cell(k, a, b);
-  const double wx = std::max(r.max_x - band.least[0], band.greatest[0] - r.min_x);
-  const double wy = std::max(r.max_y - band.least[1], band.greatest[1] - r.min_y);
-  const double wz = std::max(r.max_z - band.least[2], band.greatest[2] - r.min_z);
+  const double wx = std::max(r.max_x - band.range.least[0], band.range.greatest[0] - r.min_x);
+  const double wy = std::max(r.max_y - band.range.least[1], band.range.greatest[1] - r.min_y);
+  const double wz = std::max(r.max_z - band.range.least[2], band.range.greatest[2] - r.min_z);
   const double error = std::sqrt(wx * wx + wy * wy + wz * wz) * (1 + 1e-12);
   const double h = ranges_.spacing();
   if (error <= budget_.least({x0 * h + r.min_x, double(r.min_y), y0 * h + r.min_z},

@@ -19,14 +19,24 @@ class RangeProof {
  public:
   RangeProof(const TileRanges& ranges, const BoxBudget& budget) : ranges_(ranges), budget_(budget) {}
 
+  // The range of the piecewise-linear interpolation between `corners` (grid nodes), per
+  // coordinate, from the tile ranges of the tiles holding them.
+  struct Span3 {
+    double least[3], greatest[3];
+  };
+  Span3 interpolation_range(std::span<const Point> corners) const;
+
   // Are the nodes of columns [x0, x1] and rows [y0, y1] (inside the grid) within budget of the
-  // piecewise-linear interpolation between `corners` (grid nodes of that rectangle)?
-  bool proves(int x0, int x1, int y0, int y1, std::span<const Point> corners) const;
+  // interpolation between `corners`, whose range is `range`? (Parts of one triangle share it.)
+  bool proves(int x0, int x1, int y0, int y1, const Span3& range) const;
+  bool proves(int x0, int x1, int y0, int y1, std::span<const Point> corners) const {
+    return proves(x0, x1, y0, y1, interpolation_range(corners));
+  }
 
  private:
   struct Band {
-    double least[3], greatest[3];  // the interpolation's range, per coordinate
-    int x0, x1, y0, y1;            // the region's nodes
+    Span3 range;
+    int x0, x1, y0, y1;  // the region's nodes
   };
   bool cell_proves(int k, int a, int b, const Band& band, int& checks) const;
 

@@ -184,8 +184,6 @@ bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const Scan
   plane.a = _mm_setr_ps(at_apex[0], at_apex[1], at_apex[2], 0), plane.l = _mm_setr_ps(left[0], left[1], left[2], 0);
   plane.r = _mm_setr_ps(right[0], right[1], right[2], 0);
   plane.slack = L::set1(slack);
-  const int y0 = std::min({region.apex.y, region.left.y, region.right.y});
-  const int y1 = std::max({region.apex.y, region.left.y, region.right.y});
   const std::size_t cols = static_cast<std::size_t>(grid.cols());
   long long count = 0;
   bool ok = true;
@@ -223,7 +221,8 @@ bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const Scan
     }
   } else {
     const RowSpans spans(region);
-    for (int y = y0; y <= y1 && ok; ++y) {
+    const int y1 = std::max({region.apex.y, region.left.y, region.right.y});
+    for (int y = std::min({region.apex.y, region.left.y, region.right.y}); y <= y1 && ok; ++y) {
       // Weights along the row are linear in x.
       const int x0 = spans.first(y);
       const long long dx = x0 - t.apex.x, dy = y - t.apex.y;

@@ -48,10 +48,11 @@ LodBuilder::Fit LodBuilder::wide_leaf_fits(const Tri& t, Point m) {
   // all asked for at once; only the others' blocks are made.
   const Point vertices[3] = {t.apex, t.left, t.right};
   const RangeProof range_proof(*ranges_, *box_budget_);
+  const RangeProof::Span3 range = range_proof.interpolation_range(vertices);  // every part's
   bool ranged[4], all_ranged = true, held = true;
   for (int k = 0; k < n; ++k) {
     const CellBox b = box_of(tris[k]);
-    ranged[k] = range_proof.proves(b.x0, b.x1, b.y0, b.y1, vertices);
+    ranged[k] = range_proof.proves(b.x0, b.x1, b.y0, b.y1, range);
     all_ranged = all_ranged && ranged[k];
   }
   if (all_ranged) {
