@@ -86,25 +86,18 @@ BoxBudget::BoxBudget(const BudgetTerms& terms) : t_(terms) {
   margin_ = 4 * t_.delta * (1 + t_.tan_x + t_.tan_y);
 }
 
-double BoxBudget::Plane::largest(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
-  const double* corner[2] = {lo.data(), hi.data()};
-  return n[0] * corner[upper[0]][0] + n[1] * corner[upper[1]][1] + n[2] * corner[upper[2]][2] + c;
-}
-
-double BoxBudget::Plane::smallest(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
-  return largest(hi, lo);  // the corner of the other signs
-}
-
-double BoxBudget::least(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
+bool BoxBudget::outside(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
   // The box is outside when it lies wholly outside one plane (depth > 0, |sx| <= tx depth,
   // |sy| <= ty depth) by the margin. Looking along +-y the roll is free (view_basis): only the
   // depth plane culls.
-  bool outside = depth_.largest(lo, hi) <= -margin_;
+  bool out = depth_.largest(lo, hi) <= -margin_;
   if (!t_.basis.cone)
-    for (const Plane& side : sides_) outside = outside || side.largest(lo, hi) <= -margin_;
-  if (outside) return std::numeric_limits<double>::infinity();
-  const double least_depth = depth_.smallest(lo, hi);
-  return t_.per_depth * std::max(least_depth - t_.delta, 0.0);
+    for (const Plane& side : sides_) out = out || side.largest(lo, hi) <= -margin_;
+  return out;
+}
+
+double BoxBudget::least(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
+  return outside(lo, hi) ? std::numeric_limits<double>::infinity() : depth_budget(lo, hi);
 }
 
 bool wide_budgets_available() { return kAvx2Copy && __builtin_cpu_supports("avx2"); }

@@ -5,6 +5,7 @@
 // is the same as distance <= tau * depth / K with K = height / (2 tan(fovy / 2)). Nodes outside
 // the view frustum (behind the camera or projecting outside the viewport) may be left out freely:
 // their budget is +infinity.
+#include <algorithm>
 #include <array>
 #include <cstddef>
 
@@ -51,6 +52,11 @@ class BoxBudget {
  public:
   explicit BoxBudget(const BudgetTerms& terms);
   double least(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const;
+  // error <= least(lo, hi), the depth's budget tried first: only a box it does not allow needs the
+  // frustum's planes.
+  bool allows(double error, const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
+    return error <= depth_budget(lo, hi) || outside(lo, hi);
+  }
 
  private:
   // A linear function n . p + c of a world point: its extremes over a box lie at the corners the
@@ -59,9 +65,18 @@ class BoxBudget {
   struct Plane {
     double n[3], c;
     int upper[3];
-    double largest(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const;
-    double smallest(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const;
+    double largest(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
+      const double* corner[2] = {lo.data(), hi.data()};
+      return n[0] * corner[upper[0]][0] + n[1] * corner[upper[1]][1] + n[2] * corner[upper[2]][2] + c;
+    }
+    double smallest(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
+      return largest(hi, lo);  // the corner of the other signs
+    }
   };
+  bool outside(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const;
+  double depth_budget(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
+    return t_.per_depth * std::max(depth_.smallest(lo, hi) - t_.delta, 0.0);
+  }
   BudgetTerms t_;
   Plane depth_;
   Plane sides_[4];  // tan_x depth -+ sx and tan_y depth -+ sy: >= 0 inside the frustum

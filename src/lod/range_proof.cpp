@@ -14,14 +14,8 @@ constexpr int kMostChecks = 48;
 }  // namespace
 
 RangeProof::Span3 RangeProof::interpolation_range(std::span<const Point> corners) const {
-  Span3 r;
-  for (int i = 0; i < 3; ++i) r.least[i] = HUGE_VAL, r.greatest[i] = -HUGE_VAL;
-  for (const Point& corner : corners) {
-    const TileBounds c = ranges_.at_node(corner.x, corner.y);
-    const double lo[3] = {c.min_x, c.min_y, c.min_z}, hi[3] = {c.max_x, c.max_y, c.max_z};
-    for (int i = 0; i < 3; ++i) r.least[i] = std::min(r.least[i], lo[i]), r.greatest[i] = std::max(r.greatest[i], hi[i]);
-  }
-  return r;
+  const TileBounds c = ranges_.hull_at(corners);
+  return {{c.min_x, c.min_y, c.min_z}, {c.max_x, c.max_y, c.max_z}};
 }
 
 bool RangeProof::proves(int x0, int x1, int y0, int y1, const Span3& range) const {
@@ -49,8 +43,8 @@ bool RangeProof::cell_proves(int k, int a, int b, const Band& band, int& checks)
   const double wz = std::max(r.max_z - band.range.least[2], band.range.greatest[2] - r.min_z);
   const double error = std::sqrt(wx * wx + wy * wy + wz * wz) * (1 + 1e-12);
   const double h = ranges_.spacing();
-  if (error <= budget_.least({x0 * h + r.min_x, double(r.min_y), y0 * h + r.min_z},
-                             {x1 * h + r.max_x, double(r.max_y), y1 * h + r.max_z}))
+  if (budget_.allows(error, {x0 * h + r.min_x, double(r.min_y), y0 * h + r.min_z},
+                     {x1 * h + r.max_x, double(r.max_y), y1 * h + r.max_z}))
     return true;
   if (k == 0) return false;
   for (int q = 0; q < 4; ++q)

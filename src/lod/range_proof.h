@@ -35,7 +35,7 @@ class RangeProof {
 
  private:
   struct Band {
-    Span3 range;
+    const Span3& range;
     int x0, x1, y0, y1;  // the region's nodes
   };
   bool cell_proves(int k, int a, int b, const Band& band, int& checks) const;

@@ -51,40 +51,37 @@ TileRanges::TileRanges(int rows, int cols, double spacing, std::vector<TileBound
   }
 }
 
-TileRect TileRanges::tiles_of(int x0, int x1, int y0, int y1) const {
-  const auto first = [](int k, int tiles) { return std::min(k / kTileCells, tiles - 1); };
-  const auto last = [](int k, int tiles) { return k > 0 ? std::min((k - 1) / kTileCells, tiles - 1) : 0; };
-  const int a0 = first(x0, tiles_x_), b0 = first(y0, tiles_y_);
-  return {a0, std::max(a0, last(x1, tiles_x_)), b0, std::max(b0, last(y1, tiles_y_))};
+TileBounds TileRanges::at_node(int x, int y) const {
+  const Point node{x, y};
+  return hull_at(std::span(&node, 1));
 }
 
-TileBounds TileRanges::at_node(int x, int y) const {
-  // The tiles holding the node: one, two (on a tile border) or four (at a tile corner). Taking the
-  // four (a0, b0), (a1, b0), (a0, b1), (a1, b1), with a0 = a1 off a column border and b0 = b1 off a
-  // row border, counts some tile twice, which an intersection does not mind: no branches.
-  const int a0 = std::clamp((x - 1) / kTileCells, 0, tiles_x_ - 1), a1 = std::min(x / kTileCells, tiles_x_ - 1);
-  const int b0 = std::clamp((y - 1) / kTileCells, 0, tiles_y_ - 1), b1 = std::min(y / kTileCells, tiles_y_ - 1);
-  const auto tile = [&](int a, int b) {
-    return reinterpret_cast<const float*>(&levels_[0][static_cast<std::size_t>(b) * static_cast<std::size_t>(tiles_x_) +
-                                                      static_cast<std::size_t>(a)]);
-  };
-  // A tile as two overlapping vectors, (min x, min y, min z, max x) and (min z, max x, max y, max z):
-  // the greatest of the first's lanes 0-2 and the least of the second's lanes 1-3 are the bounds.
-  __m128 least = _mm_loadu_ps(tile(a0, b0)), greatest = _mm_loadu_ps(tile(a0, b0) + 2);
-  for (const float* t : {tile(a1, b0), tile(a0, b1), tile(a1, b1)}) {
-    least = _mm_max_ps(least, _mm_loadu_ps(t));
-    greatest = _mm_min_ps(greatest, _mm_loadu_ps(t + 2));
+TileBounds TileRanges::hull_at(std::span<const Point> nodes) const {
+  // A node's tiles: one, two (on a tile border) or four (at a tile corner). Taking the four (a0, b0),
+  // (a1, b0), (a0, b1), (a1, b1), with a0 = a1 off a column border and b0 = b1 off a row border,
+  // counts some tile twice, which an intersection does not mind: no branches. A tile is read as two
+  // overlapping vectors, (min x, min y, min z, max x) and (min z, max x, max y, max z): the node's
+  // lower bounds are the greatest of the first's lanes 0-2, its upper ones the least of the
+  // second's lanes 1-3; the hull takes the least and the greatest of those over the nodes.
+  const float* const tiles = reinterpret_cast<const float*>(levels_[0].data());
+  constexpr std::size_t kFloats = sizeof(TileBounds) / sizeof(float);
+  const unsigned last_a = static_cast<unsigned>(tiles_x_ - 1), last_b = static_cast<unsigned>(tiles_y_ - 1);
+  const std::size_t row = static_cast<std::size_t>(tiles_x_) * kFloats;
+  __m128 low = _mm_set1_ps(kInf), high = _mm_set1_ps(-kInf);
+  for (const Point& p : nodes) {
+    // (x - 1) / kTileCells and x / kTileCells, clamped to the grid's tiles (x = 0: tile 0 twice).
+    const unsigned x = static_cast<unsigned>(p.x), y = static_cast<unsigned>(p.y);
+    const std::size_t a0 = std::min((x - (x > 0)) / kTileCells, last_a) * kFloats, a1 = std::min(x / kTileCells, last_a) * kFloats;
+    const std::size_t b0 = std::min((y - (y > 0)) / kTileCells, last_b) * row, b1 = std::min(y / kTileCells, last_b) * row;
+    const float *t00 = tiles + b0 + a0, *t10 = tiles + b0 + a1, *t01 = tiles + b1 + a0, *t11 = tiles + b1 + a1;
+    const __m128 least = _mm_max_ps(_mm_max_ps(_mm_loadu_ps(t00), _mm_loadu_ps(t10)), _mm_max_ps(_mm_loadu_ps(t01), _mm_loadu_ps(t11)));
+    const __m128 greatest = _mm_min_ps(_mm_min_ps(_mm_loadu_ps(t00 + 2), _mm_loadu_ps(t10 + 2)),
+                                       _mm_min_ps(_mm_loadu_ps(t01 + 2), _mm_loadu_ps(t11 + 2)));
+    low = _mm_min_ps(low, least), high = _mm_max_ps(high, greatest);
   }
   alignas(16) float lo[4], hi[4];
-  _mm_store_ps(lo, least), _mm_store_ps(hi, greatest);
+  _mm_store_ps(lo, low), _mm_store_ps(hi, high);
   return {lo[0], lo[1], lo[2], hi[1], hi[2], hi[3]};
-}
-
-int TileRanges::level_for(const TileRect& r) const {
-  int k = 0;
-  const int side = std::min(r.a1 - r.a0, r.b1 - r.b0) + 1;
-  while (k + 1 < levels() && (2 << k) <= side) ++k;
-  return k;
 }
 
 TileRanges tile_ranges(const NodePositions& p) {

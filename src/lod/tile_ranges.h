@@ -6,10 +6,13 @@
 // region's ranges' widths (the rest grid is linear, so it interpolates exactly), and the region's
 // world box is its rest box widened by the ranges: that is all the builder's coarse test needs.
 // A pyramid of 2^k x 2^k tile blocks covers a rectangle of tiles in a few cells (range_proof.h).
+#include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <span>
 #include <vector>
 
+#include "lod/grid_hierarchy.h"
 #include "lod/node_positions.h"
 #include "shared/tile_bounds.h"
 
@@ -40,7 +43,15 @@ class TileRanges {
   float largest() const { return largest_; }
 
   // The tiles holding every node of columns [x0, x1] and rows [y0, y1] (inside the grid).
-  TileRect tiles_of(int x0, int x1, int y0, int y1) const;
+  TileRect tiles_of(int x0, int x1, int y0, int y1) const {
+    // Node k lies in tiles (k - 1) / kTileCells and k / kTileCells (unsigned: k >= 0, a shift).
+    const auto first = [](int k, int tiles) { return std::min(static_cast<int>(static_cast<unsigned>(k) / kTileCells), tiles - 1); };
+    const auto last = [](int k, int tiles) {
+      return k > 0 ? std::min(static_cast<int>(static_cast<unsigned>(k - 1) / kTileCells), tiles - 1) : 0;
+    };
+    const int a0 = first(x0, tiles_x_), b0 = first(y0, tiles_y_);
+    return {a0, std::max(a0, last(x1, tiles_x_)), b0, std::max(b0, last(y1, tiles_y_))};
+  }
   // The pyramid: level k's cells are blocks of 2^k x 2^k tiles, cells_x(k) x cells_y(k) of them.
   int levels() const { return static_cast<int>(levels_.size()); }
   int cells_x(int k) const { return dims_[static_cast<std::size_t>(k)].first; }
@@ -52,8 +63,14 @@ class TileRanges {
   // A range of node (col x, row y)'s deviation: the intersection of the tiles holding it (up to
   // four: neighbours share their border nodes), so reading no node.
   TileBounds at_node(int x, int y) const;
-  // The level whose cells cover `r` in at most a few (2 x 2, or 2 x 3 for a 1 x 2 rectangle).
-  int level_for(const TileRect& r) const;
+  // The hull of at_node over `nodes`: each coordinate's least lower and greatest upper bound.
+  TileBounds hull_at(std::span<const Point> nodes) const;
+  // The level whose cells cover `r` in at most a few (2 x 2, or 2 x 3 for a 1 x 2 rectangle): cells
+  // of the largest power of two tiles within r's shorter side.
+  int level_for(const TileRect& r) const {
+    const int side = std::min(r.a1 - r.a0, r.b1 - r.b0) + 1;
+    return std::min(static_cast<int>(std::bit_width(static_cast<unsigned>(side))), static_cast<int>(dims_.size())) - 1;
+  }
 
  private:
   int rows_ = 0, cols_ = 0, tiles_x_ = 0, tiles_y_ = 0;

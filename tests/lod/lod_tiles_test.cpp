@@ -97,7 +97,7 @@ TEST(TileRanges, RejectNonFiniteInput) {
 
 // A node's range is the intersection of the tiles holding it (one, two or four), on grids whose
 // last tiles are narrower, with random bounds.
-TEST(TileRanges, AtNodeIsTheIntersectionOfItsTiles) {
+TEST(TileRanges, AtNodeIsTheIntersectionOfItsTilesAndHullsTakeTheirUnion) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> u(-3, 3);
   for (auto [rows, cols] : {std::pair{2, 2}, {17, 17}, {18, 40}, {65, 65}, {100, 37}}) {
@@ -125,6 +125,21 @@ TEST(TileRanges, AtNodeIsTheIntersectionOfItsTiles) {
         mismatches += std::array<float, 6>{got.min_x, got.min_y, got.min_z, got.max_x, got.max_y, got.max_z} != want;
       }
     EXPECT_EQ(mismatches, 0) << rows << "x" << cols;
+    // The hull over several nodes: each coordinate's least lower and greatest upper bound.
+    std::uniform_int_distribution<int> col(0, cols - 1), row(0, rows - 1);
+    for (int k = 0; k < 200; ++k) {
+      const lod::Point nodes[3] = {{col(rng), row(rng)}, {col(rng), row(rng)}, {col(rng), row(rng)}};
+      const int n = 1 + k % 3;
+      std::array<float, 6> want{INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+      for (int i = 0; i < n; ++i) {
+        const lod::TileBounds t = r.at_node(nodes[i].x, nodes[i].y);
+        const std::array<float, 6> v{t.min_x, t.min_y, t.min_z, t.max_x, t.max_y, t.max_z};
+        for (std::size_t j = 0; j < 6; ++j) want[j] = j < 3 ? std::min(want[j], v[j]) : std::max(want[j], v[j]);
+      }
+      const lod::TileBounds got = r.hull_at(std::span(nodes, static_cast<std::size_t>(n)));
+      EXPECT_EQ((std::array<float, 6>{got.min_x, got.min_y, got.min_z, got.max_x, got.max_y, got.max_z}), want)
+          << rows << "x" << cols << " case " << k;
+    }
   }
 }
 
@@ -213,6 +228,8 @@ TEST(BoxBudget, IsTheLeastBudgetOfItsBox) {
       std::vector<float> budget(x.size());
       lod::node_budgets(lod::soa_positions(x.data(), y.data(), z.data(), 5, 25), terms, budget.data());
       const double least = box_budget.least(lo, hi);
+      for (double error : {0.0, 0.5 * least, least, std::nextafter(least, HUGE_VAL), 2 * least + 1e-3, 1e30})
+        ASSERT_EQ(box_budget.allows(error, lo, hi), error <= least) << "camera " << k << " box " << b << " error " << error;
       bool any_in_view = false, corners_in_view = true;
       double least_corner = HUGE_VAL;
       for (int i = 0; i < 125; ++i) {
