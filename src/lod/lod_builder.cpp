@@ -72,7 +72,10 @@ LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
     if (inside) return leaf_is_fine(b, local, {m.x - b.origin.x, m.y - b.origin.y});
     return clipped_leaf_is_fine(b, clip_to_grid(local, b.grid->rows(), b.grid->cols()));
   };
-  if (small && blocks_.made(bx, by)) return fit(on_nodes() || ranged());
+  // A block made last frame is likely needed again: its nodes first then too, not a ranged test
+  // that would most likely fail (where the host holds it already: no wait is added for it).
+  if (small && (blocks_.made(bx, by) || (blocks_.made_last_frame(bx, by) && block_on_host(bx, by))))
+    return fit(on_nodes() || ranged());
   if (ranged()) return Fit::yes;
   if (wide) return wide_leaf_fits(t, m);
   if (!small) return Fit::no;
@@ -92,6 +95,14 @@ bool LodBuilder::block_held(int bx, int by) {
     h = positions_.fetch->holds(w) ? 1 : 2;
     if (h == 2) to_bring_.push_back(w);
   }
+  return h == 1;
+}
+
+// Whether block (bx, by)'s nodes are on the host, without asking for them.
+bool LodBuilder::block_on_host(int bx, int by) {
+  if (!positions_.fetch) return true;
+  std::uint8_t& h = held_at(bx, by);
+  if (h == 0 && positions_.fetch->holds(blocks_.window(bx, by))) h = 1;
   return h == 1;
 }
 

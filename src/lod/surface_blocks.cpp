@@ -39,7 +39,7 @@ const GridHierarchy* SurfaceBlocks::shape(int rows, int cols) {
 }
 
 const SurfaceBlock& SurfaceBlocks::block(int bx, int by) {
-  const std::size_t k = static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_x_) + static_cast<std::size_t>(bx);
+  const std::size_t k = index(bx, by);
   if (made_in_[k] == frame_) return *pool_[slot_[k]];
   if (used_ == pool_.size()) pool_.push_back(std::make_unique<SurfaceBlock>());
   SurfaceBlock& b = *pool_[used_];

@@ -59,11 +59,14 @@ class SurfaceBlocks {
   std::size_t made() const { return used_; }
   // Block (bx, by)'s nodes in the grid.
   core::GridWindow window(int bx, int by) const;
-  bool made(int bx, int by) const {
-    return made_in_[static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_x_) + static_cast<std::size_t>(bx)] == frame_;
-  }
+  bool made(int bx, int by) const { return made_in_[index(bx, by)] == frame_; }
+  // Made in the frame before this one (frame to frame, the blocks a view needs change little).
+  bool made_last_frame(int bx, int by) const { return frame_ > 1 && made_in_[index(bx, by)] == frame_ - 1; }
 
  private:
+  std::size_t index(int bx, int by) const {
+    return static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_x_) + static_cast<std::size_t>(bx);
+  }
   const GridHierarchy* shape(int rows, int cols);
   void make(SurfaceBlock& b, Point origin, int rows, int cols);
 

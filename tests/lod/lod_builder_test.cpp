@@ -156,6 +156,29 @@ TEST(LodBuilder, SameInputGivesSameIndices) {
   EXPECT_EQ(build(s, 65, 40, cam, 1.0).tris, build(s, 65, 40, cam, 1.0).tris);
 }
 
+// A builder that has built other frames (whose blocks it tests on their nodes first, and which
+// may read the whole grid) gives each frame the mesh a new builder gives it.
+TEST(LodBuilder, FramesBeforeDoNotChangeTheMesh) {
+  const int n = 257;
+  const std::vector<float> states[2] = {simulated_pond(n, n, 400, 20, 10, 5), simulated_pond(n, n, 100, 5, 20, 6)};
+  lod::LodBuilder builder(n, n);
+  std::vector<std::uint32_t> out(builder.max_indices());
+  int in_blocks = 0;
+  for (int frame = 0; frame < 12; ++frame) {
+    const std::vector<float>& state = states[frame / 4 % 2];
+    const double x = 100.0 + 6.0 * frame;
+    const CheckCamera cam{{x, 150.0 - 30 * (frame % 2), -80}, {x, 0, 128}, 60, 1280, 720};
+    const lod::Camera c{cam.eye, cam.target, cam.fovy_degrees, cam.width, cam.height};
+    const std::size_t count = builder.build(lod::interleaved_positions(state.data(), n, n), c, 1.0, out);
+    in_blocks += !builder.stats().whole;
+    EXPECT_EQ(std::vector<std::uint32_t>(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(count)),
+              build(state, n, n, cam, 1.0).tris)
+        << "frame " << frame;
+  }
+  EXPECT_GE(in_blocks, 4);  // frames in blocks, after blocks and after the whole grid
+  EXPECT_LE(in_blocks, 10);
+}
+
 TEST(LodBuilder, ReadsStructureOfArraysLikeInterleaved) {
   const int rows = 33, cols = 21;
   const std::vector<float> s = analytic_ripples(rows, cols, 5, 0.7, 4);
