@@ -14,14 +14,14 @@ namespace pond::lod {
 
 #if POND_LOD_AVX2
 inline constexpr bool kAvx2Copy = true;
-void node_budgets_avx2(const NodePositions& p, const BudgetTerms& t, float* budget);  // camera_budget_avx2.cpp
+void node_budgets_avx2(const NodePositions& p, const BudgetTerms& t, float* budget, bool all_in_view);  // camera_budget_avx2.cpp
 #else
 inline constexpr bool kAvx2Copy = false;  // IA-32 builds
 #endif
 
 namespace {
 
-inline void budget_loop(const NodePositions& p, const BudgetTerms& t, float* budget) {
+inline void budget_loop(const NodePositions& p, const BudgetTerms& t, float* budget, bool all_in_view) {
   const ViewBasis& b = t.basis;
   const float delta = static_cast<float>(t.delta);
   const float tx = static_cast<float>(t.tan_x), ty = static_cast<float>(t.tan_y);
@@ -39,6 +39,15 @@ inline void budget_loop(const NodePositions& p, const BudgetTerms& t, float* bud
   // Branch-free bodies (& rather than &&, selects) so the compiler vectorizes; the cone apart.
   // A node counts as in view when it might be (widened by delta); its budget uses the lowest
   // depth it might have, clamped at 0.
+  if (all_in_view) {  // the budgets as below, operation for operation, without the frustum's tests
+    for (std::size_t k = 0; k < n; ++k) {
+      const float dx = px[k] - ex, dy = py[k] - ey, dz = pz[k] - ez;
+      const float depth = dx * f0 + dy * f1 + dz * f2;
+      const float low = depth - delta;
+      budget[k] = per_depth * std::max(low, 0.0f);
+    }
+    return;
+  }
   if (b.cone) {
     for (std::size_t k = 0; k < n; ++k) {
       const float dx = px[k] - ex, dy = py[k] - ey, dz = pz[k] - ez;

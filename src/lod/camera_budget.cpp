@@ -96,17 +96,25 @@ bool BoxBudget::outside(const std::array<double, 3>& lo, const std::array<double
   return out;
 }
 
+bool BoxBudget::inside(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
+  if (t_.basis.cone || depth_.smallest(lo, hi) < margin_) return false;
+  for (const Plane& side : sides_)
+    if (side.smallest(lo, hi) < margin_) return false;
+  return true;
+}
+
 double BoxBudget::least(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
   return outside(lo, hi) ? std::numeric_limits<double>::infinity() : depth_budget(lo, hi);
 }
 
 bool wide_budgets_available() { return kAvx2Copy && __builtin_cpu_supports("avx2"); }
 
-void node_budgets(const NodePositions& p, const BudgetTerms& t, float* budget, [[maybe_unused]] bool wide) {
+void node_budgets(const NodePositions& p, const BudgetTerms& t, float* budget, [[maybe_unused]] bool wide,
+                  bool all_in_view) {
 #if POND_LOD_AVX2
-  if (wide && wide_budgets_available()) return node_budgets_avx2(p, t, budget);
+  if (wide && wide_budgets_available()) return node_budgets_avx2(p, t, budget, all_in_view);
 #endif
-  budget_loop(p, t, budget);
+  budget_loop(p, t, budget, all_in_view);
 }
 
 }  // namespace pond::lod

@@ -57,6 +57,9 @@ class BoxBudget {
   bool allows(double error, const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
     return error <= depth_budget(lo, hi) || outside(lo, hi);
   }
+  // The box lies inside the frustum by the margin (never when looking along +-y): every node in
+  // it is in view for node_budgets too, whose float rounding the margin covers.
+  bool inside(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const;
 
  private:
   // A linear function n . p + c of a world point: its extremes over a box lie at the corners the
@@ -87,7 +90,10 @@ class BoxBudget {
 // (vectorized) and kept conservative, with `terms` (of a `largest` bounding every |coordinate| of
 // the positions). With `wide`, by the AVX2 copy where wide_budgets_available(): the same bits
 // (callers pass core::cpu_has(avx2), so that POND_CPU_FEATURES_MASK can hide it).
-void node_budgets(const NodePositions& positions, const BudgetTerms& terms, float* budget, bool wide = true);
+// With `all_in_view` (BoxBudget::inside of a box holding every node), the frustum's tests are
+// skipped: the same bits.
+void node_budgets(const NodePositions& positions, const BudgetTerms& terms, float* budget, bool wide = true,
+                  bool all_in_view = false);
 // This build has node_budgets' AVX2 copy (not IA-32) and this CPU can run it.
 bool wide_budgets_available();
 

@@ -3,6 +3,8 @@
 
 namespace pond::lod {
 
-void node_budgets_avx2(const NodePositions& p, const BudgetTerms& t, float* budget) { budget_loop(p, t, budget); }
+void node_budgets_avx2(const NodePositions& p, const BudgetTerms& t, float* budget, bool all_in_view) {
+  budget_loop(p, t, budget, all_in_view);
+}
 
 }  // namespace pond::lod

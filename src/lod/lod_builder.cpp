@@ -245,7 +245,7 @@ std::size_t LodBuilder::build(const NodePositions& p, const TileRanges& ranges, 
   largest_ = ranges.largest();
   const BudgetTerms terms = budget_terms(camera, tolerance_px, largest_);
   box_budget_.emplace(terms);
-  blocks_.begin(p, terms, largest_);
+  blocks_.begin(p, terms, largest_, ranges, *box_budget_);
 
   for (std::uint32_t id : marked_) state_[id] = 0;
   marked_.clear();

@@ -20,8 +20,10 @@ SurfaceBlocks::SurfaceBlocks(int rows, int cols)
   slot_.assign(blocks, 0);
 }
 
-void SurfaceBlocks::begin(const NodePositions& positions, const BudgetTerms& terms, float largest) {
+void SurfaceBlocks::begin(const NodePositions& positions, const BudgetTerms& terms, float largest,
+                          const TileRanges& ranges, const BoxBudget& box_budget) {
   positions_ = positions, terms_ = terms, largest_ = largest;
+  ranges_ = &ranges, box_budget_ = &box_budget;
   // Once a frame: cpu_has reads the environment. The copies exist where this build has node_budgets'.
   wide_ = core::cpu_has(core::CpuFeature::avx2) && wide_budgets_available();
   used_ = 0;
@@ -44,7 +46,13 @@ const SurfaceBlock& SurfaceBlocks::block(int bx, int by) {
   if (used_ == pool_.size()) pool_.push_back(std::make_unique<SurfaceBlock>());
   SurfaceBlock& b = *pool_[used_];
   const core::GridWindow w = window(bx, by);
-  make(b, {w.col0, w.row0}, w.rows, w.cols);
+  // The block's world box: its rest box widened by its tile's range.
+  const TileBounds& r = ranges_->cell(0, bx, by);
+  const double h = ranges_->spacing();
+  const bool in_view = box_budget_->inside({w.col0 * h + r.min_x, double(r.min_y), w.row0 * h + r.min_z},
+                                           {(w.col0 + w.cols - 1) * h + r.max_x, double(r.max_y),
+                                            (w.row0 + w.rows - 1) * h + r.max_z});
+  make(b, {w.col0, w.row0}, w.rows, w.cols, in_view);
   made_in_[k] = frame_;
   slot_[k] = static_cast<std::uint32_t>(used_++);
   return b;
@@ -57,7 +65,7 @@ core::GridWindow SurfaceBlocks::window(int bx, int by) const {
 
 const SurfaceBlock& SurfaceBlocks::whole() {
   if (whole_made_in_ != frame_) {
-    make(whole_, {0, 0}, rows_, cols_);
+    make(whole_, {0, 0}, rows_, cols_, false);
     // The vertices nested_bounds() leaves alone depend on the grid's shape only: set them once.
     if (whole_.bounds.empty()) whole_.bounds.assign(static_cast<std::size_t>(rows_) * static_cast<std::size_t>(cols_), kNothingProved);
     nested_bounds(*whole_.grid, whole_.positions(), largest_, whole_.budget.data(), whole_.bounds.data());
@@ -66,14 +74,14 @@ const SurfaceBlock& SurfaceBlocks::whole() {
   return whole_;
 }
 
-void SurfaceBlocks::make(SurfaceBlock& b, Point origin, int rows, int cols) {
+void SurfaceBlocks::make(SurfaceBlock& b, Point origin, int rows, int cols, bool all_in_view) {
   b.origin = origin;
   b.grid = shape(rows, cols);
   const std::size_t n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
   for (std::vector<float>* v : {&b.x, &b.y, &b.z, &b.budget, &b.sure2}) v->resize(n + kScanOverread);
   copy_finite_block(positions_, b.origin.y, b.origin.x, rows, cols, b.x.data(), b.y.data(), b.z.data());
   b.wide = wide_;
-  node_budgets(b.positions(), terms_, b.budget.data(), wide_);
+  node_budgets(b.positions(), terms_, b.budget.data(), wide_, all_in_view);
   scan_thresholds(b.budget.data(), n, largest_, b.sure2.data());
 }
 

@@ -18,6 +18,7 @@
 #include "lod/grid_hierarchy.h"
 #include "core/node_runs.h"
 #include "lod/node_positions.h"
+#include "lod/tile_ranges.h"
 #include "lod/triangle_scan.h"
 
 namespace pond::lod {
@@ -26,6 +27,7 @@ namespace pond::lod {
 // and is judged on its nodes; one at most twice as wide, on the blocks it covers (wide_leaf.cpp);
 // a larger one only on tile ranges (tile_ranges.h). 16 rather than 32: docs/perf.md.
 constexpr int kBlockCells = 16;
+static_assert(kBlockCells == kTileCells, "a block is a tile's nodes: its tile's range bounds them");
 
 struct SurfaceBlock {
   Point origin;               // its first node in the grid
@@ -49,8 +51,10 @@ class SurfaceBlocks {
   int blocks_x() const { return blocks_x_; }
   int blocks_y() const { return blocks_y_; }
   // Forgets the last frame's blocks. `terms` are this frame's, of a `largest` bounding every |world
-  // coordinate| of `positions`.
-  void begin(const NodePositions& positions, const BudgetTerms& terms, float largest);
+  // coordinate| of `positions`; `ranges` hold them, and `box_budget` is of `terms` (a block inside
+  // the frustum gets its budgets without the frustum's tests).
+  void begin(const NodePositions& positions, const BudgetTerms& terms, float largest, const TileRanges& ranges,
+             const BoxBudget& box_budget);
   // Block (bx, by), made on first use this frame. Throws InputError on a non-finite position in it.
   const SurfaceBlock& block(int bx, int by);
   // The whole grid as one block, made on first use this frame: one pass, no border twice, no
@@ -68,11 +72,13 @@ class SurfaceBlocks {
     return static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_x_) + static_cast<std::size_t>(bx);
   }
   const GridHierarchy* shape(int rows, int cols);
-  void make(SurfaceBlock& b, Point origin, int rows, int cols);
+  void make(SurfaceBlock& b, Point origin, int rows, int cols, bool all_in_view);
 
   int rows_, cols_, blocks_x_, blocks_y_;
   NodePositions positions_;
   BudgetTerms terms_;
+  const TileRanges* ranges_ = nullptr;
+  const BoxBudget* box_budget_ = nullptr;
   float largest_ = 0;
   bool wide_ = false;  // the AVX2 copies of the budgets and scans allowed (POND_CPU_FEATURES_MASK)
   std::uint32_t frame_ = 0;

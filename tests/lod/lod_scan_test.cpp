@@ -87,14 +87,17 @@ TEST(TriangleScan, VerdictsAreTheExactOnes) {
   for (const auto& [what, state] : {std::pair<std::string, std::vector<float>>{"rain", simulated_pond(65, 65, 60, 6, 10, 3)},
                                     {"rings", simulated_pond(65, 65, 4, 1, 30, 5)}}) {
     const auto p = lod::interleaved_positions(state.data(), 65, 65);
-    const float largest = lod::tile_ranges(p).largest();
+    const lod::TileRanges ranges = lod::tile_ranges(p);
+    const float largest = ranges.largest();
     const lod::Camera views[] = {{{32, 40, -20}, {32, 0, 32}, 60, 1280, 720},
                                  {{32, 1.5, -10}, {32, 0.3, 40}, 50, 1280, 720},
                                  {{30, 2, 30}, {60, 0, 40}, 90, 640, 480}};
     for (const lod::Camera& cam : views)
       for (double tau : {0.3, 1.0, 3.0}) {
         lod::SurfaceBlocks blocks(65, 65);
-        blocks.begin(p, lod::budget_terms(cam, tau, largest), largest);
+        const lod::BudgetTerms terms = lod::budget_terms(cam, tau, largest);
+        const lod::BoxBudget box_budget(terms);
+        blocks.begin(p, terms, largest, ranges, box_budget);
         const lod::SurfaceBlock& w = blocks.whole();
         std::vector<Scan> scans;
         for (const lod::Tri& root : w.grid->roots()) collect(*w.grid, root, 32, scans);

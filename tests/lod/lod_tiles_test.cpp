@@ -207,7 +207,7 @@ TEST(NodeBudgets, AreTheSameBitsAtEveryWidth) {
 TEST(BoxBudget, IsTheLeastBudgetOfItsBox) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(0, 1);
-  int culled = 0, tight = 0;
+  int culled = 0, tight = 0, inside = 0;
   for (int k = 0; k < 400; ++k) {
     const lod::Camera cam{{100 * u(rng) - 50, 30 * u(rng) - 5, 100 * u(rng) - 50},
                           {100 * u(rng) - 50, 2 * u(rng) - 1, 100 * u(rng) - 50}, 30 + 80 * u(rng), 1280, 720};
@@ -230,6 +230,19 @@ TEST(BoxBudget, IsTheLeastBudgetOfItsBox) {
       const double least = box_budget.least(lo, hi);
       for (double error : {0.0, 0.5 * least, least, std::nextafter(least, HUGE_VAL), 2 * least + 1e-3, 1e30})
         ASSERT_EQ(box_budget.allows(error, lo, hi), error <= least) << "camera " << k << " box " << b << " error " << error;
+      if (box_budget.inside(lo, hi)) {  // every node in view: the budgets without the frustum's tests, the same bits
+        ++inside;
+        const lod::NodePositions nodes = lod::soa_positions(x.data(), y.data(), z.data(), 5, 25);
+        for (bool wide : {false, true}) {
+          std::vector<float> in_view(x.size());
+          lod::node_budgets(nodes, terms, in_view.data(), wide, true);
+          for (int i = 0; i < 125; ++i) {
+            ASSERT_TRUE(std::isfinite(budget[i])) << "camera " << k << " box " << b << " point " << i;
+            ASSERT_EQ(std::bit_cast<std::uint32_t>(in_view[i]), std::bit_cast<std::uint32_t>(budget[i]))
+                << "camera " << k << " box " << b << " point " << i << " wide " << wide;
+          }
+        }
+      }
       bool any_in_view = false, corners_in_view = true;
       double least_corner = HUGE_VAL;
       for (int i = 0; i < 125; ++i) {
@@ -246,6 +259,7 @@ TEST(BoxBudget, IsTheLeastBudgetOfItsBox) {
     }
   }
   EXPECT_GT(culled, 100);  // boxes out of view are culled, not only given small budgets
+  EXPECT_GT(inside, 100);
   EXPECT_GT(tight, 100);
 }
 
@@ -257,10 +271,13 @@ TEST(SurfaceBlocks, NestedBoundsHoldOnTheWholeGridAndBlocksHaveNone) {
   for (auto [rows, cols] : {std::pair{129, 129}, {100, 77}, {65, 200}}) {
     const std::vector<float> s = analytic_ripples(rows, cols, 5, 0.5, 3u);
     const auto p = lod::interleaved_positions(s.data(), rows, cols);
-    const float largest = lod::tile_ranges(p).largest();
+    const lod::TileRanges ranges = lod::tile_ranges(p);
+    const float largest = ranges.largest();
     const lod::Camera cam{{cols / 2.0, 40, -30}, {cols / 2.0, 0, rows / 2.0}, 60, 1280, 720};
     lod::SurfaceBlocks blocks(rows, cols);
-    blocks.begin(p, lod::budget_terms(cam, 1.0, largest), largest);
+    const lod::BudgetTerms terms = lod::budget_terms(cam, 1.0, largest);
+    const lod::BoxBudget box_budget(terms);
+    blocks.begin(p, terms, largest, ranges, box_budget);
     EXPECT_TRUE(blocks.block(0, 0).bounds.empty());
     const lod::SurfaceBlock& b = blocks.whole();
     ASSERT_EQ(b.bounds.size(), static_cast<std::size_t>(rows) * cols);
@@ -296,10 +313,13 @@ TEST(SurfaceBlocks, NestedBoundsHoldOnTheWholeGridAndBlocksHaveNone) {
     // The next frame, on moved water: the whole grid's bounds are made again, as a new builder's.
     const std::vector<float> s2 = analytic_ripples(rows, cols, 5, 0.5, 4u);
     const auto p2 = lod::interleaved_positions(s2.data(), rows, cols);
-    const float largest2 = lod::tile_ranges(p2).largest();
+    const lod::TileRanges ranges2 = lod::tile_ranges(p2);
+    const float largest2 = ranges2.largest();
     lod::SurfaceBlocks fresh(rows, cols);
-    blocks.begin(p2, lod::budget_terms(cam, 1.0, largest2), largest2);
-    fresh.begin(p2, lod::budget_terms(cam, 1.0, largest2), largest2);
+    const lod::BudgetTerms terms2 = lod::budget_terms(cam, 1.0, largest2);
+    const lod::BoxBudget box_budget2(terms2);
+    blocks.begin(p2, terms2, largest2, ranges2, box_budget2);
+    fresh.begin(p2, terms2, largest2, ranges2, box_budget2);
     const auto& again = blocks.whole().bounds;
     const auto& made = fresh.whole().bounds;
     ASSERT_EQ(again.size(), made.size());
