@@ -74,7 +74,7 @@ LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
   };
   // A block made last frame is likely needed again: its nodes first then too, not a ranged test
   // that would most likely fail (where the host holds it already: no wait is added for it).
-  if (small && (blocks_.made(bx, by) || (blocks_.made_last_frame(bx, by) && block_on_host(bx, by))))
+  if (small && (blocks_.made(bx, by) || (blocks_.made_last_frame(bx, by) && block_held(bx, by, false))))
     return fit(on_nodes() || ranged());
   if (ranged()) return Fit::yes;
   if (wide) return wide_leaf_fits(t, m);
@@ -86,23 +86,15 @@ LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
   return fit(on_nodes());
 }
 
-// Whether block (bx, by)'s nodes are on the host; when not, it is queued to be brought.
-bool LodBuilder::block_held(int bx, int by) {
+// Whether block (bx, by)'s nodes are on the host; when not and `ask`, it is queued to be brought.
+bool LodBuilder::block_held(int bx, int by, bool ask) {
   if (!positions_.fetch) return true;
   std::uint8_t& h = held_at(bx, by);
   if (h == 0) {
     const core::GridWindow w = blocks_.window(bx, by);
-    h = positions_.fetch->holds(w) ? 1 : 2;
-    if (h == 2) to_bring_.push_back(w);
+    if (positions_.fetch->holds(w)) h = 1;
+    else if (ask) h = 2, to_bring_.push_back(w);
   }
-  return h == 1;
-}
-
-// Whether block (bx, by)'s nodes are on the host, without asking for them.
-bool LodBuilder::block_on_host(int bx, int by) {
-  if (!positions_.fetch) return true;
-  std::uint8_t& h = held_at(bx, by);
-  if (h == 0 && positions_.fetch->holds(blocks_.window(bx, by))) h = 1;
   return h == 1;
 }
 

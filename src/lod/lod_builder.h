@@ -91,11 +91,10 @@ class LodBuilder {
   Fit leaf_fits(const Tri& t, Point m);
   Fit wide_leaf_fits(const Tri& t, Point m);  // wide_leaf.cpp
   double deviation_up(double d2) const;
-  bool block_held(int bx, int by);
+  bool block_held(int bx, int by, bool ask = true);
   std::uint8_t& held_at(int bx, int by) {
     return held_[static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_.blocks_x()) + static_cast<std::size_t>(bx)];
   }
-  bool block_on_host(int bx, int by);
   void refine();
   void read_corners(std::span<const std::uint32_t> triangles);
   bool in_a_block(int row, int col, bool or_queued);

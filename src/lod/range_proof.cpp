@@ -42,9 +42,7 @@ bool RangeProof::cell_proves(int k, int a, int b, const Band& band, int& checks)
   const double wy = std::max(r.max_y - band.range.least[1], band.range.greatest[1] - r.min_y);
   const double wz = std::max(r.max_z - band.range.least[2], band.range.greatest[2] - r.min_z);
   const double error = std::sqrt(wx * wx + wy * wy + wz * wz) * (1 + 1e-12);
-  const double h = ranges_.spacing();
-  if (budget_.allows(error, {x0 * h + r.min_x, double(r.min_y), y0 * h + r.min_z},
-                     {x1 * h + r.max_x, double(r.max_y), y1 * h + r.max_z}))
+  if (const TileRanges::WorldBox box = ranges_.world_box(x0, x1, y0, y1, r); budget_.allows(error, box.lo, box.hi))
     return true;
   if (k == 0) return false;
   for (int q = 0; q < 4; ++q)

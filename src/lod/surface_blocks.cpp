@@ -46,13 +46,10 @@ const SurfaceBlock& SurfaceBlocks::block(int bx, int by) {
   if (used_ == pool_.size()) pool_.push_back(std::make_unique<SurfaceBlock>());
   SurfaceBlock& b = *pool_[used_];
   const core::GridWindow w = window(bx, by);
-  // The block's world box: its rest box widened by its tile's range.
-  const TileBounds& r = ranges_->cell(0, bx, by);
-  const double h = ranges_->spacing();
-  const bool in_view = box_budget_->inside({w.col0 * h + r.min_x, double(r.min_y), w.row0 * h + r.min_z},
-                                           {(w.col0 + w.cols - 1) * h + r.max_x, double(r.max_y),
-                                            (w.row0 + w.rows - 1) * h + r.max_z});
-  make(b, {w.col0, w.row0}, w.rows, w.cols, in_view);
+  // A block is its tile's nodes: its world box is theirs.
+  const TileRanges::WorldBox box =
+      ranges_->world_box(w.col0, w.col0 + w.cols - 1, w.row0, w.row0 + w.rows - 1, ranges_->cell(0, bx, by));
+  make(b, {w.col0, w.row0}, w.rows, w.cols, box_budget_->inside(box.lo, box.hi));
   made_in_[k] = frame_;
   slot_[k] = static_cast<std::uint32_t>(used_++);
   return b;

@@ -7,6 +7,7 @@
 // world box is its rest box widened by the ranges: that is all the builder's coarse test needs.
 // A pyramid of 2^k x 2^k tile blocks covers a rectangle of tiles in a few cells (range_proof.h).
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstddef>
 #include <span>
@@ -63,6 +64,15 @@ class TileRanges {
   // A range of node (col x, row y)'s deviation: the intersection of the tiles holding it (up to
   // four: neighbours share their border nodes), so reading no node.
   TileBounds at_node(int x, int y) const;
+  // The world box of the nodes of columns [x0, x1] and rows [y0, y1] whose deviations lie in `r`
+  // (a tile's or a pyramid cell's range): their rest box widened by it.
+  struct WorldBox {
+    std::array<double, 3> lo, hi;
+  };
+  WorldBox world_box(int x0, int x1, int y0, int y1, const TileBounds& r) const {
+    const double h = spacing_;
+    return {{x0 * h + r.min_x, double(r.min_y), y0 * h + r.min_z}, {x1 * h + r.max_x, double(r.max_y), y1 * h + r.max_z}};
+  }
   // The hull of at_node over `nodes`: each coordinate's least lower and greatest upper bound.
   TileBounds hull_at(std::span<const Point> nodes) const;
   // The level whose cells cover `r` in at most a few (2 x 2, or 2 x 3 for a 1 x 2 rectangle): cells
