@@ -1,16 +1,20 @@
 #pragma once
 // The exact scan's float pass (triangle_scan.h), built twice like the node budgets (budget_loop.h):
 // by triangle_scan.cpp with SSE2 lanes, four nodes a group, and by triangle_scan_avx2.cpp with
-// AVX2 lanes, eight. A lane does its node's operations in the same order in both, so both copies
-// compute the same bits and give the same verdicts. Its templates are in an unnamed namespace:
-// each file keeps its own copy, not the linker's pick.
+// AVX2 lanes, eight. The AVX2 copy scans a whole small triangle in groups of row pieces instead
+// (group_scan). Every path decides in float only the nodes float rounding cannot mislead (inside
+// the slack of scan_by_rows()'s analysis) and the others by the same test in double, so all give
+// the same verdicts. Its templates are in an unnamed namespace: each file keeps its own copy, not
+// the linker's pick.
 //
 // L, the lanes: a vector type V of L::width floats, and set1, splat<i> (lane i of an __m128 in
 // every lane), iota (0, 1, ...), load (unaligned), add, sub, mul, and_, or_, less and greater (lane
-// masks), any (a mask has a lane set).
+// masks), any (a mask has a lane set); `pairs` says whether it has group_scan's load_pair (two
+// four-float loads, one a half), load_mask and lane (lane k of a mask is set).
 #include <algorithm>
 #include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <limits>
 #include <vector>
@@ -56,17 +60,33 @@ class RowSpans {
 };
 
 // A triangle's rows relative to its apex, which depend on its legs only: the first column and
-// length of each (RowSpans') and the weights of its first node, made once per shape. Triangles
-// come in a few sizes in eight orientations, so a scan's row reads its set-up instead of working
-// it out.
+// length of each (RowSpans'), its first node's offset in arrays of a given pitch and its weights,
+// made once per shape and pitch. Triangles come in a few sizes in eight orientations, so a scan's
+// row reads its set-up instead of working it out.
 struct ShapeRow {
+  std::ptrdiff_t offset;  // dy * pitch + dx0
   int dy, dx0, len;
   float u0, w0;
 };
+// The same triangle in groups of eight nodes for the AVX2 scan of a shape whose rows are short:
+// each row cut into pieces of up to four nodes, two pieces a group (each one 16-byte load), with
+// every lane's exact weights and whether it is a node of the triangle (a piece shorter than four
+// reads nodes beyond it, masked out).
+struct ShapeGroup {
+  std::int32_t offset[2];  // the pieces' first nodes from the apex (lanes 0-3, 4-7)
+  float u[8], w[8];
+  std::uint32_t live[8];   // all ones for a node of the triangle, else 0
+  std::int32_t through;    // the triangle's nodes in this group and those before it
+};
+struct ShapeTable {
+  std::vector<ShapeRow> rows;
+  std::vector<ShapeGroup> groups;  // empty where the rows are scanned instead
+  std::size_t nodes = 0;
+};
 constexpr int kTabledLevels = 13;  // legs up to 2^12 cells; larger ones find their rows
-// Fills `rows`, the table of the triangle with legs (lx, ly) and (rx, ry) from its apex, and
-// returns it (triangle_scan.cpp). Out of line: the lookup below stays small.
-const std::vector<ShapeRow>* make_shape_rows(std::vector<ShapeRow>& rows, int lx, int ly, int rx, int ry);
+// Fills `table`, the triangle with legs (lx, ly) and (rx, ry) from its apex in arrays of `pitch`
+// floats a row, and returns it (triangle_scan.cpp). Out of line: the lookup below stays small.
+const ShapeTable* make_shape_table(ShapeTable& table, int lx, int ly, int rx, int ry, std::ptrdiff_t pitch);
 
 // The scan in double of row y's columns x0 .. x1 against t's interpolation, for a row the float
 // pass cannot decide (triangle_scan.cpp). Every node is judged within 1e-13 relative, far inside
@@ -82,17 +102,27 @@ bool scan_triangle_avx2(const GridHierarchy& grid, const NodePositions& p, const
 
 namespace {
 
-// The rows of the triangle with legs (lx, ly) and (rx, ry) from its apex, or nullptr for legs the
-// tables do not hold. Each thread, and each copy of the scan, keeps its own tables.
-inline const std::vector<ShapeRow>* shape_rows(int lx, int ly, int rx, int ry) {
-  const int size = std::max(std::abs(lx), std::abs(ly));
-  if (size == 0 || size >= 1 << kTabledLevels || (size & (size - 1)) != 0) return nullptr;  // not a hierarchy's legs
-  const auto sign = [](int v) { return (v > 0) - (v < 0) + 1; };
-  const int level = std::countr_zero(static_cast<unsigned>(size));  // legs are (2^k, 0) or (2^k, 2^k) turned
+// The rows of the triangle with legs (lx, ly) and (rx, ry) in arrays of `pitch` floats a row, or
+// nullptr for legs the tables do not hold. Each thread, and each copy of the scan, keeps the
+// tables of its last two pitches (a frame's blocks share one; a whole grid has its own).
+struct ShapeTables {
+  std::ptrdiff_t pitch = -1;
+  std::vector<ShapeTable> shapes;
+};
+inline const ShapeTable* shape_table(int lx, int ly, int rx, int ry, std::ptrdiff_t pitch) {
+  const unsigned size = static_cast<unsigned>(std::max(std::abs(lx), std::abs(ly)));
+  if (size == 0 || size >= 1u << kTabledLevels || (size & (size - 1)) != 0) return nullptr;  // not a hierarchy's legs
+  // Legs are (2^k, 0) or (2^k, 2^k) turned, so each component shifted right by k is its sign.
+  const int level = std::countr_zero(size);
+  const auto sign = [level](int v) { return (v >> level) + 1; };
   const std::size_t key = static_cast<std::size_t>(((level * 3 + sign(lx)) * 3 + sign(ly)) * 9 + sign(rx) * 3 + sign(ry));
-  thread_local std::vector<std::vector<ShapeRow>> shapes(kTabledLevels * 81);
-  std::vector<ShapeRow>& rows = shapes[key];
-  return rows.empty() ? make_shape_rows(rows, lx, ly, rx, ry) : &rows;
+  thread_local ShapeTables tables[2];
+  if (tables[0].pitch != pitch) {
+    std::swap(tables[0], tables[1]);  // the most recent first
+    if (tables[0].pitch != pitch) tables[0] = {pitch, std::vector<ShapeTable>(kTabledLevels * 81)};
+  }
+  ShapeTable& table = tables[0].shapes[key];
+  return table.rows.empty() ? make_shape_table(table, lx, ly, rx, ry, pitch) : &table;
 }
 
 // A triangle's interpolation for the row scan: the apex and the legs in world space (x, y, z, 0),
@@ -151,20 +181,75 @@ RowVerdict scan_row(const float* px, const float* py, const float* pz, const Sca
 }
 
 // The float scan's rounding slack on a budget, for |coordinates| up to `largest` (see the analysis
-// in scan_triangle()).
+// in scan_by_rows()).
 inline float scan_slack(float largest) { return 64 * largest * std::numeric_limits<float>::epsilon(); }
 
-// The float scan of `region`'s nodes against t's interpolation (triangle_scan.h's within_budget).
+// The scan of a whole triangle of `table`'s shape with its apex at node `apex`, a group of two
+// row pieces at a time: each node's interpolation a + u l + w r from its own (exact) weights,
+// rounded as a row's first value is (so within scan_by_rows()'s analysis); the nodes float cannot
+// decide are judged in double. Counts the nodes visited into *count.
+struct PlaneCorners {
+  const float *a, *l, *r;  // the apex and the legs, x, y, z each
+};
 template <class L>
-bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, float largest,
-                   const Tri& t, const TriCorners& c, const Tri& region, long long* visited) {
+bool group_scan(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, const Tri& t,
+                const TriCorners& c, const ShapeTable& table, std::ptrdiff_t apex, PlaneCorners plane, float slack,
+                long long* count) {
+  using V = typename L::V;
+  static_assert(L::width == 8);
+  const float *a = plane.a, *l = plane.l, *r = plane.r;
+  const V ax = L::set1(a[0]), ay = L::set1(a[1]), az = L::set1(a[2]);
+  const V lx = L::set1(l[0]), ly = L::set1(l[1]), lz = L::set1(l[2]);
+  const V rx = L::set1(r[0]), ry = L::set1(r[1]), rz = L::set1(r[2]);
+  const float *px = p.x + apex, *py = p.y + apex, *pz = p.z + apex, *sure2 = budgets.sure2 + apex;
+  for (const ShapeGroup& g : table.groups) {
+    const std::int32_t lo = g.offset[0], hi = g.offset[1];
+    const V u = L::load(g.u), w = L::load(g.w), live = L::load_mask(g.live);
+    const V ex = L::sub(L::load_pair(px + lo, px + hi), L::add(L::add(ax, L::mul(u, lx)), L::mul(w, rx)));
+    const V ey = L::sub(L::load_pair(py + lo, py + hi), L::add(L::add(ay, L::mul(u, ly)), L::mul(w, ry)));
+    const V ez = L::sub(L::load_pair(pz + lo, pz + hi), L::add(L::add(az, L::mul(u, lz)), L::mul(w, rz)));
+    const V e2 = L::and_(live, L::add(L::add(L::mul(ex, ex), L::mul(ey, ey)), L::mul(ez, ez)));  // 0 off the triangle
+    const V close = L::greater(e2, L::load_pair(sure2 + lo, sure2 + hi));
+    if (!L::any(close)) continue;
+    const auto fail = [&] {
+      *count += g.through;
+      return false;
+    };
+    const float* budget = budgets.budget + apex;
+    const V high = L::add(L::load_pair(budget + lo, budget + hi), L::set1(slack));
+    if (L::any(L::greater(e2, L::mul(L::mul(high, high), L::set1(1 + 1e-6f))))) return fail();
+    const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(p.cols);
+    for (int k = 0; k < L::width; ++k) {
+      if (!L::lane(close, k)) continue;
+      const std::ptrdiff_t node = apex + (k < 4 ? lo + k : hi + k - 4);
+      const int y = static_cast<int>(node / pitch), x = static_cast<int>(node % pitch);
+      if (!row_within_budget_double(grid, p, budgets.budget, t, c, y, x, x)) return fail();
+    }
+  }
+  *count += static_cast<long long>(table.nodes);
+  return true;
+}
+
+// 1 / (lx^2 + ly^2) for a hierarchy's leg (lx, ly), exactly: the squared length is a power of two,
+// so its inverse is that float's exponent negated (legs up to 2^62 cells).
+inline float inverse_square_leg(int lx, int ly) {
+  const unsigned long long len2 = static_cast<unsigned long long>(static_cast<long long>(lx) * lx + static_cast<long long>(ly) * ly);
+  return std::bit_cast<float>(static_cast<std::uint32_t>(127 - std::countr_zero(len2)) << 23);
+}
+
+// The float scan of `region`'s nodes against t's interpolation, row by row; `tabled` is the table of
+// region's shape, or nullptr. Out of line: scan_triangle() stays small for its common case.
+template <class L>
+[[gnu::noinline]] bool scan_by_rows(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets,
+                                    float largest, const Tri& t, const TriCorners& c, const Tri& region,
+                                    const ShapeTable* tabled, long long* visited) {
   // Legs apex->left and apex->right are orthogonal and of equal length, so the barycentric
   // weights of left and right are plain projections onto them. The squared leg length is a
   // power of two (legs are (2^k, 0) or (2^k, 2^k) turned), so every weight, the integer
   // projection times its inverse, is exact in float.
   const int lx = t.left.x - t.apex.x, ly = t.left.y - t.apex.y;
   const int rx = t.right.x - t.apex.x, ry = t.right.y - t.apex.y;
-  const float inv_len2 = 1.0f / static_cast<float>(static_cast<long long>(lx) * lx + static_cast<long long>(ly) * ly);
+  const float inv_len2 = inverse_square_leg(lx, ly);
   // In float so that rows vectorize. With M = `largest`, each component of the miss vector is
   // within 16 eps * M of its exact value: the legs (differences of coordinates <= M) err by eps * M;
   // a row's first value a + u0 l + w0 r (weights in [0, 1]) by 6 eps * M; the step du l + dw r,
@@ -173,28 +258,24 @@ bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const Scan
   // with 64 eps * M of slack each way a node is surely within or surely over its budget; the rare
   // row with a node in between is decided in double.
   const float slack = scan_slack(largest);
-  const float du = static_cast<float>(lx) * inv_len2, dw = static_cast<float>(rx) * inv_len2;
-  ScanPlane<L> plane;
   float at_apex[3], left[3], right[3];  // the apex and the legs, per axis
   for (int i = 0; i < 3; ++i) {
     const float* v = i == 0 ? c.x : i == 1 ? c.y : c.z;
     at_apex[i] = v[0], left[i] = v[1] - v[0], right[i] = v[2] - v[0];
-    plane.step[i] = L::set1(du * left[i] + dw * right[i]);
   }
+  const std::size_t cols = static_cast<std::size_t>(grid.cols());
+  const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(cols);
+  long long count = 0;
+  const bool whole = region.apex == t.apex && region.left == t.left && region.right == t.right;
+  const float du = static_cast<float>(lx) * inv_len2, dw = static_cast<float>(rx) * inv_len2;
+  ScanPlane<L> plane;
+  for (int i = 0; i < 3; ++i) plane.step[i] = L::set1(du * left[i] + dw * right[i]);
   plane.a = _mm_setr_ps(at_apex[0], at_apex[1], at_apex[2], 0), plane.l = _mm_setr_ps(left[0], left[1], left[2], 0);
   plane.r = _mm_setr_ps(right[0], right[1], right[2], 0);
   plane.slack = L::set1(slack);
-  const std::size_t cols = static_cast<std::size_t>(grid.cols());
-  long long count = 0;
   bool ok = true;
-  // The region's rows from the table of its shape (with their weights where it is t itself).
-  const bool whole = region.apex == t.apex && region.left == t.left && region.right == t.right;
-  const std::vector<ShapeRow>* tabled =
-      shape_rows(region.left.x - region.apex.x, region.left.y - region.apex.y, region.right.x - region.apex.x,
-                 region.right.y - region.apex.y);
   // Each row is tested whole (no early exit inside, it goes L::width nodes at a time), a row float
   // cannot decide once more in double, and the scan stops after the first row with a node over.
-  const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(cols);
   const auto row = [&](std::ptrdiff_t base, int len, float u0, float w0) {
     // The row's first value a + u0 l + w0 r, the three coordinates at once, each rounded as alone.
     const __m128 f = _mm_add_ps(_mm_add_ps(plane.a, _mm_mul_ps(_mm_set1_ps(u0), plane.l)),
@@ -211,11 +292,11 @@ bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const Scan
     const std::ptrdiff_t apex = region.apex.y * pitch + region.apex.x;
     const long long ox = region.apex.x - t.apex.x, oy = region.apex.y - t.apex.y;  // region's apex from t's
     if (whole) {
-      for (auto r = tabled->begin(); r != tabled->end() && ok; ++r) row(apex + r->dy * pitch + r->dx0, r->len, r->u0, r->w0);
+      for (auto r = tabled->rows.begin(); r != tabled->rows.end() && ok; ++r) row(apex + r->offset, r->len, r->u0, r->w0);
     } else {  // a part: t's weights of each row's first node
-      for (auto r = tabled->begin(); r != tabled->end() && ok; ++r) {
+      for (auto r = tabled->rows.begin(); r != tabled->rows.end() && ok; ++r) {
         const long long dx = ox + r->dx0, dy = oy + r->dy;
-        row(apex + r->dy * pitch + r->dx0, r->len, static_cast<float>(dx * lx + dy * ly) * inv_len2,
+        row(apex + r->offset, r->len, static_cast<float>(dx * lx + dy * ly) * inv_len2,
             static_cast<float>(dx * rx + dy * ry) * inv_len2);
       }
     }
@@ -232,6 +313,34 @@ bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const Scan
   }
   if (visited) *visited += count;
   return ok;
+}
+
+// The float scan of `region`'s nodes against t's interpolation (triangle_scan.h's within_budget):
+// a whole triangle of a shape tabled in groups by group_scan(), any other by rows.
+template <class L>
+bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, float largest,
+                   const Tri& t, const TriCorners& c, const Tri& region, long long* visited) {
+  const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(grid.cols());
+  const ShapeTable* tabled =
+      shape_table(region.left.x - region.apex.x, region.left.y - region.apex.y, region.right.x - region.apex.x,
+                  region.right.y - region.apex.y, pitch);
+  if constexpr (L::pairs) {
+    const bool whole = region.apex == t.apex && region.left == t.left && region.right == t.right;
+    if (whole && tabled && !tabled->groups.empty()) {
+      float left[3], right[3];
+      const float a[3] = {c.x[0], c.y[0], c.z[0]};
+      for (int i = 0; i < 3; ++i) {
+        const float* v = i == 0 ? c.x : i == 1 ? c.y : c.z;
+        left[i] = v[1] - v[0], right[i] = v[2] - v[0];
+      }
+      long long count = 0;
+      const bool ok = group_scan<L>(grid, p, budgets, t, c, *tabled, t.apex.y * pitch + t.apex.x, {a, left, right},
+                                    scan_slack(largest), &count);
+      if (visited) *visited += count;
+      return ok;
+    }
+  }
+  return scan_by_rows<L>(grid, p, budgets, largest, t, c, region, tabled, visited);
 }
 
 }  // namespace

@@ -27,20 +27,46 @@ struct Sse2Lanes {
   static V less(V a, V b) { return _mm_cmplt_ps(a, b); }
   static V greater(V a, V b) { return _mm_cmpgt_ps(a, b); }
   static bool any(V m) { return _mm_movemask_ps(m) != 0; }
+  static constexpr bool pairs = false;  // SSE2's four lanes: its scans go by rows
 };
 
 }  // namespace
 
-const std::vector<ShapeRow>* make_shape_rows(std::vector<ShapeRow>& rows, int lx, int ly, int rx, int ry) {
-  const float inv_len2 = 1.0f / static_cast<float>(lx * lx + ly * ly);  // as scan_triangle's
+const ShapeTable* make_shape_table(ShapeTable& table, int lx, int ly, int rx, int ry, std::ptrdiff_t pitch) {
+  const float inv_len2 = inverse_square_leg(lx, ly);  // as scan_triangle's
   const Tri t{{0, 0}, {lx, ly}, {rx, ry}};
   const RowSpans spans(t);
+  std::size_t nodes = 0;
   for (int y = std::min({0, ly, ry}); y <= std::max({0, ly, ry}); ++y) {
-    const int x0 = spans.first(y);
-    rows.push_back({y, x0, spans.last(y) - x0 + 1, static_cast<float>(x0 * lx + y * ly) * inv_len2,
-                    static_cast<float>(x0 * rx + y * ry) * inv_len2});
+    const int x0 = spans.first(y), len = spans.last(y) - x0 + 1;
+    table.rows.push_back({y * pitch + x0, y, x0, len, static_cast<float>(x0 * lx + y * ly) * inv_len2,
+                          static_cast<float>(x0 * rx + y * ry) * inv_len2});
+    nodes += static_cast<std::size_t>(len);
   }
-  return &rows;
+  table.nodes = nodes;
+  // Rows shorter than a group on average: pieces of up to four nodes, two a group, each node's
+  // weights exact as a row's first node's are.
+  if (nodes < 8 * table.rows.size()) {
+    int lane = 0;
+    std::size_t seen = 0;
+    for (const ShapeRow& r : table.rows)
+      for (int s = 0; s < r.len; s += 4) {
+        if (lane == 0) table.groups.push_back({});
+        ShapeGroup& g = table.groups.back();
+        g.offset[lane / 4] = static_cast<std::int32_t>(r.dy * pitch + r.dx0 + s);
+        for (int k = 0; k < 4; ++k) {
+          const int x = r.dx0 + s + k;
+          g.u[lane + k] = static_cast<float>(x * lx + r.dy * ly) * inv_len2;
+          g.w[lane + k] = static_cast<float>(x * rx + r.dy * ry) * inv_len2;
+          g.live[lane + k] = s + k < r.len ? ~0u : 0u;
+        }
+        seen += std::min(4, r.len - s);
+        g.through = static_cast<std::int32_t>(seen);
+        lane = (lane + 4) % 8;
+      }
+    if (lane == 4) table.groups.back().offset[1] = table.groups.back().offset[0];  // its live lanes are all 0
+  }
+  return &table;
 }
 
 bool row_within_budget_double(const GridHierarchy& grid, const NodePositions& p, const float* budget, const Tri& t,

@@ -10,8 +10,9 @@
 
 namespace pond::lod {
 
-// Rows are read eight nodes at a time (four without AVX2): the position and budget arrays must
-// stay readable this many floats past the last node (values there are ignored).
+// Rows are read eight nodes at a time (four without AVX2; short rows in pieces of four): the
+// position and budget arrays must stay readable this many floats past the last node (values there
+// are ignored).
 constexpr std::size_t kScanOverread = 7;
 
 // The nodes' budgets and, from them (scan_thresholds()), the squared miss at or below which a

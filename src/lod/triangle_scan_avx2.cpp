@@ -24,6 +24,12 @@ struct Avx2Lanes {
   static V less(V a, V b) { return _mm256_cmp_ps(a, b, _CMP_LT_OS); }
   static V greater(V a, V b) { return _mm256_cmp_ps(a, b, _CMP_GT_OS); }
   static bool any(V m) { return _mm256_movemask_ps(m) != 0; }
+  static constexpr bool pairs = true;  // two row pieces a group (scan_rows.h's group_scan)
+  static V load_pair(const float* lo, const float* hi) { return _mm256_loadu2_m128(hi, lo); }
+  static V load_mask(const std::uint32_t* m) {
+    return _mm256_castsi256_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(m)));
+  }
+  static bool lane(V m, int k) { return (_mm256_movemask_ps(m) >> k & 1) != 0; }
 };
 
 }  // namespace
