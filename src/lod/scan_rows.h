@@ -104,7 +104,8 @@ namespace {
 
 // The rows of the triangle with legs (lx, ly) and (rx, ry) in arrays of `pitch` floats a row, or
 // nullptr for legs the tables do not hold. Each thread, and each copy of the scan, keeps the
-// tables of its last two pitches (a frame's blocks share one; a whole grid has its own).
+// tables of its last four pitches: a frame's blocks have one or two (the grid's last blocks may be
+// narrower), the whole grid its own, and a view may switch between the two from frame to frame.
 struct ShapeTables {
   std::ptrdiff_t pitch = -1;
   std::vector<ShapeTable> shapes;
@@ -116,10 +117,13 @@ inline const ShapeTable* shape_table(int lx, int ly, int rx, int ry, std::ptrdif
   const int level = std::countr_zero(size);
   const auto sign = [level](int v) { return (v >> level) + 1; };
   const std::size_t key = static_cast<std::size_t>(((level * 3 + sign(lx)) * 3 + sign(ly)) * 9 + sign(rx) * 3 + sign(ry));
-  thread_local ShapeTables tables[2];
-  if (tables[0].pitch != pitch) {
-    std::swap(tables[0], tables[1]);  // the most recent first
-    if (tables[0].pitch != pitch) tables[0] = {pitch, std::vector<ShapeTable>(kTabledLevels * 81)};
+  constexpr int kPitches = 4;
+  thread_local ShapeTables tables[kPitches];
+  if (tables[0].pitch != pitch) {  // the most recent first
+    int i = 1;
+    while (i < kPitches && tables[i].pitch != pitch) ++i;
+    if (i == kPitches) tables[--i] = {pitch, std::vector<ShapeTable>(kTabledLevels * 81)};
+    std::rotate(tables, tables + i, tables + i + 1);
   }
   ShapeTable& table = tables[0].shapes[key];
   return table.rows.empty() ? make_shape_table(table, lx, ly, rx, ry, pitch) : &table;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -156,6 +157,56 @@ TEST(LodBuilder, SameMeshWithTheAvx2CopiesHidden) {
     }
   }
   EXPECT_GT(whole_frames, 0);  // the whole grid's scans by parts too
+}
+
+// The scans' tables are kept per pitch of the arrays scanned (a few at a time): scans of grids of
+// five widths, interleaved so that each width's tables are made again and again, give the
+// verdicts of the check in double, in both copies.
+TEST(TriangleScan, TablesOfManyPitchesInTurn) {
+  struct Grid {
+    explicit Grid(int side) : state(simulated_pond(side, side, 20, 4, 10, 3)), blocks(side, side) {}
+    std::vector<float> state;
+    lod::SurfaceBlocks blocks;
+    float largest = 0;
+    std::vector<Scan> scans;
+  };
+  std::vector<std::unique_ptr<Grid>> grids;
+  for (int side : {17, 24, 33, 40, 65}) {
+    Grid& g = *grids.emplace_back(std::make_unique<Grid>(side));
+    const auto p = lod::interleaved_positions(g.state.data(), side, side);
+    const lod::TileRanges ranges = lod::tile_ranges(p);
+    g.largest = ranges.largest();
+    const double s = side / 2.0;
+    const lod::BudgetTerms terms = lod::budget_terms({{s, side * 0.6, -s}, {s, 0, s}, 60, 1280, 720}, 0.5, g.largest);
+    g.blocks.begin(p, terms, g.largest, ranges, lod::BoxBudget(terms));
+    for (const lod::Tri& root : g.blocks.whole().grid->roots()) collect(*g.blocks.whole().grid, root, 16, g.scans);
+  }
+  int fine = 0, total = 0;
+  for (std::size_t k = 0;; ++k) {
+    bool any = false;
+    for (const auto& grid : grids) {
+      Grid& g = *grid;
+      if (k >= g.scans.size()) continue;
+      any = true;
+      const lod::SurfaceBlock& w = g.blocks.whole();
+      const Scan& s = g.scans[k];
+      lod::ScanBudgets budgets = w.scan_budgets();
+      budgets.wide = false;
+      const bool within = lod::within_budget(*w.grid, w.positions(), budgets, g.largest, s.t, s.region, nullptr);
+      if (lod::wide_budgets_available()) {
+        budgets.wide = true;
+        ASSERT_EQ(lod::within_budget(*w.grid, w.positions(), budgets, g.largest, s.t, s.region, nullptr), within)
+            << w.grid->cols() << " wide, scan " << k;
+      }
+      bool near = false;
+      const bool expected = within_in_double(w, s.t, s.region, near);
+      if (!near) ASSERT_EQ(within, expected) << w.grid->cols() << " wide, scan " << k;
+      fine += within, ++total;
+    }
+    if (!any) break;
+  }
+  EXPECT_GT(fine, 0);
+  EXPECT_LT(fine, total);
 }
 
 }  // namespace
