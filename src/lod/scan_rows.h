@@ -188,20 +188,30 @@ RowVerdict scan_row(const float* px, const float* py, const float* pz, const Sca
 // in scan_by_rows()).
 inline float scan_slack(float largest) { return 64 * largest * std::numeric_limits<float>::epsilon(); }
 
+// A triangle's interpolation in world space, from its corners: the apex and the legs, x, y, z each.
+struct WorldLegs {
+  float a[3], l[3], r[3];
+};
+inline WorldLegs world_legs(const TriCorners& c) {
+  WorldLegs w;
+  for (int i = 0; i < 3; ++i) {
+    const float* v = i == 0 ? c.x : i == 1 ? c.y : c.z;
+    w.a[i] = v[0], w.l[i] = v[1] - v[0], w.r[i] = v[2] - v[0];
+  }
+  return w;
+}
+
 // The scan of a whole triangle of `table`'s shape with its apex at node `apex`, a group of two
 // row pieces at a time: each node's interpolation a + u l + w r from its own (exact) weights,
 // rounded as a row's first value is (so within scan_by_rows()'s analysis); the nodes float cannot
 // decide are judged in double. Counts the nodes visited into *count.
-struct PlaneCorners {
-  const float *a, *l, *r;  // the apex and the legs, x, y, z each
-};
 template <class L>
 bool group_scan(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, const Tri& t,
-                const TriCorners& c, const ShapeTable& table, std::ptrdiff_t apex, PlaneCorners plane, float slack,
+                const TriCorners& c, const ShapeTable& table, std::ptrdiff_t apex, const WorldLegs& legs, float slack,
                 long long* count) {
   using V = typename L::V;
   static_assert(L::width == 8);
-  const float *a = plane.a, *l = plane.l, *r = plane.r;
+  const float *a = legs.a, *l = legs.l, *r = legs.r;
   const V ax = L::set1(a[0]), ay = L::set1(a[1]), az = L::set1(a[2]);
   const V lx = L::set1(l[0]), ly = L::set1(l[1]), lz = L::set1(l[2]);
   const V rx = L::set1(r[0]), ry = L::set1(r[1]), rz = L::set1(r[2]);
@@ -222,7 +232,7 @@ bool group_scan(const GridHierarchy& grid, const NodePositions& p, const ScanBud
     const float* budget = budgets.budget + apex;
     const V high = L::add(L::load_pair(budget + lo, budget + hi), L::set1(slack));
     if (L::any(L::greater(e2, L::mul(L::mul(high, high), L::set1(1 + 1e-6f))))) return fail();
-    const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(p.cols);
+    const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(grid.cols());
     for (int k = 0; k < L::width; ++k) {
       if (!L::lane(close, k)) continue;
       const std::ptrdiff_t node = apex + (k < 4 ? lo + k : hi + k - 4);
@@ -242,11 +252,12 @@ inline float inverse_square_leg(int lx, int ly) {
 }
 
 // The float scan of `region`'s nodes against t's interpolation, row by row; `tabled` is the table of
-// region's shape, or nullptr. Out of line: scan_triangle() stays small for its common case.
+// region's shape, or nullptr, and `whole` says region is t. Out of line: scan_triangle() stays
+// small for its common case.
 template <class L>
 [[gnu::noinline]] bool scan_by_rows(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets,
                                     float largest, const Tri& t, const TriCorners& c, const Tri& region,
-                                    const ShapeTable* tabled, long long* visited) {
+                                    const ShapeTable* tabled, bool whole, long long* visited) {
   // Legs apex->left and apex->right are orthogonal and of equal length, so the barycentric
   // weights of left and right are plain projections onto them. The squared leg length is a
   // power of two (legs are (2^k, 0) or (2^k, 2^k) turned), so every weight, the integer
@@ -262,20 +273,14 @@ template <class L>
   // with 64 eps * M of slack each way a node is surely within or surely over its budget; the rare
   // row with a node in between is decided in double.
   const float slack = scan_slack(largest);
-  float at_apex[3], left[3], right[3];  // the apex and the legs, per axis
-  for (int i = 0; i < 3; ++i) {
-    const float* v = i == 0 ? c.x : i == 1 ? c.y : c.z;
-    at_apex[i] = v[0], left[i] = v[1] - v[0], right[i] = v[2] - v[0];
-  }
-  const std::size_t cols = static_cast<std::size_t>(grid.cols());
-  const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(cols);
+  const WorldLegs legs = world_legs(c);
+  const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(grid.cols());
   long long count = 0;
-  const bool whole = region.apex == t.apex && region.left == t.left && region.right == t.right;
   const float du = static_cast<float>(lx) * inv_len2, dw = static_cast<float>(rx) * inv_len2;
   ScanPlane<L> plane;
-  for (int i = 0; i < 3; ++i) plane.step[i] = L::set1(du * left[i] + dw * right[i]);
-  plane.a = _mm_setr_ps(at_apex[0], at_apex[1], at_apex[2], 0), plane.l = _mm_setr_ps(left[0], left[1], left[2], 0);
-  plane.r = _mm_setr_ps(right[0], right[1], right[2], 0);
+  for (int i = 0; i < 3; ++i) plane.step[i] = L::set1(du * legs.l[i] + dw * legs.r[i]);
+  plane.a = _mm_setr_ps(legs.a[0], legs.a[1], legs.a[2], 0), plane.l = _mm_setr_ps(legs.l[0], legs.l[1], legs.l[2], 0);
+  plane.r = _mm_setr_ps(legs.r[0], legs.r[1], legs.r[2], 0);
   plane.slack = L::set1(slack);
   bool ok = true;
   // Each row is tested whole (no early exit inside, it goes L::width nodes at a time), a row float
@@ -328,23 +333,17 @@ bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const Scan
   const ShapeTable* tabled =
       shape_table(region.left.x - region.apex.x, region.left.y - region.apex.y, region.right.x - region.apex.x,
                   region.right.y - region.apex.y, pitch);
+  const bool whole = region.apex == t.apex && region.left == t.left && region.right == t.right;
   if constexpr (L::pairs) {
-    const bool whole = region.apex == t.apex && region.left == t.left && region.right == t.right;
     if (whole && tabled && !tabled->groups.empty()) {
-      float left[3], right[3];
-      const float a[3] = {c.x[0], c.y[0], c.z[0]};
-      for (int i = 0; i < 3; ++i) {
-        const float* v = i == 0 ? c.x : i == 1 ? c.y : c.z;
-        left[i] = v[1] - v[0], right[i] = v[2] - v[0];
-      }
       long long count = 0;
-      const bool ok = group_scan<L>(grid, p, budgets, t, c, *tabled, t.apex.y * pitch + t.apex.x, {a, left, right},
+      const bool ok = group_scan<L>(grid, p, budgets, t, c, *tabled, t.apex.y * pitch + t.apex.x, world_legs(c),
                                     scan_slack(largest), &count);
       if (visited) *visited += count;
       return ok;
     }
   }
-  return scan_by_rows<L>(grid, p, budgets, largest, t, c, region, tabled, visited);
+  return scan_by_rows<L>(grid, p, budgets, largest, t, c, region, tabled, whole, visited);
 }
 
 }  // namespace

@@ -33,7 +33,7 @@ struct Sse2Lanes {
 }  // namespace
 
 const ShapeTable* make_shape_table(ShapeTable& table, int lx, int ly, int rx, int ry, std::ptrdiff_t pitch) {
-  const float inv_len2 = inverse_square_leg(lx, ly);  // as scan_triangle's
+  const float inv_len2 = inverse_square_leg(lx, ly);  // as scan_by_rows's
   const Tri t{{0, 0}, {lx, ly}, {rx, ry}};
   const RowSpans spans(t);
   std::size_t nodes = 0;
