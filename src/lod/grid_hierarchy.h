@@ -74,6 +74,12 @@ class GridHierarchy {
     return static_cast<std::uint32_t>(p.y) * static_cast<std::uint32_t>(domain_cols_) +
            static_cast<std::uint32_t>(p.x);
   }
+  // The node of a domain id (by a multiply, as copy_nodes() finds a row: (id + 0.5) / cols lies at
+  // least 2^-17 from an integer, and double errs far less).
+  Point domain_point(std::uint32_t id) const {
+    const auto y = static_cast<std::uint32_t>((static_cast<double>(id) + 0.5) * inverse_domain_cols_);
+    return {static_cast<int>(id - y * static_cast<std::uint32_t>(domain_cols_)), static_cast<int>(y)};
+  }
   bool in_domain(Point p) const {
     return p.x >= 0 && p.y >= 0 && p.x < domain_cols_ && p.y < domain_rows_;
   }
@@ -94,6 +100,7 @@ class GridHierarchy {
   void add_tile(int x0, int y0, int side);
   int rows_, cols_;
   int domain_rows_ = 0, domain_cols_ = 0;
+  double inverse_domain_cols_ = 0;
   std::vector<Tri> roots_;
   std::vector<std::uint32_t> always_ids_;
 };

@@ -251,6 +251,7 @@ std::size_t LodBuilder::build(const NodePositions& p, const TileRanges& ranges, 
   work_.assign(grid_.roots().begin(), grid_.roots().end());
   refine();
 
+  fan_corners_.clear();
   std::uint32_t* cursor = out.data();
   for (const Tri& root : grid_.roots()) emit(root, true, cursor);
   const std::size_t written = static_cast<std::size_t>(cursor - out.data());
@@ -264,7 +265,7 @@ std::size_t LodBuilder::build(const NodePositions& p, const TileRanges& ranges, 
     world_[2] = std::span(w.z).first(p.nodes());
   } else {
     read_corners(out.first(written));
-    copy_nodes(p, out.first(written), x_.data(), y_.data(), z_.data());
+    copy_nodes(p, drawn_vertices(), x_.data(), y_.data(), z_.data());
     world_[0] = x_, world_[1] = y_, world_[2] = z_;
   }
   // Frame to frame the view and the water change little, so this frame's counts choose how the
@@ -384,9 +385,23 @@ std::size_t LodBuilder::blocks_needed(std::span<const std::uint32_t> triangles, 
   return count;
 }
 
+// The grid ids of the leaves' corners: the active vertices in the grid (every one is a corner of a
+// leaf, and every leaf's corner is one, or a root's), and the corners of the clipped fans.
+std::span<const std::uint32_t> LodBuilder::drawn_vertices() {
+  drawn_.clear();
+  const auto add = [&](std::uint32_t d) {
+    const Point v = grid_.domain_point(d);
+    if (grid_.inside(v)) drawn_.push_back(grid_.id(v));
+  };
+  for (std::uint32_t d : marked_) add(d);
+  for (std::uint32_t d : grid_.always_split_ids()) add(d);
+  drawn_.insert(drawn_.end(), fan_corners_.begin(), fan_corners_.end());
+  return drawn_;
+}
+
 // Depth first; entering each triangle at the hypotenuse end the previous one left at, the leaves
 // form a Sierpinski curve, so consecutive triangles share vertices.
-void LodBuilder::emit(const Tri& t, bool enter_left, std::uint32_t*& out) const {
+void LodBuilder::emit(const Tri& t, bool enter_left, std::uint32_t*& out) {
   Point m;
   if (midpoint(t, m) && (state_[grid_.domain_id(m)] & kActive)) {
     if (enter_left) {
@@ -405,6 +420,7 @@ void LodBuilder::emit(const Tri& t, bool enter_left, std::uint32_t*& out) const 
     return;
   }
   const GridPolygon polygon = clip_to_grid(t, rows(), cols());  // empty when t lies outside
+  for (int k = 0; k < polygon.count; ++k) fan_corners_.push_back(grid_.id(polygon.corner[k]));
   for (int k = 1; k + 1 < polygon.count; ++k) {
     *out++ = grid_.id(polygon.corner[0]);
     *out++ = grid_.id(polygon.corner[k]);

@@ -103,7 +103,8 @@ class LodBuilder {
   bool clipped_leaf_is_fine(const SurfaceBlock& b, const GridPolygon& polygon);
   void activate(Point v);
   void mark(std::uint8_t& s, std::uint8_t bits, Point v);
-  void emit(const Tri& t, bool enter_left, std::uint32_t*& out) const;
+  void emit(const Tri& t, bool enter_left, std::uint32_t*& out);
+  std::span<const std::uint32_t> drawn_vertices();
   std::size_t blocks_needed(std::span<const std::uint32_t> triangles, std::size_t enough);
 
   GridHierarchy grid_;
@@ -116,6 +117,7 @@ class LodBuilder {
   std::span<const float> world_[3];  // those, or the whole grid's when it was read whole
   std::vector<std::uint8_t> state_;  // per domain node: kActive | kExpanded* bits
   std::vector<std::uint32_t> marked_;  // the domain ids whose state this frame set
+  std::vector<std::uint32_t> fan_corners_, drawn_;  // emit()'s clipped fans' corners; drawn_vertices()
   std::vector<Tri> work_;
   bool whole_ = false;                // this frame reads the whole grid (see build())
   std::vector<std::uint8_t> needed_;  // blocks_needed()'s scratch

@@ -346,8 +346,11 @@ TEST(LodBuilder, BuildsFromTheSolversTileBounds) {
       const ErrorReport e = screen_errors(out, rows, cols, world, c);
       EXPECT_EQ(e.uncovered, 0u);
       EXPECT_LE(e.max_error_px, 1.0);
-      // The culling reads the drawn vertices' world positions from the builder.
-      for (std::uint32_t v : out) ASSERT_EQ(builder.world_y()[v], world[6 * std::size_t(v) + 1]);
+      // The culling reads the drawn vertices' world positions from the builder (clipped fans' too).
+      const std::span<const float> drawn[3] = {builder.world_x(), builder.world_y(), builder.world_z()};
+      for (std::uint32_t v : out)
+        for (std::size_t axis = 0; axis < 3; ++axis)
+          ASSERT_EQ(drawn[axis][v], world[6 * std::size_t(v) + axis]) << rows << "x" << cols << " node " << v << " axis " << axis;
     }
   }
 }

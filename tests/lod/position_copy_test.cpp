@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "lod/grid_hierarchy.h"
 #include "lod/node_positions.h"
 #include "lod/position_copy.h"
 
@@ -138,4 +139,15 @@ TEST(PositionCopy, CopiedNodesLandAtTheirIds) {
 }
 
 }  // namespace
+// The builder finds its drawn vertices from their domain ids by a multiply: every node of these
+// domains (a 65537-wide one among them) comes back as itself.
+TEST(GridHierarchy, DomainIdsGiveTheirNodesBack) {
+  for (auto [rows, cols] : {std::pair{2, 65536}, {65536, 2}, {257, 257}, {1000, 1025}, {3, 40001}, {90, 150}}) {
+    const lod::GridHierarchy grid(rows, cols);
+    for (int y = 0; grid.in_domain({0, y}); ++y)
+      for (int x = 0; grid.in_domain({x, y}); ++x)
+        ASSERT_EQ(grid.domain_point(grid.domain_id({x, y})), (lod::Point{x, y})) << rows << "x" << cols;
+  }
+}
+
 }  // namespace pond::lod_test
