@@ -46,6 +46,7 @@ GridHierarchy::GridHierarchy(int rows, int cols) : rows_(rows), cols_(cols) {
   const int high = std::bit_ceil(static_cast<unsigned>(rows - 1));
   domain_cols_ = wide + 1, domain_rows_ = high + 1;
   inverse_domain_cols_ = 1.0 / domain_cols_;
+  grid_is_domain_ = domain_cols_ == cols && domain_rows_ == rows;
   const int side = std::min(wide, high);
   for (int y = 0; y < high; y += side)
     for (int x = 0; x < wide; x += side) add_tile(x, y, side);

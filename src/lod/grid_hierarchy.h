@@ -85,8 +85,12 @@ class GridHierarchy {
   }
   // All three vertices are grid nodes (then so is every node of the triangle).
   bool within_grid(const Tri& t) const {
-    return inside(t.apex) && inside(t.left) && inside(t.right);
+    return (t.apex.x | t.apex.y | t.left.x | t.left.y | t.right.x | t.right.y) >= 0 &&
+           std::max({t.apex.x, t.left.x, t.right.x}) < cols_ && std::max({t.apex.y, t.left.y, t.right.y}) < rows_;
   }
+  // Whether the grid is its whole domain (sides 2^k + 1): then every triangle of the hierarchy is
+  // within it.
+  bool is_domain() const { return grid_is_domain_; }
 
   // Root triangles, tile by tile, two per tile.
   const std::vector<Tri>& roots() const { return roots_; }
@@ -101,6 +105,7 @@ class GridHierarchy {
   int rows_, cols_;
   int domain_rows_ = 0, domain_cols_ = 0;
   double inverse_domain_cols_ = 0;
+  bool grid_is_domain_ = false;
   std::vector<Tri> roots_;
   std::vector<std::uint32_t> always_ids_;
 };

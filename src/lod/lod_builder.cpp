@@ -43,7 +43,7 @@ std::size_t LodBuilder::max_indices() const {
 LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
   const CellBox box = box_of(t);  // named, not bound: clang 14 cannot capture bindings in lambdas
   const int x0 = box.x0, x1 = box.x1, y0 = box.y0, y1 = box.y1;
-  const bool inside = grid_.within_grid(t);
+  const bool inside = grid_.is_domain() || grid_.within_grid(t);
   GridPolygon clipped;  // t's part in the grid, when it reaches past it
   if (!inside && (clipped = clip_to_grid(t, rows(), cols())).count < 3) return Fit::yes;  // wholly outside
   const auto fit = [](bool fine) { return fine ? Fit::yes : Fit::no; };
@@ -413,7 +413,7 @@ void LodBuilder::emit(const Tri& t, bool enter_left, std::uint32_t*& out) {
     }
     return;
   }
-  if (grid_.within_grid(t)) {
+  if (grid_.is_domain() || grid_.within_grid(t)) {
     *out++ = grid_.id(t.apex);
     *out++ = grid_.id(t.left);
     *out++ = grid_.id(t.right);
