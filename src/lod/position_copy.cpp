@@ -11,6 +11,7 @@
 #include <emmintrin.h>  // SSE2: four interleaved records at a time
 
 #include "core/errors.h"
+#include "lod/camera_budget.h"
 
 namespace pond::lod {
 namespace {
@@ -159,10 +160,20 @@ float copy_finite_window(const NodePositions& p, int row0, int col0, int rows, i
   return largest;
 }
 
-void copy_finite_block(const NodePositions& p, int row0, int col0, int rows, int cols, float* x, float* y, float* z) {
-  MaybeNotFinite seen;
-  copy_window_with(p, row0, col0, rows, cols, x, y, z, seen);
-  if (seen.any()) name_non_finite(p, row0, col0, rows, cols, x, y, z);
+void copy_finite_block(const NodePositions& p, int row0, int col0, int rows, int cols, float* x, float* y, float* z,
+                       [[maybe_unused]] bool wide) {
+  bool maybe_not_finite;
+#if POND_LOD_AVX2
+  if (wide && p.stride == 1 && cols >= 8 && wide_budgets_available()) {
+    maybe_not_finite = copy_block_avx2(p, row0, col0, rows, cols, x, y, z);
+  } else
+#endif
+  {
+    MaybeNotFinite seen;
+    copy_window_with(p, row0, col0, rows, cols, x, y, z, seen);
+    maybe_not_finite = seen.any();
+  }
+  if (maybe_not_finite) name_non_finite(p, row0, col0, rows, cols, x, y, z);
 }
 
 std::array<float, 3> world_position(const NodePositions& p, int row, int col) {

@@ -76,7 +76,7 @@ void SurfaceBlocks::make(SurfaceBlock& b, Point origin, int rows, int cols, bool
   b.grid = shape(rows, cols);
   const std::size_t n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
   for (std::vector<float>* v : {&b.x, &b.y, &b.z, &b.budget, &b.sure2}) v->resize(n + kScanOverread);
-  copy_finite_block(positions_, b.origin.y, b.origin.x, rows, cols, b.x.data(), b.y.data(), b.z.data());
+  copy_finite_block(positions_, b.origin.y, b.origin.x, rows, cols, b.x.data(), b.y.data(), b.z.data(), wide_);
   b.wide = wide_;
   node_budgets(b.positions(), terms_, b.budget.data(), wide_, all_in_view);
   scan_thresholds(b.budget.data(), n, largest_, b.sure2.data());

@@ -200,7 +200,9 @@ TEST(TriangleScan, TablesOfManyPitchesInTurn) {
       }
       bool near = false;
       const bool expected = within_in_double(w, s.t, s.region, near);
-      if (!near) ASSERT_EQ(within, expected) << w.grid->cols() << " wide, scan " << k;
+      if (!near) {
+        ASSERT_EQ(within, expected) << w.grid->cols() << " wide, scan " << k;
+      }
       fine += within, ++total;
     }
     if (!any) break;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "lod/camera_budget.h"
 #include "lod/grid_hierarchy.h"
 #include "lod/node_positions.h"
 #include "lod/position_copy.h"
@@ -118,6 +119,39 @@ TEST(PositionCopy, BlocksRefuseNonFiniteCoordinatesByName) {
   EXPECT_NO_THROW(lod::copy_finite_block(lod::soa_positions(big.data(), big.data(), big.data(), kRows, kCols), 0, 0,
                                          kRows, kCols, x.data(), y.data(), z.data()));
   EXPECT_EQ(x[kRows * kCols - 1], 3e38f);
+}
+
+// The blocks' AVX2 copy (eight columns at a time, the last eight overlapping) gives the bits of
+// the baseline's, in every layout and window at least eight wide, and refuses a non-finite
+// coordinate in any lane, the overlapped ones included.
+TEST(PositionCopy, TheWideBlockCopyHasTheBaselinesBits) {
+  if (!lod::wide_budgets_available()) GTEST_SKIP() << "no AVX2 copy on this CPU or build";
+  for (std::uint32_t seed : {4u, 5u}) {
+    const Layouts data(seed);
+    for (const auto& [name, p] : data.views())
+      for (auto [row0, col0, rows, cols] : {std::tuple{0, 0, kRows, kCols}, {2, 1, 5, 9}, {4, 3, 9, 8}, {1, 2, 4, 9}, {12, 0, 1, 11}}) {
+        const std::size_t n = static_cast<std::size_t>(rows * cols);
+        std::vector<float> x(n), y(n), z(n), wx(n), wy(n), wz(n);
+        lod::copy_finite_block(p, row0, col0, rows, cols, x.data(), y.data(), z.data());
+        lod::copy_finite_block(p, row0, col0, rows, cols, wx.data(), wy.data(), wz.data(), true);
+        for (std::size_t k = 0; k < n; ++k) {
+          ASSERT_EQ(std::bit_cast<std::uint32_t>(wx[k]), std::bit_cast<std::uint32_t>(x[k])) << name << " node " << k;
+          ASSERT_EQ(std::bit_cast<std::uint32_t>(wy[k]), std::bit_cast<std::uint32_t>(y[k])) << name << " node " << k;
+          ASSERT_EQ(std::bit_cast<std::uint32_t>(wz[k]), std::bit_cast<std::uint32_t>(z[k])) << name << " node " << k;
+        }
+      }
+  }
+  with_one_bad_node(11, 6, 0, {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()},
+                    [](const std::string& name, const lod::NodePositions& p, std::size_t n, int, int col, float) {
+                      std::vector<float> x(static_cast<std::size_t>(kRows * kCols)), y(x.size()), z(x.size());
+                      const std::string where = "node " + std::to_string(n) + " (row 6, col " + std::to_string(col) + ")";
+                      try {
+                        lod::copy_finite_block(p, 5, 0, 3, kCols, x.data(), y.data(), z.data(), true);
+                        ADD_FAILURE() << name << ": " << where << " not refused";
+                      } catch (const InputError& e) {
+                        EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << name << ": " << e.what();
+                      }
+                    });
 }
 
 // copy_nodes finds each id's row and column without a division: every node of grids up to the
