@@ -164,7 +164,9 @@ void copy_finite_block(const NodePositions& p, int row0, int col0, int rows, int
                        [[maybe_unused]] bool wide) {
   bool maybe_not_finite;
 #if POND_LOD_AVX2
-  if (wide && p.stride == 1 && cols >= 8 && wide_budgets_available()) {
+  // The AVX2 copy's layouts: arrays, and records of world positions starting x, y, z.
+  const bool records = p.stride >= 4 && p.y == p.x + 1 && p.z == p.x + 2 && p.grid_spacing <= 0;
+  if (wide && (p.stride == 1 || records) && cols >= 8 && wide_budgets_available()) {
     maybe_not_finite = copy_block_avx2(p, row0, col0, rows, cols, x, y, z);
   } else
 #endif

@@ -26,8 +26,9 @@ float copy_finite_window(const NodePositions& positions, int row0, int col0, int
                          float* z);
 
 // copy_finite_window() without the largest: only the check, which costs less (the builder's blocks).
-// With `wide`, windows of stride-1 arrays at least eight nodes wide go by the AVX2 copy where the
-// build has it and the CPU runs it (camera_budget.h: wide_budgets_available()): the same bits.
+// With `wide`, windows at least eight nodes wide of arrays, or of records of world positions
+// starting x, y, z, go by the AVX2 copy where the build has it and the CPU runs it (camera_budget.h:
+// wide_budgets_available()): the same bits.
 void copy_finite_block(const NodePositions& positions, int row0, int col0, int rows, int cols, float* x, float* y,
                        float* z, bool wide = false);
 // That AVX2 copy (position_copy_avx2.cpp; not in IA-32 builds): true when some coordinate may not
