@@ -46,8 +46,10 @@ struct BudgetTerms {
 BudgetTerms budget_terms(const Camera& camera, double tolerance_px, float largest);
 
 // The least budget of any node in a world box: +infinity when the box lies wholly outside the
-// frustum (widened as the node budgets' is), else per_depth * (its least depth - delta), never
-// below 0. In double.
+// frustum (widened as the node budgets' is), else per_depth * (its least depth - 2 delta), never
+// below 0. In double. Twice delta: node_budgets takes delta off a depth it computes in float (within
+// a fraction of delta of the exact one), so this is at most every node's own float budget, and a
+// region the box budgets prove holds no node an exact scan finds over its budget.
 class BoxBudget {
  public:
   explicit BoxBudget(const BudgetTerms& terms);
@@ -78,7 +80,7 @@ class BoxBudget {
   };
   bool outside(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const;
   double depth_budget(const std::array<double, 3>& lo, const std::array<double, 3>& hi) const {
-    return t_.per_depth * std::max(depth_.smallest(lo, hi) - t_.delta, 0.0);
+    return t_.per_depth * std::max(depth_.smallest(lo, hi) - 2 * t_.delta, 0.0);
   }
   BudgetTerms t_;
   Plane depth_;

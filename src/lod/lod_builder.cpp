@@ -55,9 +55,10 @@ LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
   const bool small = x1 - x0 <= kBlockCells && y1 - y0 <= kBlockCells;
   const bool wide = !small && inside && x1 - x0 <= 2 * kBlockCells && y1 - y0 <= 2 * kBlockCells;
   const int bx = x0 / kBlockCells, by = y0 / kBlockCells;
-  // Fine when the ranges prove it or (a small triangle) its block's nodes do: either order gives
-  // the same outcome, so the mesh does not depend on which blocks were made or brought before.
-  // The block first where it is made already (sharper, and its nodes are at hand), else the ranges.
+  // Fine when the ranges prove it or (a small triangle) its block's nodes do. The ranges prove no
+  // triangle its nodes do not (camera_budget.h: BoxBudget's budgets are at most the nodes'), so
+  // where the block is made already its nodes alone decide, and else the ranges are tried first:
+  // the outcome is the same, so the mesh does not depend on which blocks were made or brought before.
   const auto ranged = [&] {
     const Point own[3] = {t.apex, t.left, t.right};
     const std::span<const Point> corners = inside ? std::span<const Point>(own) : clipped.corners();
@@ -75,7 +76,7 @@ LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
   // A block made last frame is likely needed again: its nodes first then too, not a ranged test
   // that would most likely fail (where the host holds it already: no wait is added for it).
   if (small && (blocks_.made(bx, by) || (blocks_.made_last_frame(bx, by) && block_held(bx, by, false))))
-    return fit(on_nodes() || ranged());
+    return fit(on_nodes());
   if (ranged()) return Fit::yes;
   if (wide) return wide_leaf_fits(t, m);
   if (!small) return Fit::no;

@@ -11,6 +11,7 @@
 
 #include "core/cpu_features_mask.h"
 #include "lod/lod_builder.h"
+#include "lod/range_proof.h"
 #include "lod/rippled_states.h"
 #include "lod/surface_blocks.h"
 #include "lod/tile_ranges.h"
@@ -128,6 +129,82 @@ TEST(TriangleScan, VerdictsAreTheExactOnes) {
         EXPECT_GT(decided, static_cast<int>(scans.size()) * 99 / 100);
       }
   }
+}
+
+// The tile ranges never prove a block-sized triangle its nodes do not (camera_budget.h: the box
+// budgets are at most the nodes' own), so the builder judges a triangle whose block is made on its
+// nodes alone. Calm water (where the ranges prove the most) and rain, from above, grazing, and from
+// inside the pond with its nearest nodes' budgets near 0.
+TEST(TriangleScan, RangesProveNoTriangleItsNodesDoNot) {
+  int proved = 0;
+  for (const std::vector<float>& state : {simulated_pond(65, 65, 2, 1, 40, 5), simulated_pond(65, 65, 60, 6, 10, 3)}) {
+    const auto p = lod::interleaved_positions(state.data(), 65, 65);
+    const lod::TileRanges ranges = lod::tile_ranges(p);
+    const float largest = ranges.largest();
+    for (const lod::Camera& cam : {lod::Camera{{32, 40, -20}, {32, 0, 32}, 60, 1280, 720},
+                                   lod::Camera{{32, 1.5, -10}, {32, 0.3, 40}, 50, 1280, 720},
+                                   lod::Camera{{30, 0.05, 30}, {60, 0, 40}, 90, 640, 480}})
+      for (double tau : {0.3, 3.0}) {
+        lod::SurfaceBlocks blocks(65, 65);
+        const lod::BudgetTerms terms = lod::budget_terms(cam, tau, largest);
+        const lod::BoxBudget box_budget(terms);
+        blocks.begin(p, terms, largest, ranges, box_budget);
+        const lod::SurfaceBlock& w = blocks.whole();
+        std::vector<Scan> scans;
+        for (const lod::Tri& root : w.grid->roots()) collect(*w.grid, root, lod::kBlockCells, scans);
+        for (const Scan& s : scans) {
+          if (!(s.region.apex == s.t.apex && s.region.left == s.t.left && s.region.right == s.t.right)) continue;
+          const lod::CellBox box = lod::box_of(s.t);
+          const lod::Point corners[3] = {s.t.apex, s.t.left, s.t.right};
+          if (!lod::RangeProof(ranges, box_budget).proves(box.x0, box.x1, box.y0, box.y1, corners)) continue;
+          ++proved;
+          ASSERT_TRUE(lod::within_budget(*w.grid, w.positions(), w.scan_budgets(), largest, s.t, nullptr))
+              << "apex " << s.t.apex.x << "," << s.t.apex.y << " left " << s.t.left.x << "," << s.t.left.y;
+        }
+      }
+  }
+  EXPECT_GT(proved, 1000);
+}
+
+// The same where it is tight: calm water with one node raised by about its own budget, seen along
+// +z (no x in the view direction), so that the node is the nearest point of its cells' boxes and
+// the ranges bound its miss exactly. Raised a millionth of its budget at a time across it, no
+// triangle over it is proved by the ranges and refused by its nodes.
+TEST(TriangleScan, RangesProveNoTriangleItsNodesDoNotAtTheEdge) {
+  constexpr int kSide = 65, kRow = 32, kCol = 22;
+  const lod::Camera cam{{32, 6, -20}, {32, 0, 40}, 60, 1280, 720};
+  const std::size_t n = static_cast<std::size_t>(kRow * kSide + kCol);
+  std::vector<float> state = flat_pond(kSide, kSide);
+  const auto budget_at = [&](float raised, bool check, int& proved) {
+    state[6 * n + 1] = raised;
+    const auto p = lod::interleaved_positions(state.data(), kSide, kSide);
+    const lod::TileRanges ranges = lod::tile_ranges(p);
+    const float largest = ranges.largest();
+    lod::SurfaceBlocks blocks(kSide, kSide);
+    const lod::BudgetTerms terms = lod::budget_terms(cam, 1.0, largest);
+    const lod::BoxBudget box_budget(terms);
+    blocks.begin(p, terms, largest, ranges, box_budget);
+    const lod::SurfaceBlock& w = blocks.whole();
+    if (!check) return w.budget[n];
+    std::vector<Scan> scans;
+    for (const lod::Tri& root : w.grid->roots()) collect(*w.grid, root, lod::kBlockCells, scans);
+    for (const Scan& s : scans) {
+      const lod::CellBox box = lod::box_of(s.t);
+      if (!(s.region.apex == s.t.apex && s.region.left == s.t.left && s.region.right == s.t.right) || box.x0 > kCol ||
+          box.x1 < kCol || box.y0 > kRow || box.y1 < kRow)
+        continue;
+      const lod::Point corners[3] = {s.t.apex, s.t.left, s.t.right};
+      if (!lod::RangeProof(ranges, box_budget).proves(box.x0, box.x1, box.y0, box.y1, corners)) continue;
+      ++proved;
+      EXPECT_TRUE(lod::within_budget(*w.grid, w.positions(), w.scan_budgets(), largest, s.t, nullptr))
+          << "raised " << raised << ", apex " << s.t.apex.x << "," << s.t.apex.y;
+    }
+    return w.budget[n];
+  };
+  int proved = 0;
+  const float budget = budget_at(budget_at(0.05f, false, proved), false, proved);  // its budget raised so far
+  for (int k = -40; k <= 40; ++k) budget_at(budget * static_cast<float>(1 + k * 1e-6), true, proved);
+  EXPECT_GT(proved, 40);
 }
 
 // The builder, frame after frame (blocks first, then the whole grid), draws the same triangles with
