@@ -10,11 +10,11 @@
 //     tau * depth / K in the frustum, +infinity for a box wholly outside it): no node is read;
 //  2. failing that, a triangle of at most a block (surface_blocks.h) is judged on its block's
 //     nodes, made on first use, by an exact scan (triangle_scan.h: a compare a node, then the
-//     rows that need it judged closer; a block made already, or made the frame before, is tried
-//     before the ranges: the verdict is the same); one of at most two blocks across, on the blocks it
-//     covers, by parts that each lie in one (wide_leaf.cpp). Where the whole grid is read as one
-//     block, a triangle of any size is judged there, first on its nested bound (error_bounds.h)
-//     and by parts;
+//     rows that need it judged closer; where the block is made already, or was the frame before,
+//     the scan alone decides: the ranges prove no triangle its nodes do not); one of at most two
+//     blocks across, on the blocks it covers, by parts that each lie in one (wide_leaf.cpp).
+//     Where the whole grid is read as one block, a triangle of any size is judged there, first on
+//     its nested bound (error_bounds.h) and by parts;
 //  3. else its midpoint is activated together with its ancestors in the dependency DAG (so the
 //     mesh stays conforming), and every triangle created that way is tested in turn, forced ones
 //     included. Triangles reaching past the grid (sizes other than 2^k + 1) are tested and drawn

@@ -83,24 +83,55 @@ bool within_in_double(const lod::SurfaceBlock& b, const lod::Tri& t, const lod::
   return within;
 }
 
+// The whole grid of `p` read as one block from `cam` at `tau`, with its tile ranges and box budgets.
+struct WholeGrid {
+  WholeGrid(const lod::NodePositions& p, const lod::Camera& cam, double tau)
+      : ranges(lod::tile_ranges(p)), largest(ranges.largest()), blocks(p.rows, p.cols),
+        terms(lod::budget_terms(cam, tau, largest)), box_budget(terms) {
+    blocks.begin(p, terms, largest, ranges, box_budget);
+  }
+  const lod::SurfaceBlock& block() { return blocks.whole(); }
+  // Every triangle of at most a block whose box `keep` takes: where the tile ranges prove it, its
+  // nodes must too. Returns how many the ranges proved.
+  template <class Keep>
+  int ranges_prove_only_what_nodes_do(Keep keep) {
+    const lod::SurfaceBlock& w = block();
+    std::vector<Scan> scans;
+    for (const lod::Tri& root : w.grid->roots()) collect(*w.grid, root, lod::kBlockCells, scans);
+    int proved = 0;
+    for (const Scan& s : scans) {
+      const lod::CellBox box = lod::box_of(s.t);
+      const lod::Point corners[3] = {s.t.apex, s.t.left, s.t.right};
+      if (!(s.region.apex == s.t.apex && s.region.left == s.t.left && s.region.right == s.t.right) || !keep(box) ||
+          !lod::RangeProof(ranges, box_budget).proves(box.x0, box.x1, box.y0, box.y1, corners))
+        continue;
+      ++proved;
+      EXPECT_TRUE(lod::within_budget(*w.grid, w.positions(), w.scan_budgets(), largest, s.t, nullptr))
+          << "apex " << s.t.apex.x << "," << s.t.apex.y << " left " << s.t.left.x << "," << s.t.left.y;
+    }
+    return proved;
+  }
+  lod::TileRanges ranges;
+  float largest;
+  lod::SurfaceBlocks blocks;
+  lod::BudgetTerms terms;
+  lod::BoxBudget box_budget;
+};
+
 // Rain and calm water with a few rings, from above, grazing and inside, at three tolerances: every
 // scan of a part the builder may scan, against the check in double.
 TEST(TriangleScan, VerdictsAreTheExactOnes) {
   for (const auto& [what, state] : {std::pair<std::string, std::vector<float>>{"rain", simulated_pond(65, 65, 60, 6, 10, 3)},
                                     {"rings", simulated_pond(65, 65, 4, 1, 30, 5)}}) {
     const auto p = lod::interleaved_positions(state.data(), 65, 65);
-    const lod::TileRanges ranges = lod::tile_ranges(p);
-    const float largest = ranges.largest();
     const lod::Camera views[] = {{{32, 40, -20}, {32, 0, 32}, 60, 1280, 720},
                                  {{32, 1.5, -10}, {32, 0.3, 40}, 50, 1280, 720},
                                  {{30, 2, 30}, {60, 0, 40}, 90, 640, 480}};
     for (const lod::Camera& cam : views)
       for (double tau : {0.3, 1.0, 3.0}) {
-        lod::SurfaceBlocks blocks(65, 65);
-        const lod::BudgetTerms terms = lod::budget_terms(cam, tau, largest);
-        const lod::BoxBudget box_budget(terms);
-        blocks.begin(p, terms, largest, ranges, box_budget);
-        const lod::SurfaceBlock& w = blocks.whole();
+        WholeGrid whole(p, cam, tau);
+        const lod::SurfaceBlock& w = whole.block();
+        const float largest = whole.largest;
         std::vector<Scan> scans;
         for (const lod::Tri& root : w.grid->roots()) collect(*w.grid, root, 32, scans);
         int fine = 0, decided = 0;
@@ -137,32 +168,13 @@ TEST(TriangleScan, VerdictsAreTheExactOnes) {
 // inside the pond with its nearest nodes' budgets near 0.
 TEST(TriangleScan, RangesProveNoTriangleItsNodesDoNot) {
   int proved = 0;
-  for (const std::vector<float>& state : {simulated_pond(65, 65, 2, 1, 40, 5), simulated_pond(65, 65, 60, 6, 10, 3)}) {
-    const auto p = lod::interleaved_positions(state.data(), 65, 65);
-    const lod::TileRanges ranges = lod::tile_ranges(p);
-    const float largest = ranges.largest();
+  for (const std::vector<float>& state : {simulated_pond(65, 65, 2, 1, 40, 5), simulated_pond(65, 65, 60, 6, 10, 3)})
     for (const lod::Camera& cam : {lod::Camera{{32, 40, -20}, {32, 0, 32}, 60, 1280, 720},
                                    lod::Camera{{32, 1.5, -10}, {32, 0.3, 40}, 50, 1280, 720},
                                    lod::Camera{{30, 0.05, 30}, {60, 0, 40}, 90, 640, 480}})
-      for (double tau : {0.3, 3.0}) {
-        lod::SurfaceBlocks blocks(65, 65);
-        const lod::BudgetTerms terms = lod::budget_terms(cam, tau, largest);
-        const lod::BoxBudget box_budget(terms);
-        blocks.begin(p, terms, largest, ranges, box_budget);
-        const lod::SurfaceBlock& w = blocks.whole();
-        std::vector<Scan> scans;
-        for (const lod::Tri& root : w.grid->roots()) collect(*w.grid, root, lod::kBlockCells, scans);
-        for (const Scan& s : scans) {
-          if (!(s.region.apex == s.t.apex && s.region.left == s.t.left && s.region.right == s.t.right)) continue;
-          const lod::CellBox box = lod::box_of(s.t);
-          const lod::Point corners[3] = {s.t.apex, s.t.left, s.t.right};
-          if (!lod::RangeProof(ranges, box_budget).proves(box.x0, box.x1, box.y0, box.y1, corners)) continue;
-          ++proved;
-          ASSERT_TRUE(lod::within_budget(*w.grid, w.positions(), w.scan_budgets(), largest, s.t, nullptr))
-              << "apex " << s.t.apex.x << "," << s.t.apex.y << " left " << s.t.left.x << "," << s.t.left.y;
-        }
-      }
-  }
+      for (double tau : {0.3, 3.0})
+        proved += WholeGrid(lod::interleaved_positions(state.data(), 65, 65), cam, tau)
+                      .ranges_prove_only_what_nodes_do([](const lod::CellBox&) { return true; });
   EXPECT_GT(proved, 1000);
 }
 
@@ -175,35 +187,16 @@ TEST(TriangleScan, RangesProveNoTriangleItsNodesDoNotAtTheEdge) {
   const lod::Camera cam{{32, 6, -20}, {32, 0, 40}, 60, 1280, 720};
   const std::size_t n = static_cast<std::size_t>(kRow * kSide + kCol);
   std::vector<float> state = flat_pond(kSide, kSide);
-  const auto budget_at = [&](float raised, bool check, int& proved) {
-    state[6 * n + 1] = raised;
-    const auto p = lod::interleaved_positions(state.data(), kSide, kSide);
-    const lod::TileRanges ranges = lod::tile_ranges(p);
-    const float largest = ranges.largest();
-    lod::SurfaceBlocks blocks(kSide, kSide);
-    const lod::BudgetTerms terms = lod::budget_terms(cam, 1.0, largest);
-    const lod::BoxBudget box_budget(terms);
-    blocks.begin(p, terms, largest, ranges, box_budget);
-    const lod::SurfaceBlock& w = blocks.whole();
-    if (!check) return w.budget[n];
-    std::vector<Scan> scans;
-    for (const lod::Tri& root : w.grid->roots()) collect(*w.grid, root, lod::kBlockCells, scans);
-    for (const Scan& s : scans) {
-      const lod::CellBox box = lod::box_of(s.t);
-      if (!(s.region.apex == s.t.apex && s.region.left == s.t.left && s.region.right == s.t.right) || box.x0 > kCol ||
-          box.x1 < kCol || box.y0 > kRow || box.y1 < kRow)
-        continue;
-      const lod::Point corners[3] = {s.t.apex, s.t.left, s.t.right};
-      if (!lod::RangeProof(ranges, box_budget).proves(box.x0, box.x1, box.y0, box.y1, corners)) continue;
-      ++proved;
-      EXPECT_TRUE(lod::within_budget(*w.grid, w.positions(), w.scan_budgets(), largest, s.t, nullptr))
-          << "raised " << raised << ", apex " << s.t.apex.x << "," << s.t.apex.y;
-    }
-    return w.budget[n];
+  const auto raised_by = [&](float height) {
+    state[6 * n + 1] = height;
+    return WholeGrid(lod::interleaved_positions(state.data(), kSide, kSide), cam, 1.0);
   };
+  const float budget = raised_by(raised_by(0.05f).block().budget[n]).block().budget[n];  // its budget raised so far
   int proved = 0;
-  const float budget = budget_at(budget_at(0.05f, false, proved), false, proved);  // its budget raised so far
-  for (int k = -40; k <= 40; ++k) budget_at(budget * static_cast<float>(1 + k * 1e-6), true, proved);
+  for (int k = -40; k <= 40; ++k)
+    proved += raised_by(budget * static_cast<float>(1 + k * 1e-6)).ranges_prove_only_what_nodes_do([](const lod::CellBox& b) {
+      return b.x0 <= kCol && kCol <= b.x1 && b.y0 <= kRow && kRow <= b.y1;
+    });
   EXPECT_GT(proved, 40);
 }
 
