@@ -124,7 +124,7 @@ GridPolygon clip_to_grid(const Tri& t, int rows, int cols);
 inline bool midpoint(const Tri& t, Point& m) {
   const int sx = t.left.x + t.right.x, sy = t.left.y + t.right.y;
   if ((sx | sy) & 1) return false;
-  m = {sx / 2, sy / 2};
+  m = {sx >> 1, sy >> 1};  // halves of even numbers, negative ones too: no rounding to correct
   return true;
 }
 

@@ -54,7 +54,8 @@ LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
   }
   const bool small = x1 - x0 <= kBlockCells && y1 - y0 <= kBlockCells;
   const bool wide = !small && inside && x1 - x0 <= 2 * kBlockCells && y1 - y0 <= 2 * kBlockCells;
-  const int bx = x0 / kBlockCells, by = y0 / kBlockCells;
+  // Unsigned: the corners are in the domain (x0, y0 >= 0), so the divisions are shifts.
+  const int bx = static_cast<int>(static_cast<unsigned>(x0) / kBlockCells), by = static_cast<int>(static_cast<unsigned>(y0) / kBlockCells);
   // Fine when the ranges prove it or (a small triangle) its block's nodes do. The ranges prove no
   // triangle its nodes do not (camera_budget.h: BoxBudget's budgets are at most the nodes'), so
   // where the block is made already its nodes alone decide, and else the ranges are tried first:
@@ -120,7 +121,7 @@ bool LodBuilder::leaf_is_fine(const SurfaceBlock& blk, const Tri& t, Point mid_p
   const auto squared_deviation = [&](Point e0, Point e1) {
     const int sx = e0.x + e1.x, sy = e0.y + e1.y;
     if ((sx | sy) & 1) return -1.0;  // a cell diagonal: no node halfway
-    const std::uint32_t v = grid.id({sx / 2, sy / 2}), a = grid.id(e0), b = grid.id(e1);
+    const std::uint32_t v = grid.id({sx >> 1, sy >> 1}), a = grid.id(e0), b = grid.id(e1);
     const double dx = px[v] - 0.5 * (double(px[a]) + px[b]);
     const double dy = py[v] - 0.5 * (double(py[a]) + py[b]);
     const double dz = pz[v] - 0.5 * (double(pz[a]) + pz[b]);
@@ -200,8 +201,9 @@ void LodBuilder::mark(std::uint8_t& s, std::uint8_t bits, Point v) {
 }
 
 // Activates v and, first, its parents (the dependency closure that keeps the mesh conforming),
-// then queues the triangles of v's diamond so that their new children get tested.
-void LodBuilder::activate(Point v) {
+// then queues the triangles of v's diamond so that their new children get tested, but for the one
+// with apex `expanding` (refine() expands it at once).
+void LodBuilder::activate(Point v, Point expanding) {
   std::uint8_t& s = state_[grid_.domain_id(v)];
   if (s & kActive) return;
   mark(s, kActive, v);
@@ -209,7 +211,7 @@ void LodBuilder::activate(Point v) {
   for (Point p : d.parents)
     if (grid_.in_domain(p)) activate(p);
   for (Point p : d.parents)
-    if (grid_.in_domain(p)) work_.push_back(oriented(p, d.end0, d.end1));
+    if (grid_.in_domain(p) && p != expanding) work_.push_back(oriented(p, d.end0, d.end1));
 }
 
 std::size_t LodBuilder::build(const NodePositions& p, const Camera& camera, double tolerance_px,
@@ -297,7 +299,7 @@ void LodBuilder::refine() {
         const Fit fit = leaf_fits(t, m);
         if (fit == Fit::later) waiting_.push_back(t);
         if (fit != Fit::no) continue;
-        activate(m);  // queues t again (expanded below, so that copy is skipped) and its neighbour
+        activate(m, t.apex);  // queues its neighbour across the hypotenuse; t is expanded below
       }
       const std::uint8_t bit = kExpanded[side_of(t, m)];
       if (s & bit) continue;
@@ -420,7 +422,13 @@ void LodBuilder::emit(const Tri& t, bool enter_left, std::uint32_t*& out) {
     *out++ = grid_.id(t.right);
     return;
   }
-  const GridPolygon polygon = clip_to_grid(t, rows(), cols());  // empty when t lies outside
+  emit_fan(t, out);
+}
+
+// A leaf reaching past the grid: its part in the grid as a fan, none when it lies outside. Out of
+// line, so that emit()'s recursion keeps a small frame.
+void LodBuilder::emit_fan(const Tri& t, std::uint32_t*& out) {
+  const GridPolygon polygon = clip_to_grid(t, rows(), cols());
   for (int k = 0; k < polygon.count; ++k) fan_corners_.push_back(grid_.id(polygon.corner[k]));
   for (int k = 1; k + 1 < polygon.count; ++k) {
     *out++ = grid_.id(polygon.corner[0]);

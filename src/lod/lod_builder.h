@@ -101,9 +101,10 @@ class LodBuilder {
   void note_corners(std::span<const Point> corners);
   bool leaf_is_fine(const SurfaceBlock& b, const Tri& t, Point m);
   bool clipped_leaf_is_fine(const SurfaceBlock& b, const GridPolygon& polygon);
-  void activate(Point v);
+  void activate(Point v, Point expanding = {-1, -1});
   void mark(std::uint8_t& s, std::uint8_t bits, Point v);
   void emit(const Tri& t, bool enter_left, std::uint32_t*& out);
+  [[gnu::noinline]] void emit_fan(const Tri& t, std::uint32_t*& out);
   std::span<const std::uint32_t> drawn_vertices();
   std::size_t blocks_needed(std::span<const std::uint32_t> triangles, std::size_t enough);
 

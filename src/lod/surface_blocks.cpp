@@ -40,9 +40,8 @@ const GridHierarchy* SurfaceBlocks::shape(int rows, int cols) {
   return g.get();
 }
 
-const SurfaceBlock& SurfaceBlocks::block(int bx, int by) {
+const SurfaceBlock& SurfaceBlocks::make_block(int bx, int by) {
   const std::size_t k = index(bx, by);
-  if (made_in_[k] == frame_) return *pool_[slot_[k]];
   if (used_ == pool_.size()) pool_.push_back(std::make_unique<SurfaceBlock>());
   SurfaceBlock& b = *pool_[used_];
   const core::GridWindow w = window(bx, by);

@@ -56,7 +56,10 @@ class SurfaceBlocks {
   void begin(const NodePositions& positions, const BudgetTerms& terms, float largest, const TileRanges& ranges,
              const BoxBudget& box_budget);
   // Block (bx, by), made on first use this frame. Throws InputError on a non-finite position in it.
-  const SurfaceBlock& block(int bx, int by);
+  const SurfaceBlock& block(int bx, int by) {
+    const std::size_t k = index(bx, by);
+    return made_in_[k] == frame_ ? *pool_[slot_[k]] : make_block(bx, by);
+  }
   // The whole grid as one block, made on first use this frame: one pass, no border twice, no
   // per-block set-up, with the grid's nested bounds.
   const SurfaceBlock& whole();
@@ -72,6 +75,7 @@ class SurfaceBlocks {
     return static_cast<std::size_t>(by) * static_cast<std::size_t>(blocks_x_) + static_cast<std::size_t>(bx);
   }
   const GridHierarchy* shape(int rows, int cols);
+  const SurfaceBlock& make_block(int bx, int by);
   void make(SurfaceBlock& b, Point origin, int rows, int cols, bool all_in_view);
 
   int rows_, cols_, blocks_x_, blocks_y_;
