@@ -88,9 +88,9 @@ class GridHierarchy {
     return (t.apex.x | t.apex.y | t.left.x | t.left.y | t.right.x | t.right.y) >= 0 &&
            std::max({t.apex.x, t.left.x, t.right.x}) < cols_ && std::max({t.apex.y, t.left.y, t.right.y}) < rows_;
   }
-  // Whether the grid is its whole domain (sides 2^k + 1): then every triangle of the hierarchy is
-  // within it.
-  bool is_domain() const { return grid_is_domain_; }
+  // The same for a triangle of the hierarchy (its corners in the domain): always where the grid is
+  // its whole domain (sides 2^k + 1), with no test.
+  bool hierarchy_tri_within_grid(const Tri& t) const { return grid_is_domain_ || within_grid(t); }
 
   // Root triangles, tile by tile, two per tile.
   const std::vector<Tri>& roots() const { return roots_; }

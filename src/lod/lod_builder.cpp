@@ -43,7 +43,7 @@ std::size_t LodBuilder::max_indices() const {
 LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
   const CellBox box = box_of(t);  // named, not bound: clang 14 cannot capture bindings in lambdas
   const int x0 = box.x0, x1 = box.x1, y0 = box.y0, y1 = box.y1;
-  const bool inside = grid_.is_domain() || grid_.within_grid(t);
+  const bool inside = grid_.hierarchy_tri_within_grid(t);
   GridPolygon clipped;  // t's part in the grid, when it reaches past it
   if (!inside && (clipped = clip_to_grid(t, rows(), cols())).count < 3) return Fit::yes;  // wholly outside
   const auto fit = [](bool fine) { return fine ? Fit::yes : Fit::no; };
@@ -54,8 +54,7 @@ LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
   }
   const bool small = x1 - x0 <= kBlockCells && y1 - y0 <= kBlockCells;
   const bool wide = !small && inside && x1 - x0 <= 2 * kBlockCells && y1 - y0 <= 2 * kBlockCells;
-  // Unsigned: the corners are in the domain (x0, y0 >= 0), so the divisions are shifts.
-  const int bx = static_cast<int>(static_cast<unsigned>(x0) / kBlockCells), by = static_cast<int>(static_cast<unsigned>(y0) / kBlockCells);
+  const int bx = block_at(x0), by = block_at(y0);  // the corners are in the domain: x0, y0 >= 0
   // Fine when the ranges prove it or (a small triangle) its block's nodes do. The ranges prove no
   // triangle its nodes do not (camera_budget.h: BoxBudget's budgets are at most the nodes'), so
   // where the block is made already its nodes alone decide, and else the ranges are tried first:
@@ -416,7 +415,7 @@ void LodBuilder::emit(const Tri& t, bool enter_left, std::uint32_t*& out) {
     }
     return;
   }
-  if (grid_.is_domain() || grid_.within_grid(t)) {
+  if (grid_.hierarchy_tri_within_grid(t)) {
     *out++ = grid_.id(t.apex);
     *out++ = grid_.id(t.left);
     *out++ = grid_.id(t.right);

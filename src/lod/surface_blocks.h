@@ -28,6 +28,8 @@ namespace pond::lod {
 // a larger one only on tile ranges (tile_ranges.h). 16 rather than 32: docs/perf.md.
 constexpr int kBlockCells = 16;
 static_assert(kBlockCells == kTileCells, "a block is a tile's nodes: its tile's range bounds them");
+// The block whose cells start at column (or row) k >= 0: unsigned, so the division is a shift.
+inline int block_at(int k) { return static_cast<int>(static_cast<unsigned>(k) / kBlockCells); }
 
 struct SurfaceBlock {
   Point origin;               // its first node in the grid

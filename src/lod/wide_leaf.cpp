@@ -21,7 +21,7 @@ bool in_one_block(const Tri& t) {
 
 Point block_of(const Tri& t) {
   const CellBox b = box_of(t);
-  return {static_cast<int>(static_cast<unsigned>(b.x0) / kBlockCells), static_cast<int>(static_cast<unsigned>(b.y0) / kBlockCells)};
+  return {block_at(b.x0), block_at(b.y0)};
 }
 
 }  // namespace
