@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The soak of issue 8: a 129 x 129 pond with a splash every 50 steps, advanced on the CPU solver and
 # on the GPU solver side by side, checked at 100 checkpoints (finite, energy bounded, CPU == GPU bit
-# for bit) and for memory growth (RSS) at the end. Exit 0 when every check held.
+# for bit) and for memory growth at the end (the heap in use, and RSS after malloc_trim). Exit 0
+# when every check held.
 #
 #   scripts/soak.sh                       1,000,000 steps (about 12 min on 2 busy cores + lavapipe)
 #   scripts/soak.sh --steps 100000        a shorter run; other options: --splash-every K --size N
