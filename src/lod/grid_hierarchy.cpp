@@ -7,20 +7,17 @@
 #include "core/errors.h"
 
 namespace pond::lod {
-namespace {
-
-int lowest_bit(int v) { return v & -v; }
-
-}  // namespace
 
 Diamond GridHierarchy::diamond(Point v) {
-  const int h = lowest_bit(v.x | v.y);
-  const bool x_odd = (v.x / h) & 1, y_odd = (v.y / h) & 1;
+  // h = 2^k is v's scale, the lowest bit of either coordinate. The quotients below are exact (h
+  // divides both coordinates, 2h divides v - h where v / h is odd), so shifts give them.
+  const int k = std::countr_zero(static_cast<unsigned>(v.x | v.y)), h = 1 << k;
+  const bool x_odd = (v.x >> k) & 1, y_odd = (v.y >> k) & 1;
   Diamond d;
   if (x_odd && y_odd) {
     // Centre of the square [x-h, x+h] x [y-h, y+h]: its diagonal runs through the parent
     // square's centre, which picks main or anti diagonal by the square's parity at its scale.
-    const bool main = ((((v.x - h) / (2 * h)) + ((v.y - h) / (2 * h))) & 1) == 0;
+    const bool main = ((((v.x - h) >> (k + 1)) + ((v.y - h) >> (k + 1))) & 1) == 0;
     if (main) {
       d.end0 = {v.x - h, v.y - h}, d.end1 = {v.x + h, v.y + h};
       d.parents = {Point{v.x - h, v.y + h}, Point{v.x + h, v.y - h}};
