@@ -110,15 +110,14 @@ struct ShapeTables {
   std::ptrdiff_t pitch = -1;
   std::vector<ShapeTable> shapes;
 };
-inline const ShapeTable* shape_table(int lx, int ly, int rx, int ry, std::ptrdiff_t pitch) {
-  const unsigned size = static_cast<unsigned>(std::max(std::abs(lx), std::abs(ly)));
-  if (size == 0 || size >= 1u << kTabledLevels || (size & (size - 1)) != 0) return nullptr;  // not a hierarchy's legs
-  // Legs are (2^k, 0) or (2^k, 2^k) turned, so each component shifted right by k is its sign.
-  const int level = std::countr_zero(size);
-  const auto sign = [level](int v) { return (v >> level) + 1; };
-  const std::size_t key = static_cast<std::size_t>(((level * 3 + sign(lx)) * 3 + sign(ly)) * 9 + sign(rx) * 3 + sign(ry));
-  constexpr int kPitches = 4;
-  thread_local ShapeTables tables[kPitches];
+constexpr int kPitches = 4;
+thread_local ShapeTables shape_tables[kPitches];
+
+// shape_table()'s other cases: `pitch` not the most recent one, or the shape not yet tabled.
+// Out of line, so the common lookup stays a few instructions inlined into the scan.
+[[gnu::noinline]] inline const ShapeTable* shape_table_miss(std::size_t key, int lx, int ly, int rx, int ry,
+                                                            std::ptrdiff_t pitch) {
+  ShapeTables* tables = shape_tables;
   if (tables[0].pitch != pitch) {  // the most recent first
     int i = 1;
     while (i < kPitches && tables[i].pitch != pitch) ++i;
@@ -127,6 +126,18 @@ inline const ShapeTable* shape_table(int lx, int ly, int rx, int ry, std::ptrdif
   }
   ShapeTable& table = tables[0].shapes[key];
   return table.rows.empty() ? make_shape_table(table, lx, ly, rx, ry, pitch) : &table;
+}
+
+inline const ShapeTable* shape_table(int lx, int ly, int rx, int ry, std::ptrdiff_t pitch) {
+  const unsigned size = static_cast<unsigned>(std::max(std::abs(lx), std::abs(ly)));
+  if (size == 0 || size >= 1u << kTabledLevels || (size & (size - 1)) != 0) return nullptr;  // not a hierarchy's legs
+  // Legs are (2^k, 0) or (2^k, 2^k) turned, so each component shifted right by k is its sign.
+  const int level = std::countr_zero(size);
+  const auto sign = [level](int v) { return (v >> level) + 1; };
+  const std::size_t key = static_cast<std::size_t>(((level * 3 + sign(lx)) * 3 + sign(ly)) * 9 + sign(rx) * 3 + sign(ry));
+  const ShapeTables& recent = shape_tables[0];
+  if (recent.pitch == pitch && !recent.shapes[key].rows.empty()) return &recent.shapes[key];
+  return shape_table_miss(key, lx, ly, rx, ry, pitch);
 }
 
 // A triangle's interpolation for the row scan: the apex and the legs in world space (x, y, z, 0),
