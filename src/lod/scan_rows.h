@@ -76,12 +76,14 @@ struct ShapeGroup {
   std::int32_t offset[2];  // the pieces' first nodes from the apex (lanes 0-3, 4-7)
   float u[8], w[8];
   std::uint32_t live[8];   // all ones for a node of the triangle, else 0
-  std::int32_t through;    // the triangle's nodes in this group and those before it
+  std::int32_t through;    // the nodes in this group and those before it
 };
 struct ShapeTable {
   std::vector<ShapeRow> rows;
-  std::vector<ShapeGroup> groups;  // empty where the rows are scanned instead
   std::size_t nodes = 0;
+  bool grouped = false;            // whether the groups are made (else the rows are scanned)
+  std::vector<ShapeGroup> groups;  // the nodes but the corners
+  std::size_t grouped_nodes = 0;
 };
 constexpr int kTabledLevels = 13;  // legs up to 2^12 cells; larger ones find their rows
 // Fills `table`, the triangle with legs (lx, ly) and (rx, ry) from its apex in arrays of `pitch`
@@ -251,7 +253,7 @@ bool group_scan(const GridHierarchy& grid, const NodePositions& p, const ScanBud
       if (!row_within_budget_double(grid, p, budgets.budget, t, c, y, x, x)) return fail();
     }
   }
-  *count += static_cast<long long>(table.nodes);
+  *count += static_cast<long long>(table.grouped_nodes);
   return true;
 }
 
@@ -346,7 +348,7 @@ bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const Scan
                   region.right.y - region.apex.y, pitch);
   const bool whole = region.apex == t.apex && region.left == t.left && region.right == t.right;
   if constexpr (L::pairs) {
-    if (whole && tabled && !tabled->groups.empty()) {
+    if (whole && tabled && tabled->grouped) {
       long long count = 0;
       const bool ok = group_scan<L>(grid, p, budgets, t, c, *tabled, t.apex.y * pitch + t.apex.x, world_legs(c),
                                     scan_slack(largest), &count);

@@ -45,26 +45,33 @@ const ShapeTable* make_shape_table(ShapeTable& table, int lx, int ly, int rx, in
   }
   table.nodes = nodes;
   // Rows shorter than a group on average: pieces of up to four nodes, two a group, each node's
-  // weights exact as a row's first node's are.
+  // weights exact as a row's first node's are. The corners are left out: the interpolation meets
+  // them exactly (in double, a + (c - a) is c), so with budgets >= 0 no corner fails a triangle.
   if (nodes < 8 * table.rows.size()) {
+    table.grouped = true;
+    const auto corner = [&](int x, int y) { return (x == 0 && y == 0) || (x == lx && y == ly) || (x == rx && y == ry); };
     int lane = 0;
-    std::size_t seen = 0;
-    for (const ShapeRow& r : table.rows)
-      for (int s = 0; s < r.len; s += 4) {
+    std::int32_t seen = 0;
+    for (const ShapeRow& r : table.rows) {
+      int x0 = r.dx0, x1 = r.dx0 + r.len - 1;  // the row's nodes but its corners
+      if (corner(x0, r.dy)) ++x0;
+      if (x1 >= x0 && corner(x1, r.dy)) --x1;
+      for (int x = x0; x <= x1; x += 4) {
         if (lane == 0) table.groups.push_back({});
         ShapeGroup& g = table.groups.back();
-        g.offset[lane / 4] = static_cast<std::int32_t>(r.dy * pitch + r.dx0 + s);
+        g.offset[lane / 4] = static_cast<std::int32_t>(r.dy * pitch + x);
         for (int k = 0; k < 4; ++k) {
-          const int x = r.dx0 + s + k;
-          g.u[lane + k] = static_cast<float>(x * lx + r.dy * ly) * inv_len2;
-          g.w[lane + k] = static_cast<float>(x * rx + r.dy * ry) * inv_len2;
-          g.live[lane + k] = s + k < r.len ? ~0u : 0u;
+          g.u[lane + k] = static_cast<float>((x + k) * lx + r.dy * ly) * inv_len2;
+          g.w[lane + k] = static_cast<float>((x + k) * rx + r.dy * ry) * inv_len2;
+          g.live[lane + k] = x + k <= x1 ? ~0u : 0u;
         }
-        seen += std::min(4, r.len - s);
-        g.through = static_cast<std::int32_t>(seen);
+        seen += std::min(4, x1 - x + 1);
+        g.through = seen;
         lane = (lane + 4) % 8;
       }
+    }
     if (lane == 4) table.groups.back().offset[1] = table.groups.back().offset[0];  // its live lanes are all 0
+    table.grouped_nodes = static_cast<std::size_t>(seen);
   }
   return &table;
 }
