@@ -100,6 +100,7 @@ class LodBuilder {
   bool in_a_block(int row, int col, bool or_queued);
   void note_corners(std::span<const Point> corners);
   bool leaf_is_fine(const SurfaceBlock& b, const Tri& t, Point m);
+  bool nested_leaf_is_fine(const SurfaceBlock& b, const Tri& t, Point m);  // nested_leaf.cpp
   bool clipped_leaf_is_fine(const SurfaceBlock& b, const GridPolygon& polygon);
   void activate(Point v, Point expanding = {-1, -1});
   void mark(std::uint8_t& s, std::uint8_t bits, Point v);
