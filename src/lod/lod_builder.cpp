@@ -38,7 +38,22 @@ std::size_t LodBuilder::max_indices() const {
 
 // Is t, a triangle of the hierarchy whose midpoint m is not active, fine as a leaf, on the tile
 // ranges or (a triangle within a block) its block's nodes? Later: its block is not on the host yet.
+// Most tests are of a small triangle within the grid whose block is made: that case first, small
+// enough for refine() to hold inline, the others in any_leaf_fits() (which decides it the same way).
 LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
+  if (!whole_ && grid_.hierarchy_tri_within_grid(t)) {
+    const CellBox box = box_of(t);
+    const int bx = block_at(box.x0), by = block_at(box.y0);
+    if (box.x1 - box.x0 <= kBlockCells && box.y1 - box.y0 <= kBlockCells && blocks_.made(bx, by)) {
+      ++stats_.tested;
+      const SurfaceBlock& b = blocks_.block(bx, by);
+      return leaf_is_fine(b, b.local(t), {m.x - b.origin.x, m.y - b.origin.y}) ? Fit::yes : Fit::no;
+    }
+  }
+  return any_leaf_fits(t, m);
+}
+
+LodBuilder::Fit LodBuilder::any_leaf_fits(const Tri& t, Point m) {
   const CellBox box = box_of(t);  // named, not bound: clang 14 cannot capture bindings in lambdas
   const int x0 = box.x0, x1 = box.x1, y0 = box.y0, y1 = box.y1;
   const bool inside = grid_.hierarchy_tri_within_grid(t);

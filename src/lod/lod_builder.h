@@ -89,6 +89,7 @@ class LodBuilder {
  private:
   enum class Fit { yes, no, later };  // later: its block is not on the host yet
   Fit leaf_fits(const Tri& t, Point m);
+  [[gnu::noinline]] Fit any_leaf_fits(const Tri& t, Point m);
   Fit wide_leaf_fits(const Tri& t, Point m);  // wide_leaf.cpp
   double deviation_up(double d2) const;
   bool block_held(int bx, int by, bool ask = true);
