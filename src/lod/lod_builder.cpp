@@ -337,16 +337,22 @@ std::span<const std::uint32_t> LodBuilder::drawn_vertices() {
 // form a Sierpinski curve, so consecutive triangles share vertices.
 void LodBuilder::emit(const Tri& t, bool enter_left, std::uint32_t*& out) {
   Point m;
-  if (midpoint(t, m) && (state_[grid_.domain_id(m)] & kActive)) {
-    if (enter_left) {
-      emit(child_left(t, m), false, out);
-      emit(child_right(t, m), false, out);
-    } else {
-      emit(child_right(t, m), true, out);
-      emit(child_left(t, m), true, out);
-    }
-    return;
+  if (midpoint(t, m) && (state_[grid_.domain_id(m)] & kActive)) emit_split(t, m, enter_left, out);
+  else emit_leaf(t, out);
+}
+
+// The children of t, split at m, in emit()'s order: a leaf child written here, so the recursion
+// calls only for triangles that split again.
+void LodBuilder::emit_split(const Tri& t, Point m, bool enter_left, std::uint32_t*& out) {
+  const Tri children[2] = {enter_left ? child_left(t, m) : child_right(t, m), enter_left ? child_right(t, m) : child_left(t, m)};
+  for (const Tri& c : children) {
+    Point cm;
+    if (midpoint(c, cm) && (state_[grid_.domain_id(cm)] & kActive)) emit_split(c, cm, !enter_left, out);
+    else emit_leaf(c, out);
   }
+}
+
+void LodBuilder::emit_leaf(const Tri& t, std::uint32_t*& out) {
   if (grid_.hierarchy_tri_within_grid(t)) {
     *out++ = grid_.id(t.apex);
     *out++ = grid_.id(t.left);

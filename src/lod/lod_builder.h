@@ -106,6 +106,8 @@ class LodBuilder {
   void activate(Point v, Point expanding = {-1, -1});
   void mark(std::uint8_t& s, std::uint8_t bits, Point v);
   void emit(const Tri& t, bool enter_left, std::uint32_t*& out);
+  void emit_split(const Tri& t, Point m, bool enter_left, std::uint32_t*& out);
+  void emit_leaf(const Tri& t, std::uint32_t*& out);
   [[gnu::noinline]] void emit_fan(const Tri& t, std::uint32_t*& out);
   std::span<const std::uint32_t> drawn_vertices();
   std::size_t blocks_needed(std::span<const std::uint32_t> triangles, std::size_t enough);
