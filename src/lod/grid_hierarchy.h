@@ -43,8 +43,8 @@ struct CellBox {
   int x0, x1, y0, y1;
 };
 inline CellBox box_of(const Tri& t) {
-  return {std::min({t.apex.x, t.left.x, t.right.x}), std::max({t.apex.x, t.left.x, t.right.x}),
-          std::min({t.apex.y, t.left.y, t.right.y}), std::max({t.apex.y, t.left.y, t.right.y})};
+  return {std::min(t.apex.x, std::min(t.left.x, t.right.x)), std::max(t.apex.x, std::max(t.left.x, t.right.x)),
+          std::min(t.apex.y, std::min(t.left.y, t.right.y)), std::max(t.apex.y, std::max(t.left.y, t.right.y))};
 }
 
 // The diamond a split vertex is the centre of: the hypotenuse it halves and the apexes of the
