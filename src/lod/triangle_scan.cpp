@@ -124,12 +124,24 @@ bool within_budget(const GridHierarchy& grid, const NodePositions& p, const Scan
   return within_budget(grid, p, budgets, largest, t, c, region, visited);
 }
 
+namespace {
+
+// The baseline's scan, out of line like the AVX2 copy: within_budget() below then only chooses
+// and jumps, with no registers of its own to save.
+[[gnu::noinline]] bool scan_triangle_sse2(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets,
+                                          float largest, const Tri& t, const TriCorners& c, const Tri& region,
+                                          long long* visited) {
+  return scan_triangle<Sse2Lanes>(grid, p, budgets, largest, t, c, region, visited);
+}
+
+}  // namespace
+
 bool within_budget(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets,
                    float largest, const Tri& t, const TriCorners& c, const Tri& region, long long* visited) {
 #if POND_LOD_AVX2
   if (budgets.wide) return scan_triangle_avx2(grid, p, budgets, largest, t, c, region, visited);
 #endif
-  return scan_triangle<Sse2Lanes>(grid, p, budgets, largest, t, c, region, visited);
+  return scan_triangle_sse2(grid, p, budgets, largest, t, c, region, visited);
 }
 
 bool fan_within_budget(const GridPolygon& poly, const NodePositions& p, const float* budget,
