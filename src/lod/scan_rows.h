@@ -97,9 +97,11 @@ bool row_within_budget_double(const GridHierarchy& grid, const NodePositions& p,
                               const TriCorners& c, int y, int x0, int x1);
 
 #if POND_LOD_AVX2
-// scan_triangle's AVX2 copy (triangle_scan_avx2.cpp).
+// scan_triangle's and scan_thresholds' AVX2 copies (triangle_scan_avx2.cpp): the same operations
+// lane for lane, so the same bits.
 bool scan_triangle_avx2(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, float largest,
                         const Tri& t, const TriCorners& c, const Tri& region, long long* visited);
+void scan_thresholds_avx2(const float* budget, std::size_t n, float largest, float* sure2);
 #endif
 
 namespace {

@@ -78,7 +78,7 @@ void SurfaceBlocks::make(SurfaceBlock& b, Point origin, int rows, int cols, bool
   copy_finite_block(positions_, b.origin.y, b.origin.x, rows, cols, b.x.data(), b.y.data(), b.z.data(), wide_);
   b.wide = wide_;
   node_budgets(b.positions(), terms_, b.budget.data(), wide_, all_in_view);
-  scan_thresholds(b.budget.data(), n, largest_, b.sure2.data());
+  scan_thresholds(b.budget.data(), n, largest_, b.sure2.data(), wide_);
 }
 
 }  // namespace pond::lod

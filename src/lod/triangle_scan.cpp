@@ -100,7 +100,10 @@ bool row_within_budget_double(const GridHierarchy& grid, const NodePositions& p,
   return true;
 }
 
-void scan_thresholds(const float* budget, std::size_t n, float largest, float* sure2) {
+void scan_thresholds(const float* budget, std::size_t n, float largest, float* sure2, [[maybe_unused]] bool wide) {
+#if POND_LOD_AVX2
+  if (wide) return scan_thresholds_avx2(budget, n, largest, sure2);
+#endif
   const __m128 slack = _mm_set1_ps(scan_slack(largest)), shrink = _mm_set1_ps(1 - 1e-6f), zero = _mm_setzero_ps();
   for (std::size_t k = 0; k < n; k += 4) {  // the last group's lanes past n into the padding
     const __m128 low = _mm_max_ps(_mm_sub_ps(_mm_loadu_ps(budget + k), slack), zero);

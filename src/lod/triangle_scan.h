@@ -24,8 +24,9 @@ struct ScanBudgets {
 };
 
 // Writes sure2 for the n nodes of `budget`, of positions whose |coordinates| are at most
-// `largest`. Both arrays are readable and writable kScanOverread floats past the last node.
-void scan_thresholds(const float* budget, std::size_t n, float largest, float* sure2);
+// `largest`. Both arrays are readable and writable kScanOverread floats past the last node. With
+// `wide` (ScanBudgets::wide), by an AVX2 copy: the same bits.
+void scan_thresholds(const float* budget, std::size_t n, float largest, float* sure2, bool wide);
 
 // positions: stride 1; `largest` bounds every |coordinate| (it sizes the float rounding margin).
 // Counts the nodes visited into *visited (statistics).

@@ -1,4 +1,5 @@
-// The exact scan's AVX2 copy (scan_rows.h), chosen by within_budget where ScanBudgets::wide.
+// The exact scan's AVX2 copy (scan_rows.h), chosen by within_budget where ScanBudgets::wide, and
+// that of the thresholds it compares with (scan_thresholds()).
 #include <immintrin.h>
 
 #include "lod/scan_rows.h"
@@ -33,6 +34,15 @@ struct Avx2Lanes {
 };
 
 }  // namespace
+
+void scan_thresholds_avx2(const float* budget, std::size_t n, float largest, float* sure2) {
+  const __m256 slack = _mm256_set1_ps(scan_slack(largest)), shrink = _mm256_set1_ps(1 - 1e-6f);
+  const __m256 zero = _mm256_setzero_ps();
+  for (std::size_t k = 0; k < n; k += 8) {  // the last group's lanes past n into the padding
+    const __m256 low = _mm256_max_ps(_mm256_sub_ps(_mm256_loadu_ps(budget + k), slack), zero);
+    _mm256_storeu_ps(sure2 + k, _mm256_mul_ps(_mm256_mul_ps(low, low), shrink));
+  }
+}
 
 bool scan_triangle_avx2(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, float largest,
                         const Tri& t, const TriCorners& c, const Tri& region, long long* visited) {

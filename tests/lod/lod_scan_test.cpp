@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -232,6 +234,28 @@ TEST(LodBuilder, SameMeshWithTheAvx2CopiesHidden) {
 // The scans' tables are kept per pitch of the arrays scanned (a few at a time): scans of grids of
 // five widths, interleaved so that each width's tables are made again and again, give the
 // verdicts of the check in double, in both copies.
+// The sure-within thresholds: the AVX2 copy writes the baseline's bits, each the formula's in
+// scalar float, for every count (the last group runs into the padding) and budgets from 0 to +inf.
+TEST(TriangleScan, ThresholdsAreTheSameWideOrNot) {
+  const float largest = 300;
+  const float slack = 64 * largest * std::numeric_limits<float>::epsilon();
+  std::vector<float> budget;
+  for (int k = 0; k < 40; ++k)
+    budget.push_back(k % 7 == 0 ? 0.0f : k % 11 == 0 ? INFINITY : slack * static_cast<float>(k % 5) * 0.5f + 1e-3f * static_cast<float>(k));
+  for (std::size_t n = 1; n <= 32; ++n) {
+    std::vector<float> narrow(n + lod::kScanOverread, -1), wide(n + lod::kScanOverread, -1);
+    lod::scan_thresholds(budget.data(), n, largest, narrow.data(), false);
+    if (!lod::wide_budgets_available()) continue;
+    lod::scan_thresholds(budget.data(), n, largest, wide.data(), true);
+    for (std::size_t k = 0; k < n; ++k) {
+      const float low = std::max(budget[k] - slack, 0.0f);
+      const float expected = low * low * (1 - 1e-6f);
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(narrow[k]), std::bit_cast<std::uint32_t>(expected)) << n << " " << k;
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(wide[k]), std::bit_cast<std::uint32_t>(expected)) << n << " " << k;
+    }
+  }
+}
+
 TEST(TriangleScan, TablesOfManyPitchesInTurn) {
   struct Grid {
     explicit Grid(int side) : state(simulated_pond(side, side, 20, 4, 10, 3)), blocks(side, side) {}
