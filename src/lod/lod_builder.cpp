@@ -38,8 +38,8 @@ std::size_t LodBuilder::max_indices() const {
 
 // Is t, a triangle of the hierarchy whose midpoint m is not active, fine as a leaf, on the tile
 // ranges or (a triangle within a block) its block's nodes? Later: its block is not on the host yet.
-// Most tests are of a small triangle within the grid whose block is made: that case first, small
-// enough for refine() to hold inline, the others in any_leaf_fits() (which decides it the same way).
+// Most tests are of a small triangle within the grid whose block is made: that case first, in a
+// few lines that save few registers, the others in any_leaf_fits() (which decides it the same way).
 LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
   if (!whole_ && grid_.hierarchy_tri_within_grid(t)) {
     const CellBox box = box_of(t);
