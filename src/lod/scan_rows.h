@@ -226,22 +226,31 @@ bool group_scan(const GridHierarchy& grid, const NodePositions& p, const ScanBud
                 long long* count) {
   using V = typename L::V;
   static_assert(L::width == 8);
-  const float *a = legs.a, *l = legs.l, *r = legs.r;
-  const V ax = L::set1(a[0]), ay = L::set1(a[1]), az = L::set1(a[2]);
-  const V lx = L::set1(l[0]), ly = L::set1(l[1]), lz = L::set1(l[2]);
-  const V rx = L::set1(r[0]), ry = L::set1(r[1]), rz = L::set1(r[2]);
   const float *px = p.x + apex, *py = p.y + apex, *pz = p.z + apex, *sure2 = budgets.sure2 + apex;
-  for (const ShapeGroup& g : table.groups) {
-    const std::int32_t lo = g.offset[0], hi = g.offset[1];
-    const V u = L::load(g.u), w = L::load(g.w), live = L::load_mask(g.live);
-    const V ex = L::sub(L::load_pair(px + lo, px + hi), L::add(L::add(ax, L::mul(u, lx)), L::mul(w, rx)));
-    const V ey = L::sub(L::load_pair(py + lo, py + hi), L::add(L::add(ay, L::mul(u, ly)), L::mul(w, ry)));
-    const V ez = L::sub(L::load_pair(pz + lo, pz + hi), L::add(L::add(az, L::mul(u, lz)), L::mul(w, rz)));
-    const V e2 = L::and_(live, L::add(L::add(L::mul(ex, ex), L::mul(ey, ey)), L::mul(ez, ez)));  // 0 off the triangle
-    const V close = L::greater(e2, L::load_pair(sure2 + lo, sure2 + hi));
-    if (!L::any(close)) continue;
+  const ShapeGroup* g = table.groups.data();
+  const ShapeGroup* const end = g + table.groups.size();
+  while (g != end) {
+    // The groups up to the next one with a node float cannot call within, with the interpolation's
+    // terms in registers: no call in this loop, so none of them is saved around one.
+    const V ax = L::set1(legs.a[0]), ay = L::set1(legs.a[1]), az = L::set1(legs.a[2]);
+    const V lx = L::set1(legs.l[0]), ly = L::set1(legs.l[1]), lz = L::set1(legs.l[2]);
+    const V rx = L::set1(legs.r[0]), ry = L::set1(legs.r[1]), rz = L::set1(legs.r[2]);
+    V e2 = L::set1(0), close = e2;
+    for (; g != end; ++g) {
+      const std::int32_t lo = g->offset[0], hi = g->offset[1];
+      const V u = L::load(g->u), w = L::load(g->w), live = L::load_mask(g->live);
+      const V ex = L::sub(L::load_pair(px + lo, px + hi), L::add(L::add(ax, L::mul(u, lx)), L::mul(w, rx)));
+      const V ey = L::sub(L::load_pair(py + lo, py + hi), L::add(L::add(ay, L::mul(u, ly)), L::mul(w, ry)));
+      const V ez = L::sub(L::load_pair(pz + lo, pz + hi), L::add(L::add(az, L::mul(u, lz)), L::mul(w, rz)));
+      e2 = L::and_(live, L::add(L::add(L::mul(ex, ex), L::mul(ey, ey)), L::mul(ez, ez)));  // 0 off the triangle
+      close = L::greater(e2, L::load_pair(sure2 + lo, sure2 + hi));
+      if (L::any(close)) break;
+    }
+    if (g == end) break;
+    // Group g has a node near its budget: over for sure, or decided in double.
+    const std::int32_t lo = g->offset[0], hi = g->offset[1];
     const auto fail = [&] {
-      *count += g.through;
+      *count += g->through;
       return false;
     };
     const float* budget = budgets.budget + apex;
@@ -254,6 +263,7 @@ bool group_scan(const GridHierarchy& grid, const NodePositions& p, const ScanBud
       const int y = static_cast<int>(node / pitch), x = static_cast<int>(node % pitch);
       if (!row_within_budget_double(grid, p, budgets.budget, t, c, y, x, x)) return fail();
     }
+    ++g;
   }
   *count += static_cast<long long>(table.grouped_nodes);
   return true;
