@@ -100,7 +100,7 @@ bool row_within_budget_double(const GridHierarchy& grid, const NodePositions& p,
 // scan_triangle's and scan_thresholds' AVX2 copies (triangle_scan_avx2.cpp): the same operations
 // lane for lane, so the same bits.
 bool scan_triangle_avx2(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, float largest,
-                        const Tri& t, const TriCorners& c, const Tri& region, long long* visited);
+                        const Tri& t, const TriCorners* c, const Tri& region, long long* visited);
 void scan_thresholds_avx2(const float* budget, std::size_t n, float largest, float* sure2);
 #endif
 
@@ -207,6 +207,27 @@ inline float scan_slack(float largest) { return 64 * largest * std::numeric_limi
 struct WorldLegs {
   float a[3], l[3], r[3];
 };
+// t's corners' world positions, where `p` holds them.
+inline TriCorners corners_of(const GridHierarchy& grid, const NodePositions& p, const Tri& t) {
+  TriCorners c;
+  const Point corner[3] = {t.apex, t.left, t.right};
+  for (int k = 0; k < 3; ++k) {
+    const std::uint32_t n = grid.id(corner[k]);
+    c.x[k] = p.x[n], c.y[k] = p.y[n], c.z[k] = p.z[n];
+  }
+  return c;
+}
+// world_legs(corners_of(grid, p, t)) without the copy: the same values, read from `p`.
+inline WorldLegs world_legs(const GridHierarchy& grid, const NodePositions& p, const Tri& t) {
+  const std::uint32_t a = grid.id(t.apex), l = grid.id(t.left), r = grid.id(t.right);
+  WorldLegs w;
+  const float* const axes[3] = {p.x, p.y, p.z};
+  for (int i = 0; i < 3; ++i) {
+    const float* v = axes[i];
+    w.a[i] = v[a], w.l[i] = v[l] - v[a], w.r[i] = v[r] - v[a];
+  }
+  return w;
+}
 inline WorldLegs world_legs(const TriCorners& c) {
   WorldLegs w;
   for (int i = 0; i < 3; ++i) {
@@ -222,7 +243,7 @@ inline WorldLegs world_legs(const TriCorners& c) {
 // decide are judged in double. Counts the nodes visited into *count.
 template <class L>
 bool group_scan(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, const Tri& t,
-                const TriCorners& c, const ShapeTable& table, std::ptrdiff_t apex, const WorldLegs& legs, float slack,
+                const TriCorners* c, const ShapeTable& table, std::ptrdiff_t apex, const WorldLegs& legs, float slack,
                 long long* count) {
   using V = typename L::V;
   static_assert(L::width == 8);
@@ -257,11 +278,12 @@ bool group_scan(const GridHierarchy& grid, const NodePositions& p, const ScanBud
     const V high = L::add(L::load_pair(budget + lo, budget + hi), L::set1(slack));
     if (L::any(L::greater(e2, L::mul(L::mul(high, high), L::set1(1 + 1e-6f))))) return fail();
     const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(grid.cols());
+    const TriCorners corners = c ? *c : corners_of(grid, p, t);
     for (int k = 0; k < L::width; ++k) {
       if (!L::lane(close, k)) continue;
       const std::ptrdiff_t node = apex + (k < 4 ? lo + k : hi + k - 4);
       const int y = static_cast<int>(node / pitch), x = static_cast<int>(node % pitch);
-      if (!row_within_budget_double(grid, p, budgets.budget, t, c, y, x, x)) return fail();
+      if (!row_within_budget_double(grid, p, budgets.budget, t, corners, y, x, x)) return fail();
     }
     ++g;
   }
@@ -353,7 +375,7 @@ template <class L>
 // a whole triangle of a shape tabled in groups by group_scan(), any other by rows.
 template <class L>
 bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, float largest,
-                   const Tri& t, const TriCorners& c, const Tri& region, long long* visited) {
+                   const Tri& t, const TriCorners* c, const Tri& region, long long* visited) {
   const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(grid.cols());
   const ShapeTable* tabled =
       shape_table(region.left.x - region.apex.x, region.left.y - region.apex.y, region.right.x - region.apex.x,
@@ -362,13 +384,14 @@ bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const Scan
   if constexpr (L::pairs) {
     if (whole && tabled && tabled->grouped) {
       long long count = 0;
-      const bool ok = group_scan<L>(grid, p, budgets, t, c, *tabled, t.apex.y * pitch + t.apex.x, world_legs(c),
+      const WorldLegs legs = c ? world_legs(*c) : world_legs(grid, p, t);
+      const bool ok = group_scan<L>(grid, p, budgets, t, c, *tabled, t.apex.y * pitch + t.apex.x, legs,
                                     scan_slack(largest), &count);
       if (visited) *visited += count;
       return ok;
     }
   }
-  return scan_by_rows<L>(grid, p, budgets, largest, t, c, region, tabled, whole, visited);
+  return scan_by_rows<L>(grid, p, budgets, largest, t, c ? *c : corners_of(grid, p, t), region, tabled, whole, visited);
 }
 
 }  // namespace

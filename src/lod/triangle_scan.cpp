@@ -111,40 +111,40 @@ void scan_thresholds(const float* budget, std::size_t n, float largest, float* s
   }
 }
 
-bool within_budget(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets,
-                   float largest, const Tri& t, long long* visited) {
-  return within_budget(grid, p, budgets, largest, t, t, visited);
-}
-
-bool within_budget(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets,
-                   float largest, const Tri& t, const Tri& region, long long* visited) {
-  TriCorners c;
-  const Point corner[3] = {t.apex, t.left, t.right};
-  for (int k = 0; k < 3; ++k) {
-    const std::uint32_t n = grid.id(corner[k]);
-    c.x[k] = p.x[n], c.y[k] = p.y[n], c.z[k] = p.z[n];
-  }
-  return within_budget(grid, p, budgets, largest, t, c, region, visited);
-}
-
 namespace {
 
-// The baseline's scan, out of line like the AVX2 copy: within_budget() below then only chooses
-// and jumps, with no registers of its own to save.
+// The scans, out of line like the AVX2 copy: each within_budget() below then only chooses and
+// jumps, with no registers of its own to save. `c`: t's corners, or nullptr where `p` holds them
+// (read there only where needed).
 [[gnu::noinline]] bool scan_triangle_sse2(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets,
-                                          float largest, const Tri& t, const TriCorners& c, const Tri& region,
+                                          float largest, const Tri& t, const TriCorners* c, const Tri& region,
                                           long long* visited) {
   return scan_triangle<Sse2Lanes>(grid, p, budgets, largest, t, c, region, visited);
+}
+
+inline bool scan(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, float largest,
+                 const Tri& t, const TriCorners* c, const Tri& region, long long* visited) {
+#if POND_LOD_AVX2
+  if (budgets.wide) return scan_triangle_avx2(grid, p, budgets, largest, t, c, region, visited);
+#endif
+  return scan_triangle_sse2(grid, p, budgets, largest, t, c, region, visited);
 }
 
 }  // namespace
 
 bool within_budget(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets,
+                   float largest, const Tri& t, long long* visited) {
+  return scan(grid, p, budgets, largest, t, nullptr, t, visited);
+}
+
+bool within_budget(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets,
+                   float largest, const Tri& t, const Tri& region, long long* visited) {
+  return scan(grid, p, budgets, largest, t, nullptr, region, visited);
+}
+
+bool within_budget(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets,
                    float largest, const Tri& t, const TriCorners& c, const Tri& region, long long* visited) {
-#if POND_LOD_AVX2
-  if (budgets.wide) return scan_triangle_avx2(grid, p, budgets, largest, t, c, region, visited);
-#endif
-  return scan_triangle_sse2(grid, p, budgets, largest, t, c, region, visited);
+  return scan(grid, p, budgets, largest, t, &c, region, visited);
 }
 
 bool fan_within_budget(const GridPolygon& poly, const NodePositions& p, const float* budget,

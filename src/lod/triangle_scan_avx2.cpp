@@ -45,7 +45,7 @@ void scan_thresholds_avx2(const float* budget, std::size_t n, float largest, flo
 }
 
 bool scan_triangle_avx2(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, float largest,
-                        const Tri& t, const TriCorners& c, const Tri& region, long long* visited) {
+                        const Tri& t, const TriCorners* c, const Tri& region, long long* visited) {
   return scan_triangle<Avx2Lanes>(grid, p, budgets, largest, t, c, region, visited);
 }
 
