@@ -44,7 +44,7 @@ LodBuilder::Fit LodBuilder::leaf_fits(const Tri& t, Point m) {
   if (!whole_ && grid_.hierarchy_tri_within_grid(t)) {
     const CellBox box = box_of(t);
     const int bx = block_at(box.x0), by = block_at(box.y0);
-    if (box.x1 - box.x0 <= kBlockCells && box.y1 - box.y0 <= kBlockCells && blocks_.made(bx, by)) {
+    if (in_one_block(box) && blocks_.made(bx, by)) {
       ++stats_.tested;
       const SurfaceBlock& b = blocks_.block(bx, by);
       return leaf_is_fine(b, b.local(t), {m.x - b.origin.x, m.y - b.origin.y}) ? Fit::yes : Fit::no;
@@ -65,7 +65,7 @@ LodBuilder::Fit LodBuilder::any_leaf_fits(const Tri& t, Point m) {
     const SurfaceBlock& w = blocks_.whole();
     return fit(inside ? leaf_is_fine(w, t, m) : clipped_leaf_is_fine(w, clipped));
   }
-  const bool small = x1 - x0 <= kBlockCells && y1 - y0 <= kBlockCells;
+  const bool small = in_one_block(box);
   const bool wide = !small && inside && x1 - x0 <= 2 * kBlockCells && y1 - y0 <= 2 * kBlockCells;
   const int bx = block_at(x0), by = block_at(y0);  // the corners are in the domain: x0, y0 >= 0
   // Fine when the ranges prove it or (a small triangle) its block's nodes do. The ranges prove no

@@ -80,7 +80,6 @@ struct ShapeGroup {
 };
 struct ShapeTable {
   std::vector<ShapeRow> rows;
-  std::size_t nodes = 0;
   bool grouped = false;            // whether the groups are made (else the rows are scanned)
   std::vector<ShapeGroup> groups;  // the nodes but the corners
   std::size_t grouped_nodes = 0;
@@ -217,7 +216,8 @@ inline TriCorners corners_of(const GridHierarchy& grid, const NodePositions& p, 
   }
   return c;
 }
-// world_legs(corners_of(grid, p, t)) without the copy: the same values, read from `p`.
+// world_legs(corners_of(grid, p, t)) without the copy (which GCC keeps): the same values, read
+// from `p`.
 inline WorldLegs world_legs(const GridHierarchy& grid, const NodePositions& p, const Tri& t) {
   const std::uint32_t a = grid.id(t.apex), l = grid.id(t.left), r = grid.id(t.right);
   WorldLegs w;

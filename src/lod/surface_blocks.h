@@ -30,6 +30,8 @@ constexpr int kBlockCells = 16;
 static_assert(kBlockCells == kTileCells, "a block is a tile's nodes: its tile's range bounds them");
 // The block whose cells start at column (or row) k >= 0: unsigned, so the division is a shift.
 inline int block_at(int k) { return static_cast<int>(static_cast<unsigned>(k) / kBlockCells); }
+// Whether a box of cells is at most a block across (then one block holds its nodes).
+inline bool in_one_block(const CellBox& b) { return b.x1 - b.x0 <= kBlockCells && b.y1 - b.y0 <= kBlockCells; }
 
 struct SurfaceBlock {
   Point origin;               // its first node in the grid

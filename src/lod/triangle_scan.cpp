@@ -43,7 +43,6 @@ const ShapeTable* make_shape_table(ShapeTable& table, int lx, int ly, int rx, in
                           static_cast<float>(x0 * rx + y * ry) * inv_len2});
     nodes += static_cast<std::size_t>(len);
   }
-  table.nodes = nodes;
   // Rows shorter than a group on average: pieces of up to four nodes, two a group, each node's
   // weights exact as a row's first node's are. The corners are left out: the interpolation meets
   // them exactly (in double, a + (c - a) is c), so with budgets >= 0 no corner fails a triangle.

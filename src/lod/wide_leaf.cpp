@@ -14,11 +14,6 @@
 namespace pond::lod {
 namespace {
 
-bool in_one_block(const Tri& t) {
-  const CellBox b = box_of(t);
-  return b.x1 - b.x0 <= kBlockCells && b.y1 - b.y0 <= kBlockCells;
-}
-
 Point block_of(const Tri& t) {
   const CellBox b = box_of(t);
   return {block_at(b.x0), block_at(b.y0)};
@@ -34,7 +29,7 @@ LodBuilder::Fit LodBuilder::wide_leaf_fits(const Tri& t, Point m) {
   int n = 0;
   for (const Tri& half : {child_left(t, m), child_right(t, m)}) {
     Point c;
-    if (in_one_block(half) || !midpoint(half, c)) {
+    if (in_one_block(box_of(half)) || !midpoint(half, c)) {
       tris[n] = half, deeper[n++] = false;
     } else {
       for (const Tri& quarter : {child_left(half, c), child_right(half, c)}) {
