@@ -1,11 +1,13 @@
 // Node-steps per second of the CPU solver: every backend at 50^2, 256^2 and 1024^2, one thread and
 // all threads, exact and fast math; and the machine's copy bandwidth measured in the same run, the
 // memory-bound ceiling (a substep reads and writes 24 bytes of state per node); and the cost of
-// the tile bounds (BM_TileBounds).
+// the tile bounds (BM_TileBounds, and as a paired ratio: BM_TileBoundsPaired).
 //
 //   build/bench/sim/bench_solver --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <thread>
 #include <vector>
@@ -86,6 +88,41 @@ void tile_args(benchmark::internal::Benchmark* b) {
 }
 BENCHMARK(BM_TileBounds)->Apply(tile_args)->ArgNames({"backend", "size", "threads", "fast", "tiles", "substeps"})
     ->Unit(benchmark::kMicrosecond)->UseRealTime()->MinTime(0.3);
+
+// The tile bounds' cost as a paired ratio: two solvers in the same state, one emitting the bounds,
+// advanced one frame each in turn (which goes first alternates), each frame timed on its own.
+// `cost_pct` is the median over the iterations of (frame with bounds / frame without) - 1, in
+// percent: a noisy host slows both frames of a pair alike. Args: backend, size, substeps.
+void BM_TileBoundsPaired(benchmark::State& state) {
+  const auto backend = static_cast<Backend>(state.range(0));
+  const int size = static_cast<int>(state.range(1));
+  if (!cpu_supports(backend)) {
+    state.SkipWithError("backend not supported by this CPU");
+    return;
+  }
+  const WaterModel model = rippled_model(size, MathMode::exact, static_cast<int>(state.range(2)));
+  CpuSolver plain(model, backend, 1), tiled(model, backend, 1);
+  plain.advance(20);
+  tiled.advance(20);
+  tiled.track_tile_bounds(true);
+  using Clock = std::chrono::steady_clock;
+  const auto frame = [](CpuSolver& solver) {
+    const auto t0 = Clock::now();
+    solver.advance(1);
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+  };
+  std::vector<double> ratios;
+  for (auto _ : state) {
+    const bool plain_first = ratios.size() % 2 == 0;
+    const double first = frame(plain_first ? plain : tiled), second = frame(plain_first ? tiled : plain);
+    ratios.push_back(plain_first ? second / first : first / second);
+  }
+  std::sort(ratios.begin(), ratios.end());
+  state.counters["cost_pct"] = ratios.empty() ? 0.0 : 100.0 * (ratios[ratios.size() / 2] - 1.0);
+  state.SetLabel(std::string(backend_name(backend)) + " x1 exact");
+}
+BENCHMARK(BM_TileBoundsPaired)->ArgsProduct({{0, 1, 2, 3}, {256, 1024}, {1, 2}})
+    ->ArgNames({"backend", "size", "substeps"})->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
 
 // The sweep behind docs/solver_speed.png (scripts/plot_solver_speed.sh): exact math, every backend,
 // one thread and all threads, grid sizes from 32^2 to 2048^2.
