@@ -369,7 +369,7 @@ float step_rows(const StepView& view, int row_begin, int row_end, float* scratch
         block_springs<W, Steps>(view, i + 1, block_begin, block_end, scratch, 1 - h_index, ahead);
       for_chunks<W>(block_begin, block_end, integrate);
       if constexpr (Tiles) {
-        const TileRowEvents events = tile_row_events(i, row_end);
+        const TileRowEvents events = tile_row_events(i, row_end, pass_rows(block_end - block_begin));
         if (events.any()) emit_tile_rows<W>(view, tile_grid, events, i, row_begin, block_begin, block_end, *tiles);
       }
       const int recycled = below;

@@ -1,9 +1,9 @@
 #pragma once
-// The tile bounds (shared/tile_bounds.h) as a by-product of the step kernel (step_kernel.h): when
-// the kernel has integrated a tile row's rows in a block of columns, their new displacements, still
-// in the core's caches, are read back, several vectors of columns at a time, into each column's
-// bounds (TileSink::columns); after the row that ends the tile row, its tiles come from those and
-// that row.
+// The tile bounds (shared/tile_bounds.h) as a by-product of the step kernel (step_kernel.h): the
+// new displacements the kernel has just written in a block of columns are read back, while still
+// in the core's caches, into each column's bounds over the tile row (TileSink::columns): in a
+// narrow block once a tile row, down each group of columns; in a wide one every four rows, along
+// them (pass_rows()). After the row that ends the tile row, its tiles come from those and that row.
 // Min and max are exact: the tiles' values do not depend on the width or the order of the
 // operations, only the sign of a zero bound may, and the solver's merge makes every zero +0.
 #include <cstddef>
@@ -23,6 +23,9 @@ inline constexpr int kTileCells = POND_TILE_CELLS;
 // leave room for, so each row's read is several cache lines long.
 template <class V>
 inline constexpr int kPassGroup = V::width == 16 ? 8 : 4;
+// Rows a pass over a wide block reads (pass_rows()), in registers before the columns' bounds take
+// them in.
+inline constexpr int kWidePassRows = 4;
 
 // The wide table the bounds use with backend W: W's own, and SSE2's (the baseline of x86-64 and
 // of the IA-32 build) for the scalar backend, whose one-lane table would keep 32 bounds per tile.
@@ -60,15 +63,70 @@ POND_KERNEL_INLINE void group_bounds(const StepView& view, int row0, int row1, i
   }
 }
 
-// The columns' bounds of a block over rows [row0, row1] (all integrated).
+// Rows [row, row + R) of one axis (`u` at the block's first column, rows `cols` apart) widen the
+// columns' least and greatest (`lo`, `hi`; set, not widened, when `first`), row by row along the
+// block, so each row is read front to back where the prefetchers follow it.
+template <class V, int R>
+POND_KERNEL_INLINE void rows_into_columns(const float* u, std::size_t cols, int width, float* lo, float* hi,
+                                          bool first) {
+  int j = 0;
+  for (; width - j >= V::width; j += V::width) {
+    typename V::F l = V::load(u + j), h = l;
+    for (int r = 1; r < R; ++r) {
+      const typename V::F x = V::load(u + r * cols + j);
+      l = V::min_of(x, l);
+      h = V::max_of(x, h);
+    }
+    if (!first) {
+      l = V::min_of(V::load(lo + j), l);
+      h = V::max_of(V::load(hi + j), h);
+    }
+    V::store(lo + j, l);
+    V::store(hi + j, h);
+  }
+  for (; j < width; ++j) {
+    float l = u[j], h = l;
+    for (int r = 1; r < R; ++r) {
+      l = WideScalar::min_of(u[r * cols + j], l);
+      h = WideScalar::max_of(u[r * cols + j], h);
+    }
+    lo[j] = first ? l : WideScalar::min_of(lo[j], l);
+    hi[j] = first ? h : WideScalar::max_of(hi[j], h);
+  }
+}
+
+// The columns' bounds of a narrow block over rows [row0, row1] (all integrated): each group of
+// columns down the rows, in registers.
 template <class V>
-POND_KERNEL_INLINE void block_bounds(const StepView& view, int row0, int row1, int block_begin, int block_end,
-                                     float* columns) {
+POND_KERNEL_INLINE void narrow_block_bounds(const StepView& view, int row0, int row1, int block_begin,
+                                            int block_end, float* columns) {
   int j = block_begin;
   for (; block_end - j >= kPassGroup<V> * V::width; j += kPassGroup<V> * V::width)
     group_bounds<V, kPassGroup<V>>(view, row0, row1, j, columns + (j - block_begin));
   for (; block_end - j >= V::width; j += V::width) group_bounds<V, 1>(view, row0, row1, j, columns + (j - block_begin));
   for (; j < block_end; ++j) group_bounds<WideScalar, 1>(view, row0, row1, j, columns + (j - block_begin));
+}
+
+// The columns' bounds of a wide block widened by rows [row0, row1] (all integrated; set, not
+// widened, when `fresh`): along the rows, kWidePassRows at a time.
+template <class V>
+POND_KERNEL_INLINE void wide_block_bounds(const StepView& view, int row0, int row1, int block_begin, int block_end,
+                                          float* columns, bool fresh) {
+  constexpr int kRows = kWidePassRows;
+  const float* const out[3] = {view.oux, view.ouy, view.ouz};
+  const std::size_t cols = static_cast<std::size_t>(view.cols);
+  const int width = block_end - block_begin;
+  for (int axis = 0; axis < 3; ++axis) {
+    float* const lo = columns + axis * kColumnsPitch;
+    float* const hi = columns + (3 + axis) * kColumnsPitch;
+    const float* u = out[axis] + row0 * cols + block_begin;
+    int i = row0;
+    for (; row1 + 1 - i >= kRows; i += kRows, u += kRows * cols)
+      rows_into_columns<V, kRows>(u, cols, width, lo, hi, fresh && i == row0);
+    for (; row1 + 1 - i >= 2; i += 2, u += 2 * cols)
+      rows_into_columns<V, 2>(u, cols, width, lo, hi, fresh && i == row0);
+    for (; i <= row1; ++i, u += cols) rows_into_columns<V, 1>(u, cols, width, lo, hi, fresh && i == row0);
+  }
 }
 
 // A bound widened by a value by the shared rules: the least (Lower) or the greatest.
@@ -92,6 +150,32 @@ POND_KERNEL_INLINE float tile_bound(float b, const float* at, int width, bool ne
   return next ? widest<Lower>(at[width], b) : b;
 }
 
+// v widened by the 17 values at `at` (a whole tile's columns and the one after): as many vectors as
+// the tile holds, then one more that overlaps them and ends at the 17th (min and max may see a value
+// twice).
+template <class V, bool Lower>
+POND_KERNEL_INLINE typename V::F widened_by_tile(const float* at, typename V::F v) {
+  for (int k = 0; k < kTileCells / V::width; ++k)
+    v = Lower ? V::min_of(V::load(at + k * V::width), v) : V::max_of(V::load(at + k * V::width), v);
+  const float* last = at + kTileCells + 1 - V::width;
+  return Lower ? V::min_of(V::load(last), v) : V::max_of(V::load(last), v);
+}
+
+// Bounds k0 .. k0 + 2 (least or greatest x, y, z) of a whole tile with a column after it in the
+// block (column c of the columns' bounds, when `have_columns`, and of `border`, when not null): one
+// reduction a bound.
+template <class V, bool Lower>
+POND_KERNEL_INLINE void whole_tile_bounds(const float* columns, bool have_columns, const float* const* border, int c,
+                                          float* bounds) {
+  const int k0 = Lower ? 0 : 3;
+  for (int k = k0; k < k0 + 3; ++k) {
+    const float* first = have_columns ? columns + k * kColumnsPitch + c : border[k % 3] + c;
+    typename V::F v = widened_by_tile<V, Lower>(first, V::load(first));
+    if (have_columns && border) v = widened_by_tile<V, Lower>(border[k % 3] + c, v);
+    bounds[k] = Lower ? widest<true>(V::reduce_min(v), kInf) : widest<false>(V::reduce_max(v), -kInf);
+  }
+}
+
 // Tile row `row` from a block's columns' bounds (when `have_columns`) and the new displacements of
 // the row after them (`border`: x, y, z at the block's first column, when not null): each tile
 // starting in the block from its columns there, and the tile ending at the block's first column
@@ -113,6 +197,13 @@ POND_KERNEL_INLINE void flush_tiles(const TileGrid& grid, int block_begin, int b
     const int j = a * kTileCells, width = block_end - j < kTileCells ? block_end - j : kTileCells;
     const bool next = j + kTileCells < block_end;
     const int c = j - block_begin;
+    if (width == kTileCells && next) {
+      float b[6];
+      whole_tile_bounds<V, true>(columns, have_columns, border, c, b);
+      whole_tile_bounds<V, false>(columns, have_columns, border, c, b);
+      row[a] = {b[0], b[1], b[2], b[3], b[4], b[5]};
+      continue;
+    }
     row[a] = {bound(0, kInf, c, width, next),   bound(1, kInf, c, width, next),   bound(2, kInf, c, width, next),
               bound(3, -kInf, c, width, next), bound(4, -kInf, c, width, next), bound(5, -kInf, c, width, next)};
   }
@@ -129,16 +220,24 @@ struct TileRowEvents {
   bool ends_tile_row, ends_pass, ends_range;
   bool any() const { return ends_tile_row || ends_pass || ends_range; }
 };
-POND_KERNEL_INLINE TileRowEvents tile_row_events(int i, int r1) {
-  return {i % kTileCells == 0 && i > 0, i % kTileCells == kTileCells - 1, i == r1 - 1};
+// The rows a pass reads: a tile row's at its last row where a block is narrow enough for them
+// still to be in the core's caches there; on wider blocks, the last four rows every four rows, as
+// long tile rows leave the caches before they end.
+inline constexpr int kNarrowBlock = 512;
+POND_KERNEL_INLINE int pass_rows(int block_width) { return block_width > kNarrowBlock ? kWidePassRows : kTileCells; }
+static_assert((kTileCells & (kTileCells - 1)) == 0 && (kWidePassRows & (kWidePassRows - 1)) == 0 &&
+                  kTileCells % kWidePassRows == 0,
+              "pass_rows() are powers of two that end every tile row");
+POND_KERNEL_INLINE TileRowEvents tile_row_events(int i, int r1, int pass_rows) {
+  return {i % kTileCells == 0 && i > 0, (i & (pass_rows - 1)) == pass_rows - 1, i == r1 - 1};
 }
 
 // After the integration of row i (of rows [r0, r1)) in columns [block_begin, block_end): a tile
 // row row i ends goes to the sink, from the columns' bounds over its rows in [r0, i) and row i;
-// at a tile row's last row, or the range's, the columns' bounds are taken over its rows in
-// [r0, i], and at the range's end, that last tile row goes too, partial. So the columns' bounds
-// are written once a tile row and never read back but by the flush. Out of line (called where
-// any of `events`): inlined, it changed the register allocation of the step's spring loop.
+// at a pass's last row, or the range's, the columns' bounds take in the pass's rows (from the tile
+// row's first in [r0, i] on), and at the range's end, that last tile row goes too, partial. Out of
+// line (called where any of `events`): inlined, it changed the register allocation of the step's
+// spring loop.
 template <class W>
 [[gnu::noinline]] void emit_tile_rows(const StepView& view, const TileGrid& grid, TileRowEvents events, int i,
                                       int r0, int block_begin, int block_end, TileSink& sink) {
@@ -153,8 +252,12 @@ template <class W>
     flush(i / kTileCells - 1, i > r0, border);
   }
   if (events.ends_pass || events.ends_range) {
-    const int first = i / kTileCells * kTileCells;
-    block_bounds<V>(view, first > r0 ? first : r0, i, block_begin, block_end, sink.columns);
+    const int first = i / kTileCells * kTileCells, start = first > r0 ? first : r0;
+    const int rows = pass_rows(block_end - block_begin), row0 = i + 1 - rows > start ? i + 1 - rows : start;
+    if (rows == kTileCells)
+      narrow_block_bounds<V>(view, start, i, block_begin, block_end, sink.columns);
+    else
+      wide_block_bounds<V>(view, row0, i, block_begin, block_end, sink.columns, row0 == start);
     if (events.ends_range && i / kTileCells < grid.tiles_y) flush(i / kTileCells, true, nullptr);
   }
 }
