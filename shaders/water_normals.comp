@@ -40,7 +40,7 @@ layout(push_constant) uniform Push { NormalsPush p; };
 #error "a strip of the normals must be a tile row"
 #endif
 layout(std430, set = 0, binding = POND_NORMALS_BINDING_TILE_COLUMNS) restrict writeonly buffer TileColumns {
-  TileBounds tile_columns[];
+  vec4 tile_columns[];  // two texels a column (water_gpu.h): two stores, where six floats took six
 };
 TileBounds node_bounds(vec3 u) { return TileBounds(u.x, u.y, u.z, u.x, u.y, u.z); }
 #endif
@@ -91,6 +91,10 @@ void main() {
   // mid is row min(last, rows - 1): the next strip's first row, the tile's border. A grid of
   // 16k + 1 rows has one strip more than tile rows, its one row the last tile row's border.
   if (last < p.rows) column = bounds_widened(column, node_bounds(mid));
-  if (gl_GlobalInvocationID.y < tiles_along(p.rows)) tile_columns[gl_GlobalInvocationID.y * C + j] = column;
+  if (gl_GlobalInvocationID.y < tiles_along(p.rows)) {
+    const uint at = POND_TILE_COLUMN_TEXELS * (gl_GlobalInvocationID.y * C + j);
+    tile_columns[at] = vec4(column.min_x, column.min_y, column.min_z, 0.0);
+    tile_columns[at + 1u] = vec4(column.max_x, column.max_y, column.max_z, 0.0);
+  }
 #endif
 }

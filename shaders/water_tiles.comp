@@ -4,8 +4,9 @@
 // tile's columns [16a, min(16a + 16, cols - 1)] over its tile row and makes its zeros +0. Min and
 // max are exact and the zeros canonical, so the order does not matter: these are the bits of
 // sim::compute_tile_bounds. Only compares and selects: no subgroup or shared memory, so any
-// Vulkan 1.3 device runs it. The columns are read through an R32F texel-buffer view: a gather
-// per fetch on llvmpipe, where an SSBO load with a per-invocation address is a loop over the lanes.
+// Vulkan 1.3 device runs it. The columns are read through an RGBA32F texel-buffer view, two texels
+// a column: on llvmpipe a fetch is a gather (an SSBO load with a per-invocation address is a loop
+// over the lanes), two a column where one float a texel took six.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_spirv_intrinsics : require
 
@@ -19,7 +20,7 @@ spirv_execution_mode(capabilities = [4464], 4459, 32);  // DenormPreserve, 32-bi
 
 layout(local_size_x = POND_TILES_LOCAL_X, local_size_y = 1, local_size_z = 1) in;
 
-layout(set = 0, binding = POND_TILES_BINDING_COLUMNS) uniform samplerBuffer columns;  // R32F: 6 floats a column
+layout(set = 0, binding = POND_TILES_BINDING_COLUMNS) uniform samplerBuffer columns;  // RGBA32F: 2 texels a column
 layout(std430, set = 0, binding = POND_TILES_BINDING_BOUNDS) restrict writeonly buffer Bounds {
   TileBounds bounds[];
 };
@@ -33,10 +34,9 @@ void main() {
   TileBounds tile = TileBounds(inf, inf, inf, minus_inf, minus_inf, minus_inf);
   const uint j0 = a * uint(POND_TILE_CELLS), j1 = min(j0 + uint(POND_TILE_CELLS), p.cols - 1u);
   for (uint j = j0; j <= j1; ++j) {
-    const int k = int(6u * (b * p.cols + j));
-    tile = bounds_widened(tile, TileBounds(texelFetch(columns, k).x, texelFetch(columns, k + 1).x,
-                                           texelFetch(columns, k + 2).x, texelFetch(columns, k + 3).x,
-                                           texelFetch(columns, k + 4).x, texelFetch(columns, k + 5).x));
+    const int k = int(POND_TILE_COLUMN_TEXELS * (b * p.cols + j));
+    const vec3 lo = texelFetch(columns, k).xyz, hi = texelFetch(columns, k + 1).xyz;
+    tile = bounds_widened(tile, TileBounds(lo.x, lo.y, lo.z, hi.x, hi.y, hi.z));
   }
   bounds[t] = bounds_canonical(tile);
 }

@@ -54,13 +54,15 @@
 #define POND_NORMALS_BINDING_NORMALS 1  // storage buffer: the normals, vec4[]
 #define POND_NORMALS_BINDINGS 2
 // The normals' tile variant (POND_NORMALS_TILES, shared/tile_bounds.h; on request only) also has:
-#define POND_NORMALS_BINDING_TILE_COLUMNS 2  // storage buffer: TileBounds[], column j's bounds over tile
-                                             // row b's nodes at b * cols + j
+#define POND_NORMALS_BINDING_TILE_COLUMNS 2  // storage buffer: vec4[], column j's bounds over tile row
+                                             // b's nodes at texels 2 (b * cols + j) (least x, y, z, 0)
+                                             // and the next (greatest x, y, z, 0)
+#define POND_TILE_COLUMN_TEXELS 2            // RGBA32F texels a column's bounds take
 #define POND_NORMALS_TILES_BINDINGS 3
 
 // Bindings of water_tiles.comp: the tile columns above in, the tile bounds out (TileBounds[],
 // tile (a, b) at b * tiles_x + a).
-#define POND_TILES_BINDING_COLUMNS 0  // uniform texel buffer, R32_SFLOAT view of the tile columns
+#define POND_TILES_BINDING_COLUMNS 0  // uniform texel buffer, R32G32B32A32_SFLOAT view of the tile columns
 #define POND_TILES_BINDING_BOUNDS 1   // storage buffer: TileBounds[]
 #define POND_TILES_BINDINGS 2
 #define POND_TILES_LOCAL_X 64  // tiles per workgroup of water_tiles.comp

@@ -27,11 +27,11 @@ std::vector<DT> tiles_bindings() {
 TileKernels::TileKernels(const Context& ctx, const sim::WaterModel& model, const WaterKernels& water,
                          const Buffer& normals, bool denorm_preserve, std::uint32_t slots)
     : ctx_(ctx), water_(water), grid_(model.rows, model.cols) {
-  const vk::DeviceSize bound_bytes = sizeof(TileBounds);
-  columns_ = create_buffer(ctx_, grid_.tiles_y * static_cast<vk::DeviceSize>(model.cols) * bound_bytes,
+  const vk::DeviceSize bound_bytes = sizeof(TileBounds), column_bytes = POND_TILE_COLUMN_TEXELS * 4 * sizeof(float);
+  columns_ = create_buffer(ctx_, grid_.tiles_y * static_cast<vk::DeviceSize>(model.cols) * column_bytes,
                            BU::eStorageBuffer | BU::eUniformTexelBuffer, MemoryUse::device, "tile columns");
-  // Read by the merge through an R32F view, as the state (fewer texels than the state's view).
-  columns_r32_ = create_texel_view(ctx_, columns_, vk::Format::eR32Sfloat, "the tile columns");
+  // Read by the merge through an RGBA32F view (fewer texels than the state's R32F view).
+  columns_rgba_ = create_texel_view(ctx_, columns_, vk::Format::eR32G32B32A32Sfloat, "the tile columns");
   bounds_ = create_buffer(ctx_, grid_.tiles() * bound_bytes,
                           BU::eStorageBuffer | BU::eTransferSrc, MemoryUse::device, "tile bounds");
   if (host_readable_in_place(ctx_, bounds_)) {
@@ -76,7 +76,7 @@ TileKernels::TileKernels(const Context& ctx, const sim::WaterModel& model, const
          .descriptorType = DT::eStorageBuffer, .pBufferInfo = &columns_info}};
     ctx_.device().updateDescriptorSets(writes, nullptr);
   }
-  const vk::BufferView columns_view = *columns_r32_;
+  const vk::BufferView columns_view = *columns_rgba_;
   const vk::WriteDescriptorSet writes[] = {
       {.dstSet = *tiles_set_, .dstBinding = POND_TILES_BINDING_COLUMNS, .descriptorCount = 1,
        .descriptorType = DT::eUniformTexelBuffer, .pTexelBufferView = &columns_view},

@@ -41,7 +41,7 @@ class TileKernels {
   const Context& ctx_;
   const WaterKernels& water_;
   sim::TileGrid grid_;
-  Buffer columns_, bounds_;  // columns_: per tile row b and column j at b * cols + j
+  Buffer columns_, bounds_;  // columns_: per tile row b and column j at texels 2 (b * cols + j), +1
   // Per slot, the host's copy of bounds_ (none where bounds_ is mapped: read in place, lavapipe),
   // and whether it was invalidated since its submission finished.
   std::vector<Buffer> host_;
@@ -50,7 +50,7 @@ class TileKernels {
   vk::raii::DescriptorPool pool_ = nullptr;
   std::vector<vk::raii::DescriptorSet> normals_sets_;  // [c]: state c
   vk::raii::DescriptorSet tiles_set_ = nullptr;
-  vk::raii::BufferView columns_r32_ = nullptr;
+  vk::raii::BufferView columns_rgba_ = nullptr;
 };
 
 }  // namespace pond::gpu
