@@ -215,7 +215,7 @@ POND_KERNEL_INLINE void flush_tiles(const TileGrid& grid, int block_begin, int b
 }
 
 // What follows the integration of row i of rows [r0, r1) (tile_row_events): the end of the tile
-// row before it (row i is its border), the last row of its own tile row, the end of the range.
+// row before it (row i is its border), the last row of a pass (pass_rows()), the end of the range.
 struct TileRowEvents {
   bool ends_tile_row, ends_pass, ends_range;
   bool any() const { return ends_tile_row || ends_pass || ends_range; }
