@@ -135,30 +135,33 @@ POND_KERNEL_INLINE float widest(float v, float acc) {
   return Lower ? shared::bound_below(acc, v) : shared::bound_above(acc, v);
 }
 
+// v widened by a whole tile's columns at `at` and, with Next, the column after them: the tile's
+// vectors, then one more that overlaps them and ends at that 17th column (min and max may see a
+// value twice); the least (Lower) or the greatest.
+template <class V, bool Lower, bool Next>
+POND_KERNEL_INLINE typename V::F widened_by_tile(const float* at, typename V::F v) {
+  const auto widened = [&](const float* from) {
+    return Lower ? V::min_of(V::load(from), v) : V::max_of(V::load(from), v);
+  };
+  for (int k = 0; k < kTileCells / V::width; ++k) v = widened(at + k * V::width);
+  if constexpr (Next) v = widened(at + kTileCells + 1 - V::width);
+  return v;
+}
+template <class V, bool Lower>
+POND_KERNEL_INLINE float reduced(typename V::F v) {
+  return Lower ? V::reduce_min(v) : V::reduce_max(v);
+}
+
 // `b` widened by the values at `at`: `width` columns, and the column after them when `next`;
 // the least (Lower) or the greatest.
 template <class V, bool Lower>
 POND_KERNEL_INLINE float tile_bound(float b, const float* at, int width, bool next) {
   if (width == kTileCells) {
-    typename V::F v = V::load(at);
-    for (int k = 1; k < kTileCells / V::width; ++k)
-      v = Lower ? V::min_of(V::load(at + k * V::width), v) : V::max_of(V::load(at + k * V::width), v);
-    b = widest<Lower>(Lower ? V::reduce_min(v) : V::reduce_max(v), b);
+    b = widest<Lower>(reduced<V, Lower>(widened_by_tile<V, Lower, false>(at, V::load(at))), b);
   } else {
     for (int c = 0; c < width; ++c) b = widest<Lower>(at[c], b);
   }
   return next ? widest<Lower>(at[width], b) : b;
-}
-
-// v widened by the 17 values at `at` (a whole tile's columns and the one after): as many vectors as
-// the tile holds, then one more that overlaps them and ends at the 17th (min and max may see a value
-// twice).
-template <class V, bool Lower>
-POND_KERNEL_INLINE typename V::F widened_by_tile(const float* at, typename V::F v) {
-  for (int k = 0; k < kTileCells / V::width; ++k)
-    v = Lower ? V::min_of(V::load(at + k * V::width), v) : V::max_of(V::load(at + k * V::width), v);
-  const float* last = at + kTileCells + 1 - V::width;
-  return Lower ? V::min_of(V::load(last), v) : V::max_of(V::load(last), v);
 }
 
 // Bounds k0 .. k0 + 2 (least or greatest x, y, z) of a whole tile with a column after it in the
@@ -170,9 +173,9 @@ POND_KERNEL_INLINE void whole_tile_bounds(const float* columns, bool have_column
   const int k0 = Lower ? 0 : 3;
   for (int k = k0; k < k0 + 3; ++k) {
     const float* first = have_columns ? columns + k * kColumnsPitch + c : border[k % 3] + c;
-    typename V::F v = widened_by_tile<V, Lower>(first, V::load(first));
-    if (have_columns && border) v = widened_by_tile<V, Lower>(border[k % 3] + c, v);
-    bounds[k] = Lower ? widest<true>(V::reduce_min(v), kInf) : widest<false>(V::reduce_max(v), -kInf);
+    typename V::F v = widened_by_tile<V, Lower, true>(first, V::load(first));
+    if (have_columns && border) v = widened_by_tile<V, Lower, true>(border[k % 3] + c, v);
+    bounds[k] = widest<Lower>(reduced<V, Lower>(v), Lower ? kInf : -kInf);
   }
 }
 
