@@ -40,7 +40,7 @@ layout(push_constant) uniform Push { NormalsPush p; };
 #error "a strip of the normals must be a tile row"
 #endif
 layout(std430, set = 0, binding = POND_NORMALS_BINDING_TILE_COLUMNS) restrict writeonly buffer TileColumns {
-  vec4 tile_columns[];  // two texels a column (water_gpu.h): two stores, where six floats took six
+  vec4 tile_columns[];  // POND_TILE_COLUMN_TEXELS a column (water_gpu.h): two vector stores
 };
 TileBounds node_bounds(vec3 u) { return TileBounds(u.x, u.y, u.z, u.x, u.y, u.z); }
 #endif

@@ -6,7 +6,7 @@
 // sim::compute_tile_bounds. Only compares and selects: no subgroup or shared memory, so any
 // Vulkan 1.3 device runs it. The columns are read through an RGBA32F texel-buffer view, two texels
 // a column: on llvmpipe a fetch is a gather (an SSBO load with a per-invocation address is a loop
-// over the lanes), two a column where one float a texel took six.
+// over the lanes), so a column is two fetches of four floats each.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_spirv_intrinsics : require
 

@@ -135,17 +135,22 @@ POND_KERNEL_INLINE float widest(float v, float acc) {
   return Lower ? shared::bound_below(acc, v) : shared::bound_above(acc, v);
 }
 
-// v widened by a whole tile's columns at `at` and, with Next, the column after them: the tile's
-// vectors, then one more that overlaps them and ends at that 17th column (min and max may see a
-// value twice); the least (Lower) or the greatest.
-template <class V, bool Lower, bool Next>
+// v widened by a whole tile's columns at `at` from its vector First on and, with Next, the column
+// after them: the tile's vectors, then one more that overlaps them and ends at that 17th column
+// (min and max may see a value twice); the least (Lower) or the greatest.
+template <class V, bool Lower, bool Next, int First = 0>
 POND_KERNEL_INLINE typename V::F widened_by_tile(const float* at, typename V::F v) {
   const auto widened = [&](const float* from) {
     return Lower ? V::min_of(V::load(from), v) : V::max_of(V::load(from), v);
   };
-  for (int k = 0; k < kTileCells / V::width; ++k) v = widened(at + k * V::width);
+  for (int k = First; k < kTileCells / V::width; ++k) v = widened(at + k * V::width);
   if constexpr (Next) v = widened(at + kTileCells + 1 - V::width);
   return v;
+}
+// A whole tile's columns at `at` (and, with Next, the column after them) as one vector.
+template <class V, bool Lower, bool Next>
+POND_KERNEL_INLINE typename V::F of_tile(const float* at) {
+  return widened_by_tile<V, Lower, Next, 1>(at, V::load(at));
 }
 template <class V, bool Lower>
 POND_KERNEL_INLINE float reduced(typename V::F v) {
@@ -157,7 +162,7 @@ POND_KERNEL_INLINE float reduced(typename V::F v) {
 template <class V, bool Lower>
 POND_KERNEL_INLINE float tile_bound(float b, const float* at, int width, bool next) {
   if (width == kTileCells) {
-    b = widest<Lower>(reduced<V, Lower>(widened_by_tile<V, Lower, false>(at, V::load(at))), b);
+    b = widest<Lower>(reduced<V, Lower>(of_tile<V, Lower, false>(at)), b);
   } else {
     for (int c = 0; c < width; ++c) b = widest<Lower>(at[c], b);
   }
@@ -173,7 +178,7 @@ POND_KERNEL_INLINE void whole_tile_bounds(const float* columns, bool have_column
   const int k0 = Lower ? 0 : 3;
   for (int k = k0; k < k0 + 3; ++k) {
     const float* first = have_columns ? columns + k * kColumnsPitch + c : border[k % 3] + c;
-    typename V::F v = widened_by_tile<V, Lower, true>(first, V::load(first));
+    typename V::F v = of_tile<V, Lower, true>(first);
     if (have_columns && border) v = widened_by_tile<V, Lower, true>(border[k % 3] + c, v);
     bounds[k] = widest<Lower>(reduced<V, Lower>(v), Lower ? kInf : -kInf);
   }
