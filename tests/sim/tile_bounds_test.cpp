@@ -60,14 +60,16 @@ std::string check_all(const CpuSolver& solver) {
   return "";
 }
 
-// A random scene: a grid of 2 to 90 nodes a side, an island and a vertical-only strip, splashes of
+// A random scene: a grid of 2 to 90 rows and 2 to 300 columns (one in four wider than the 8 or 16
+// tiles the flush reduces at once, tile_kernel.h), an island and a vertical-only strip, splashes of
 // every kind at random steps, and on larger grids a kinematic sphere crossing the water and balls.
 Scene random_scene(std::mt19937& rng) {
   auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
   auto integer = [&](int a, int b) { return std::uniform_int_distribution<int>(a, b)(rng); };
   const int sizes[] = {2, 3, 16, 17, 18, 33, 47, 49, 64, 65, 90};
   const int rows = integer(0, 1) ? sizes[integer(0, 10)] : integer(2, 90);
-  const int cols = integer(0, 1) ? sizes[integer(0, 10)] : integer(2, 90);
+  const int wide[] = {129, 145, 257, 273, 300};
+  const int cols = integer(0, 3) == 0 ? wide[integer(0, 4)] : integer(0, 1) ? sizes[integer(0, 10)] : integer(2, 90);
   Scene s = test::grid_scene(rows, cols, integer(0, 2) ? NodeKind::fixed : NodeKind::free);
   if (rows > 10 && cols > 10) {
     const int r = integer(1, rows - 6), c = integer(1, cols - 6);
