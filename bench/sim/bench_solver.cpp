@@ -10,11 +10,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <random>
 #include <thread>
 #include <vector>
 
 #include "sim/cpu_solver.h"
 #include "sim/water_spec.h"
+#include "tile_row_alone.h"
 
 namespace {
 using namespace pond::sim;
@@ -142,6 +144,50 @@ void BM_TileBoundsPaired(benchmark::State& state) {
 }
 BENCHMARK(BM_TileBoundsPaired)->ArgsProduct({{0, 1, 2, 3}, {256, 1024}, {1, 2}})
     ->ArgNames({"backend", "size", "substeps"})->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+
+// One tile row's bounds outside the step (tile_row_alone.h): random displacements 17 rows deep in
+// one column block, the pass, the flush or both, with the bounds table of SSE2 (the scalar and SSE
+// backends), AVX2 or AVX-512. `s_per_node`: the time over the tile row's 16 x width nodes, to set
+// against BM_Solver's time a node-step. Args: table (0 SSE2, 1 AVX2, 2 AVX-512), width, part
+// (0 pass, 1 flush, 2 both).
+void BM_TileRowAlone(benchmark::State& state) {
+  const int table = static_cast<int>(state.range(0)), width = static_cast<int>(state.range(1));
+  const Backend needs[] = {Backend::sse, Backend::avx2, Backend::avx512};
+  if (!cpu_supports(needs[table])) {
+    state.SkipWithError("backend not supported by this CPU");
+    return;
+  }
+  const pond::bench::TileRowFn fn = table == 0   ? pond::bench::tile_row_sse2()
+                                    : table == 1 ? pond::bench::tile_row_avx2()
+                                                 : pond::bench::tile_row_avx512();
+  const int rows = 2 * POND_TILE_CELLS + 1;  // a second tile row, so row 16 ends no range
+  std::vector<float> u[3];
+  std::mt19937 rng(7);
+  for (auto& a : u) {
+    a.resize(static_cast<std::size_t>(rows) * width);
+    for (float& x : a) x = std::uniform_real_distribution<float>(-1, 1)(rng);
+  }
+  StepView view{};
+  view.oux = u[0].data();
+  view.ouy = u[1].data();
+  view.ouz = u[2].data();
+  view.rows = rows;
+  view.cols = width;
+  const TileGrid grid(rows, width);
+  std::vector<float> columns(6 * kColumnsPitch);
+  std::vector<TileBounds> tiles(grid.tiles());
+  TileSink sink{tiles.data(), columns.data(), 0};
+  const auto part = static_cast<pond::bench::TileRowPart>(state.range(2));
+  for (auto _ : state) {
+    fn(view, grid, part, sink);
+    benchmark::DoNotOptimize(tiles.data());
+    benchmark::ClobberMemory();
+  }
+  state.counters["s_per_node"] = benchmark::Counter(double(POND_TILE_CELLS) * width * double(state.iterations()),
+                                                    benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_TileRowAlone)->ArgsProduct({{0, 1, 2}, {257, 1024}, {0, 1, 2}})
+    ->ArgNames({"table", "width", "part"})->Unit(benchmark::kMicrosecond);
 
 // The sweep behind docs/solver_speed.png (scripts/plot_solver_speed.sh): exact math, every backend,
 // one thread and all threads, grid sizes from 32^2 to 2048^2.
