@@ -1,6 +1,6 @@
 #pragma once
 // One tile row of the CPU step's tile bounds outside the step (BM_TileRowAlone, bench_solver.cpp):
-// sim/tile_kernel.h's emit_tile_rows called after the rows the step calls it after, over new
+// sim/tile_kernel.h's emit_tile_rows called at the rows where the step calls it, over new
 // displacements already written, so its cost can be set against the floor of its min and max
 // instructions without the step around it. One function per bounds table (tile_row_*.cpp).
 #include "sim/step_view.h"
@@ -16,7 +16,7 @@ enum class TileRowPart { pass, flush, both };
 using TileRowFn = void (*)(const sim::StepView& view, const sim::TileGrid& grid, TileRowPart part, sim::TileSink& sink);
 
 TileRowFn tile_row_sse2();    // the scalar and SSE2 backends' table
-TileRowFn tile_row_avx2();    // x86-64 builds only, as the others
+TileRowFn tile_row_avx2();
 TileRowFn tile_row_avx512();
 
 }  // namespace pond::bench

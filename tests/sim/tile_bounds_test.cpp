@@ -60,9 +60,10 @@ std::string check_all(const CpuSolver& solver) {
   return "";
 }
 
-// A random scene: a grid of 2 to 90 rows and 2 to 300 columns (one in four wider than the 8 or 16
-// tiles the flush reduces at once, tile_kernel.h), an island and a vertical-only strip, splashes of
-// every kind at random steps, and on larger grids a kinematic sphere crossing the water and balls.
+// A random scene: a grid of 2 to 90 rows and 2 to 300 columns (one in four wider than the 128
+// columns AVX-512's pass reads as one group, tile_kernel.h), an island and a vertical-only strip,
+// splashes of every kind at random steps, and on larger grids a kinematic sphere crossing the
+// water and balls.
 Scene random_scene(std::mt19937& rng) {
   auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
   auto integer = [&](int a, int b) { return std::uniform_int_distribution<int>(a, b)(rng); };
