@@ -37,6 +37,13 @@ WaterModel rippled_model(int size, MathMode math, int substeps = 1) {
   return build_model(s, math);
 }
 
+// Whether `state` was skipped because this CPU cannot run `backend`'s kernels.
+bool skipped_without(Backend backend, benchmark::State& state) {
+  if (cpu_supports(backend)) return false;
+  state.SkipWithError("backend not supported by this CPU");
+  return true;
+}
+
 // Args: backend, size, threads, math (0 exact, 1 fast) and, where given, whether the kernels emit
 // the tile bounds (sim/tile_bounds.h) and the substeps of a step. Each iteration is one advance(1):
 // a frame of one step.
@@ -45,10 +52,7 @@ void run_solver(benchmark::State& state, bool tiles, int substeps = 1) {
   const int size = static_cast<int>(state.range(1));
   const int threads = static_cast<int>(state.range(2));
   const auto math = static_cast<MathMode>(state.range(3));
-  if (!cpu_supports(backend)) {
-    state.SkipWithError("backend not supported by this CPU");
-    return;
-  }
+  if (skipped_without(backend, state)) return;
   CpuSolver solver(rippled_model(size, math, substeps), backend, threads);
   solver.advance(20);  // the splashes spread
   solver.track_tile_bounds(tiles);
@@ -103,10 +107,7 @@ BENCHMARK(BM_TileBounds)->Apply(tile_args)->ArgNames({"backend", "size", "thread
 void BM_TileBoundsPaired(benchmark::State& state) {
   const auto backend = static_cast<Backend>(state.range(0));
   const int size = static_cast<int>(state.range(1));
-  if (!cpu_supports(backend)) {
-    state.SkipWithError("backend not supported by this CPU");
-    return;
-  }
+  if (skipped_without(backend, state)) return;
   const WaterModel model = rippled_model(size, MathMode::exact, static_cast<int>(state.range(2)));
   CpuSolver a(model, backend, 1), b(model, backend, 1);
   a.advance(20);
@@ -152,14 +153,14 @@ BENCHMARK(BM_TileBoundsPaired)->ArgsProduct({{0, 1, 2, 3}, {256, 1024}, {1, 2}})
 // (0 pass, 1 flush, 2 both).
 void BM_TileRowAlone(benchmark::State& state) {
   const int table = static_cast<int>(state.range(0)), width = static_cast<int>(state.range(1));
-  const Backend needs[] = {Backend::sse, Backend::avx2, Backend::avx512};
-  if (!cpu_supports(needs[table])) {
-    state.SkipWithError("backend not supported by this CPU");
-    return;
-  }
-  const pond::bench::TileRowFn fn = table == 0   ? pond::bench::tile_row_sse2()
-                                    : table == 1 ? pond::bench::tile_row_avx2()
-                                                 : pond::bench::tile_row_avx512();
+  const struct {
+    Backend needs;
+    pond::bench::TileRowFn (*get)();  // called only after the CPU check, as the kernels' getters
+  } tables[] = {{Backend::sse, &pond::bench::tile_row_sse2},
+                {Backend::avx2, &pond::bench::tile_row_avx2},
+                {Backend::avx512, &pond::bench::tile_row_avx512}};
+  if (skipped_without(tables[table].needs, state)) return;
+  const pond::bench::TileRowFn fn = tables[table].get();
   const int rows = 2 * POND_TILE_CELLS + 1;  // a second tile row, so row 16 ends no range
   std::vector<float> u[3];
   std::mt19937 rng(7);
