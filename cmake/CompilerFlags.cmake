@@ -39,3 +39,11 @@ endif()
 # compiler to fuse a*b+c, so the backend's bits equal the scalar ones; the tests check it.)
 set(POND_AVX2_FLAGS -mavx2)
 set(POND_AVX512_FLAGS -mavx512f)
+
+# Builds `sources` (of the calling directory) for one wide backend, avx2 or avx512: its flags, and
+# its own inline namespace for the kernel code they inline (sim/isa_namespace.h).
+function(pond_isa_sources isa)
+  string(TOUPPER "${isa}" upper)
+  set_source_files_properties(${ARGN} PROPERTIES
+    COMPILE_OPTIONS "${POND_${upper}_FLAGS}" COMPILE_DEFINITIONS "POND_ISA=isa_${isa}")
+endfunction()

@@ -1,4 +1,4 @@
-// Built with the sse2 kernel's flags (bench/sim/CMakeLists.txt).
+// Built with the baseline flags, as kernel_sse2.cpp is (x86-64 has SSE2).
 #include "tile_row_alone_impl.h"
 #include "sim/wide_sse2.h"
 
