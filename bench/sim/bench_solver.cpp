@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "sim/aligned_buffer.h"
 #include "sim/cpu_solver.h"
 #include "sim/water_spec.h"
 #include "tile_row_alone.h"
@@ -162,10 +163,11 @@ void BM_TileRowAlone(benchmark::State& state) {
   if (skipped_without(tables[table].needs, state)) return;
   const pond::bench::TileRowFn fn = tables[table].get();
   const int rows = 2 * POND_TILE_CELLS + 1;  // a second tile row, so row 16 ends no range
-  std::vector<float> u[3];
+  // 64-byte aligned, as the solver's state and columns are (sim/aligned_buffer.h).
+  AlignedBuffer<float> u[3];
   std::mt19937 rng(7);
   for (auto& a : u) {
-    a.resize(static_cast<std::size_t>(rows) * width);
+    a = AlignedBuffer<float>(static_cast<std::size_t>(rows) * width);
     for (float& x : a) x = std::uniform_real_distribution<float>(-1, 1)(rng);
   }
   StepView view{};
@@ -175,7 +177,7 @@ void BM_TileRowAlone(benchmark::State& state) {
   view.rows = rows;
   view.cols = width;
   const TileGrid grid(rows, width);
-  std::vector<float> columns(6 * kColumnsPitch);
+  AlignedBuffer<float> columns(6 * kColumnsPitch);
   std::vector<TileBounds> tiles(grid.tiles());
   TileSink sink{tiles.data(), columns.data(), 0};
   const auto part = static_cast<pond::bench::TileRowPart>(state.range(2));
