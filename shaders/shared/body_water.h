@@ -14,8 +14,9 @@
 //    surface's normal (-gx, 1, -gz) / |..|: a slope pushes the ball sideways, as the pressure
 //    gradient under a wave does. Its reaction goes to the bed (an external force, like gravity):
 //    a ball at rest leaves the water flat.
-//  - Drag and displacement: a linear drag against the water's velocity, rate k = drag_dt * f,
-//    solved implicitly with the nodes as the other mass (effective mass m (sum w)^2 / sum w^2), so
+//  - Drag and displacement: a linear drag against the water's velocity, rate k = drag_dt * f, on
+//    the velocity the body starts the substep with (before this substep's weight and buoyancy,
+//    which a contact may take away again: a ball resting on the floor drags nothing), solved implicitly with the nodes as the other mass (effective mass m (sum w)^2 / sum w^2), so
 //    the relative velocity only ever shrinks: v_b' = v_b - k dv / (1 + k (1 + M / m_eff)). The
 //    opposite impulse goes into the nodes in proportion to their weights, so momentum is kept:
 //    vertically into every node under the ball (a ball moving through the surface pushes the water
@@ -173,73 +174,80 @@ POND_BODY_FN float drag_change(float rel, float k, float q) {
 }
 
 // One substep of the water on floating body b (constants c), from the moments m of the water under
-// it: gravity, buoyancy along the normal, then the drag against the water's velocity.
+// it: the drag against the water's velocity, on the velocity b starts the substep with; then
+// gravity and buoyancy along the normal. The drag comes first so that it never acts on the share of
+// this substep's weight that a contact (the floor, the land, a body under it) takes away afterwards:
+// a ball resting on the floor starts each substep at rest, so still water exchanges nothing with it.
 POND_BODY_FN WaterExchange water_exchange(WaterMoments m, BodyState b, BodyConstants c) {
   WaterExchange e;
-  POND_PRECISE float vy = b.vy - c.gravity_dt;
-  b.vy = vy;
-  e.body = b;
   e.cx = 0.0f;
   e.cy = 0.0f;
   e.cz = 0.0f;
   e.wet = 0u;
-  if (!(m.w > POND_WATER_MIN_WEIGHT)) return e;  // no water under it
-  POND_PRECISE float inv_w = inv_exact(m.w);
-  POND_PRECISE float level = m.y * inv_w;
-  POND_PRECISE float f = submerged_fraction(level, b.y, c.radius, c.inv_4r3);
-  if (!(f > 0.0f)) return e;  // above the water
-  e.wet = 1u;
-  POND_PRECISE float gx = water_slope(m.dx, m.dxx, m.dxy, inv_w, level);
-  POND_PRECISE float gz = water_slope(m.dz, m.dzz, m.dzy, inv_w, level);
-  POND_PRECISE float n2 = gx * gx;
-  POND_PRECISE float gz2 = gz * gz;
-  n2 = n2 + gz2;
-  n2 = n2 + 1.0f;
-  POND_PRECISE float push = c.buoyancy_dt * f;
-  push = push * rsqrt_exact(n2, kRsqrtStepsExact);
-  POND_PRECISE float t = push * gx;
-  POND_PRECISE float vx = b.vx - t;
-  vy = b.vy + push;
-  t = push * gz;
-  POND_PRECISE float vz = b.vz - t;
+  POND_PRECISE float f = 0.0f;
+  POND_PRECISE float gx = 0.0f;
+  POND_PRECISE float gz = 0.0f;
+  if (m.w > POND_WATER_MIN_WEIGHT) {  // else no water under it
+    POND_PRECISE float inv_w = inv_exact(m.w);
+    POND_PRECISE float level = m.y * inv_w;
+    f = submerged_fraction(level, b.y, c.radius, c.inv_4r3);
+    if (f > 0.0f) {  // else above the water
+      e.wet = 1u;
+      gx = water_slope(m.dx, m.dxx, m.dxy, inv_w, level);
+      gz = water_slope(m.dz, m.dzz, m.dzy, inv_w, level);
 
-  // The drag, against the water's mean velocity; the nodes take the opposite impulse.
-  POND_PRECISE float k = c.drag_dt * f;
-  POND_PRECISE float wvy = m.vy * inv_w;
-  POND_PRECISE float qy = c.body_over_node * m.w2;
-  qy = qy * inv_w;
-  qy = qy * inv_w;
-  POND_PRECISE float rel = vy - wvy;
-  POND_PRECISE float dvy = drag_change(rel, k, qy);
-  vy = vy + dvy;
-  POND_PRECISE float per = c.body_over_node * inv_w;
-  t = -dvy;
-  e.cy = t * per;
-  POND_PRECISE float wvx = m.vx * inv_w;
-  POND_PRECISE float wvz = m.vz * inv_w;
-  POND_PRECISE float qh = 0.0f;
-  POND_PRECISE float per_free = 0.0f;
-  if (m.free_w > POND_WATER_MIN_WEIGHT) {
-    POND_PRECISE float inv_free = inv_exact(m.free_w);
-    qh = c.body_over_node * m.free_w2;
-    qh = qh * inv_free;
-    qh = qh * inv_w;
-    per_free = c.body_over_node * inv_free;
+      // The drag, against the water's mean velocity; the nodes take the opposite impulse.
+      POND_PRECISE float k = c.drag_dt * f;
+      POND_PRECISE float wvy = m.vy * inv_w;
+      POND_PRECISE float qy = c.body_over_node * m.w2;
+      qy = qy * inv_w;
+      qy = qy * inv_w;
+      POND_PRECISE float rel = b.vy - wvy;
+      POND_PRECISE float dvy = drag_change(rel, k, qy);
+      POND_PRECISE float per = c.body_over_node * inv_w;
+      POND_PRECISE float t = -dvy;
+      e.cy = t * per;
+      POND_PRECISE float wvx = m.vx * inv_w;
+      POND_PRECISE float wvz = m.vz * inv_w;
+      POND_PRECISE float qh = 0.0f;
+      POND_PRECISE float per_free = 0.0f;
+      if (m.free_w > POND_WATER_MIN_WEIGHT) {
+        POND_PRECISE float inv_free = inv_exact(m.free_w);
+        qh = c.body_over_node * m.free_w2;
+        qh = qh * inv_free;
+        qh = qh * inv_w;
+        per_free = c.body_over_node * inv_free;
+      }
+      rel = b.vx - wvx;
+      POND_PRECISE float dvx = drag_change(rel, k, qh);
+      rel = b.vz - wvz;
+      POND_PRECISE float dvz = drag_change(rel, k, qh);
+      t = b.vx + dvx; b.vx = t;
+      t = b.vy + dvy; b.vy = t;
+      t = b.vz + dvz; b.vz = t;
+      t = -dvx;
+      e.cx = t * per_free;
+      t = -dvz;
+      e.cz = t * per_free;
+    }
   }
-  rel = vx - wvx;
-  POND_PRECISE float dvx = drag_change(rel, k, qh);
-  rel = vz - wvz;
-  POND_PRECISE float dvz = drag_change(rel, k, qh);
-  vx = vx + dvx;
-  vz = vz + dvz;
-  t = -dvx;
-  e.cx = t * per_free;
-  t = -dvz;
-  e.cz = t * per_free;
-  e.body.vx = vx;
-  e.body.vy = vy;
-  e.body.vz = vz;
-  e.body = canonical_body(e.body);
+  // Gravity, then buoyancy along the surface's normal (-gx, 1, -gz) / |..|.
+  POND_PRECISE float vy = b.vy - c.gravity_dt;
+  b.vy = vy;
+  if (f > 0.0f) {
+    POND_PRECISE float n2 = gx * gx;
+    POND_PRECISE float gz2 = gz * gz;
+    n2 = n2 + gz2;
+    n2 = n2 + 1.0f;
+    POND_PRECISE float push = c.buoyancy_dt * f;
+    push = push * rsqrt_exact(n2, kRsqrtStepsExact);
+    POND_PRECISE float t = push * gx;
+    t = b.vx - t; b.vx = t;
+    t = b.vy + push; b.vy = t;
+    t = push * gz;
+    t = b.vz - t; b.vz = t;
+  }
+  e.body = canonical_body(b);
   e.cx = plus_zero(e.cx);
   e.cy = plus_zero(e.cy);
   e.cz = plus_zero(e.cz);

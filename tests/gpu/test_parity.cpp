@@ -143,6 +143,13 @@ const ParityCase kCases[] = {
                      "velocity": [0.3, -1.0, 0.2]},
                     {"motion": "kinematic", "radius": 1.5, "path": [[10, 5, -0.5, 5], [400, 25, 0.2, 20]]}]})",
      3000},
+    {"bodies_65x65_sunk_and_dropped",  // a stone resting on the floor, one dropped in, one sinking
+                                       // from under the surface: the floor's contact after the drag
+     R"({"grid": {"rows": 65, "cols": 65}, "basin": {"floor_depth": 5.0},
+         "bodies": [{"motion": "floating", "radius": 1.5, "density": 2, "position": [32, -3.5, 32]},
+                    {"motion": "floating", "radius": 2.0, "density": 3, "position": [15, 3, 48]},
+                    {"motion": "floating", "radius": 1.5, "density": 1.2, "position": [48, -1.8, 16]}]})",
+     5000},
     {"narrow_7x6_free",  // the last group: two real columns and 2 padding
      R"({"grid": {"rows": 7, "cols": 6}, "border": "free",
          "perturbations": [)" POND_SPLASHES(3, 5, 4.5, 4.25) R"(]})",
