@@ -6,19 +6,19 @@
 namespace pond::gpu {
 namespace {
 
-// The loader's own notices (it says so when VK_INSTANCE_LAYERS adds layers, as in the test layer's
-// runs) are general-purpose warnings, not findings about pond's use of Vulkan.
-bool is_loader_notice(VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT type,
-                      const VkDebugUtilsMessengerCallbackDataEXT* data) {
-  return severity < VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT && type == VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT &&
-         data->pMessageIdName && std::strcmp(data->pMessageIdName, "Loader Message") == 0;
+// The loader's messages (its notices when VK_INSTANCE_LAYERS adds layers; its errors about
+// drivers it cannot open, such as another architecture's ICDs that Debian's multiarch installs
+// beside the native ones) are about the machine's Vulkan installation, not pond's use of Vulkan:
+// the loader skips what it cannot load. They are not validation messages, at any severity.
+bool is_loader_message(const VkDebugUtilsMessengerCallbackDataEXT* data) {
+  return data->pMessageIdName && std::strcmp(data->pMessageIdName, "Loader Message") == 0;
 }
 
 VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                          VkDebugUtilsMessageTypeFlagsEXT type,
+                                          VkDebugUtilsMessageTypeFlagsEXT /*type*/,
                                           const VkDebugUtilsMessengerCallbackDataEXT* data,
                                           void* user) {
-  if (is_loader_notice(severity, type, data)) return VK_FALSE;
+  if (is_loader_message(data)) return VK_FALSE;
   const char* level = severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning";
   std::string text = std::string("vulkan ") + level + ": " + (data->pMessage ? data->pMessage : "");
   std::fprintf(stderr, "%s\n", text.c_str());

@@ -1,7 +1,7 @@
 #pragma once
-// Messages of the validation layer (and any other debug-utils source), collected so tests can
-// require that there were none. Warnings and errors are kept and echoed to stderr; info and
-// verbose messages (e.g. the loader's) are ignored.
+// Messages of the validation layer (and of any other layer), collected so tests can require that
+// there were none. Warnings and errors are kept and echoed to stderr; info and verbose messages
+// are ignored, and so is every message of the loader (validation_log.cpp says why).
 #include <mutex>
 #include <string>
 #include <vector>

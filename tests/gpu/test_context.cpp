@@ -64,6 +64,37 @@ TEST(ContextValidation, MessengerReportsMisuse) {
   EXPECT_GE(bad.validation_log().count(), 1u);
 }
 
+// Another architecture's driver on the ICD path (Debian multiarch: mesa-vulkan-drivers:i386 or
+// :arm64 beside the native one) makes the loader report that it cannot load that library. The
+// loader skips it; it is not a validation message, and a context still comes up on the device.
+TEST(ContextValidation, AForeignArchitectureDriverIsNotAValidationMessage) {
+  const fs::path dir = fs::path(POND_TEST_TMP_DIR) / "foreign-icd";
+  fs::create_directories(dir);
+  // The ELF header of an aarch64 shared object (x86-64 hosts) or of an x86-64 one (others): the
+  // loader's dlopen refuses it as a library of another machine.
+  unsigned char elf[64] = {0x7f, 'E', 'L', 'F', 2, 1, 1};
+  elf[16] = 3;  // e_type: ET_DYN
+#if defined(__aarch64__)
+  elf[18] = 62;  // e_machine: EM_X86_64
+#else
+  elf[18] = 183;  // e_machine: EM_AARCH64
+#endif
+  elf[20] = 1;  // e_version
+  std::ofstream(dir / "libvulkan_foreign.so", std::ios::binary).write(reinterpret_cast<const char*>(elf), sizeof elf);
+  std::ofstream(dir / "foreign_icd.json")
+      << R"({"file_format_version": "1.0.0", "ICD": {"library_path": ")" << (dir / "libvulkan_foreign.so").string()
+      << R"(", "api_version": "1.3.0"}})";
+  const std::string json = (dir / "foreign_icd.json").string();
+  ::setenv("VK_ADD_DRIVER_FILES", json.c_str(), 1);
+  struct Unset {
+    ~Unset() { ::unsetenv("VK_ADD_DRIVER_FILES"); }
+  } unset;
+  const gpu::Context ctx(gpu::headless_options("", true));
+  EXPECT_FALSE(ctx.device_name().empty());
+  const auto messages = ctx.validation_log().messages();
+  EXPECT_TRUE(messages.empty()) << messages.size() << " message(s), the first: " << messages.front();
+}
+
 // Every file this process has open (/proc/self/fd) or mapped (/proc/self/maps).
 std::vector<std::string> open_and_mapped_files() {
   std::vector<std::string> files;
