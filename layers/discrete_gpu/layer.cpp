@@ -113,6 +113,7 @@ VKAPI_ATTR VkResult VKAPI_CALL create_device(VkPhysicalDevice physical, const Vk
                                              const VkAllocationCallbacks* allocator, VkDevice* device) {
   // Honest refusal: the presented device has no shaderInt64, so asking for it fails as on such a GPU.
   if (requests_hidden_feature(*info)) return VK_ERROR_FEATURE_NOT_PRESENT;
+  if (!fault_plan_ok()) return VK_ERROR_INITIALIZATION_FAILED;
   auto* link = find_link<VkLayerDeviceCreateInfo>(info->pNext, VK_STRUCTURE_TYPE_LOADER_DEVICE_CREATE_INFO);
   const InstanceDispatch inst = instance_dispatch(dispatch_key(physical));
   if (!link || !link->u.pLayerInfo || !inst.instance) return VK_ERROR_INITIALIZATION_FAILED;
@@ -126,6 +127,7 @@ VKAPI_ATTR VkResult VKAPI_CALL create_device(VkPhysicalDevice physical, const Vk
 
   const VkDevice dev = *device;
   auto state = std::make_unique<DeviceState>();
+  state->handle = dev;
   state->next = DeviceDispatch{
       .get_proc_addr = gdpa,
       .destroy_device = load<PFN_vkDestroyDevice>(gdpa, dev, "vkDestroyDevice"),
@@ -150,7 +152,11 @@ VKAPI_ATTR VkResult VKAPI_CALL create_device(VkPhysicalDevice physical, const Vk
       .wait_for_fences = load<PFN_vkWaitForFences>(gdpa, dev, "vkWaitForFences"),
       .queue_wait_idle = load<PFN_vkQueueWaitIdle>(gdpa, dev, "vkQueueWaitIdle"),
       .device_wait_idle = load<PFN_vkDeviceWaitIdle>(gdpa, dev, "vkDeviceWaitIdle"),
-      .wait_semaphores = load<PFN_vkWaitSemaphores>(gdpa, dev, "vkWaitSemaphores", "vkWaitSemaphoresKHR")};
+      .wait_semaphores = load<PFN_vkWaitSemaphores>(gdpa, dev, "vkWaitSemaphores", "vkWaitSemaphoresKHR"),
+      .get_fence_status = load<PFN_vkGetFenceStatus>(gdpa, dev, "vkGetFenceStatus"),
+      .acquire_next_image = load<PFN_vkAcquireNextImageKHR>(gdpa, dev, "vkAcquireNextImageKHR"),
+      .queue_present = load<PFN_vkQueuePresentKHR>(gdpa, dev, "vkQueuePresentKHR"),
+      .get_query_pool_results = load<PFN_vkGetQueryPoolResults>(gdpa, dev, "vkGetQueryPoolResults")};
   VkPhysicalDeviceMemoryProperties real{};
   inst.get_memory_properties(physical, &real);
   state->memory = make_memory_model(real);
@@ -224,6 +230,10 @@ const Entry kDeviceCommands[] = {
     {"vkDeviceWaitIdle", as_void(device_wait_idle)},
     {"vkWaitSemaphores", as_void(wait_semaphores)},
     {"vkWaitSemaphoresKHR", as_void(wait_semaphores)},
+    {"vkGetFenceStatus", as_void(get_fence_status)},
+    {"vkAcquireNextImageKHR", as_void(acquire_next_image)},
+    {"vkQueuePresentKHR", as_void(queue_present)},
+    {"vkGetQueryPoolResults", as_void(get_query_pool_results)},
 };
 
 template <std::size_t N>

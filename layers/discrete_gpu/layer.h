@@ -7,6 +7,7 @@
 //   properties.cpp  device type, limits, features, the denormal setting
 //   memory.cpp      the presented memory types and the non-coherent memory model
 //   counters.cpp    per device: submissions, host waits, bytes flushed and invalidated
+//   faults.cpp      faults on demand: a lost device, memory that cannot be allocated
 //
 // Only what is needed is kept: the loader's dispatch tables (immutable after creation) and, per
 // device, its memory-type map and the allocations (size, type, the current mapping). Properties
@@ -76,6 +77,10 @@ struct DeviceDispatch {
   PFN_vkQueueWaitIdle queue_wait_idle = nullptr;
   PFN_vkDeviceWaitIdle device_wait_idle = nullptr;
   PFN_vkWaitSemaphores wait_semaphores = nullptr;
+  PFN_vkGetFenceStatus get_fence_status = nullptr;
+  PFN_vkAcquireNextImageKHR acquire_next_image = nullptr;
+  PFN_vkQueuePresentKHR queue_present = nullptr;
+  PFN_vkGetQueryPoolResults get_query_pool_results = nullptr;
 };
 
 // What an application did with the device, counted for tests of how it drives a GPU: every
@@ -84,9 +89,10 @@ struct DeviceDispatch {
 // the bytes of every flushed and invalidated range (VK_WHOLE_SIZE: to the end of the mapping).
 // Written as one JSON object to $POND_DISCRETE_GPU_STATS when the device is destroyed.
 struct Counters {
-  std::atomic<std::uint64_t> submits{0}, host_waits{0}, bytes_flushed{0}, bytes_invalidated{0};
+  std::atomic<std::uint64_t> submits{0}, host_waits{0}, bytes_flushed{0}, bytes_invalidated{0}, allocations{0};
 };
-// The counters as one JSON object: {"submits": S, "host_waits": W, "bytes_flushed": F, "bytes_invalidated": I}.
+// The counters as one JSON object: {"submits": S, "host_waits": W, "bytes_flushed": F, "bytes_invalidated": I,
+// "allocations": A} (A: vkAllocateMemory calls, the points POND_DISCRETE_GPU_FAULT can fail).
 std::string counters_json(const Counters& counters);
 // Writes counters_json to the file $POND_DISCRETE_GPU_STATS names (nothing when it is unset).
 void write_counters(const Counters& counters);
@@ -118,11 +124,24 @@ struct Allocation {
 };
 
 struct DeviceState {
+  VkDevice handle = VK_NULL_HANDLE;
   DeviceDispatch next;
   MemoryModel memory;
   Counters counters;
   std::unordered_map<VkDeviceMemory, Allocation> allocations;
+  std::atomic<bool> lost{false};  // a fault made it lost (faults.cpp)
 };
+
+// The faults of $POND_DISCRETE_GPU_FAULT (faults.cpp says the syntax).
+enum class FaultKind { device_lost, out_of_device_memory, out_of_host_memory };
+// Whether the variable is well formed; if not, says what is wrong on stderr (vkCreateDevice then
+// fails with VK_ERROR_INITIALIZATION_FAILED).
+bool fault_plan_ok();
+// Counts a submission on `device`: true when it must fail with VK_ERROR_DEVICE_LOST (the device
+// was lost before, or this is the planned submission; then it waits for the real queue first).
+bool submit_fault(DeviceState& d);
+// Counts an allocation: VK_SUCCESS, or the error planned for it.
+VkResult allocation_fault();
 
 // Every instance and device this layer has created, by dispatch key, under one mutex. The layer
 // holds it while calling the next layer's memory functions: nothing below calls back up.
@@ -180,4 +199,11 @@ VKAPI_ATTR VkResult VKAPI_CALL wait_for_fences(VkDevice, std::uint32_t count, co
 VKAPI_ATTR VkResult VKAPI_CALL queue_wait_idle(VkQueue);
 VKAPI_ATTR VkResult VKAPI_CALL device_wait_idle(VkDevice);
 VKAPI_ATTR VkResult VKAPI_CALL wait_semaphores(VkDevice, const VkSemaphoreWaitInfo*, std::uint64_t timeout);
+VKAPI_ATTR VkResult VKAPI_CALL get_fence_status(VkDevice, VkFence);
+VKAPI_ATTR VkResult VKAPI_CALL acquire_next_image(VkDevice, VkSwapchainKHR, std::uint64_t timeout, VkSemaphore, VkFence,
+                                                  std::uint32_t* index);
+VKAPI_ATTR VkResult VKAPI_CALL queue_present(VkQueue, const VkPresentInfoKHR*);
+VKAPI_ATTR VkResult VKAPI_CALL get_query_pool_results(VkDevice, VkQueryPool, std::uint32_t first, std::uint32_t count,
+                                                      std::size_t size, void* data, VkDeviceSize stride,
+                                                      VkQueryResultFlags flags);
 }  // namespace pond::layer

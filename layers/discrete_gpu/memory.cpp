@@ -211,6 +211,8 @@ VKAPI_ATTR VkResult VKAPI_CALL allocate_memory(VkDevice device, const VkMemoryAl
            info->memoryTypeIndex, presented.memoryTypeCount);
     return VK_ERROR_UNKNOWN;
   }
+  ++d.counters.allocations;
+  if (const VkResult fault = allocation_fault(); fault != VK_SUCCESS) return fault;
   VkMemoryAllocateInfo real_info = *info;
   real_info.memoryTypeIndex = d.memory.real_type[info->memoryTypeIndex];
   const VkResult result = d.next.allocate_memory(device, &real_info, allocator, memory);

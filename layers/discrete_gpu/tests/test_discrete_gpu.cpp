@@ -279,7 +279,8 @@ std::string read_file(const std::string& path) {
 
 // Known calls give known counts, written when the device is destroyed: each submission call; each
 // host wait of the four kinds, and nothing for polling a fence or signalling from the host; the
-// bytes of each flushed or invalidated range, VK_WHOLE_SIZE up to the end of the mapping.
+// bytes of each flushed or invalidated range, VK_WHOLE_SIZE up to the end of the mapping; each
+// allocation.
 TEST(DiscreteGpuLayer, CountsSubmissionsHostWaitsAndBytes) {
   const std::string path = std::string(POND_TEST_XDG_RUNTIME_DIR) + "/counters.json";
   std::remove(path.c_str());
@@ -318,7 +319,8 @@ TEST(DiscreteGpuLayer, CountsSubmissionsHostWaitsAndBytes) {
   }  // ~LayerDevice: vkDeviceWaitIdle (1 wait), then vkDestroyDevice writes the file
   char expected[256];
   std::snprintf(expected, sizeof expected,
-                "{\"submits\": 3, \"host_waits\": 6, \"bytes_flushed\": %llu, \"bytes_invalidated\": %llu}\n",
+                "{\"submits\": 3, \"host_waits\": 6, \"bytes_flushed\": %llu, \"bytes_invalidated\": %llu, "
+                "\"allocations\": 1}\n",
                 static_cast<unsigned long long>(whole), static_cast<unsigned long long>(whole + 2 * kAtom));
   EXPECT_EQ(read_file(path), expected);
 }
