@@ -145,8 +145,14 @@ Context::Context(const ContextOptions& options, const WindowSurface& window)
   name(pool_, "pond command pool");
 }
 
-Context::~Context() {
-  if (*device_) device_.waitIdle();
+Context::~Context() { wait_idle_for_teardown(); }
+
+void Context::wait_idle_for_teardown() const noexcept {
+  if (!*device_) return;
+  try {
+    device_.waitIdle();
+  } catch (const vk::SystemError&) {  // lost: nothing runs any more
+  }
 }
 
 void Context::submit_and_wait(const std::function<void(const vk::raii::CommandBuffer&)>& record) const {

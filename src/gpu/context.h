@@ -69,6 +69,10 @@ class Context {
   // Validation messages so far (empty without validation).
   const ValidationLog& validation_log() const { return *log_; }
 
+  // Waits for the device to be idle before what it may still use is destroyed (destructors): a lost
+  // device has nothing left to wait for, so its error is not thrown.
+  void wait_idle_for_teardown() const noexcept;
+
   // Records commands into a fresh primary command buffer, submits it and waits for it (see also
   // Submitter below, for work submitted every frame).
   void submit_and_wait(const std::function<void(const vk::raii::CommandBuffer&)>& record) const;

@@ -153,7 +153,7 @@ BodyDrawable::BodyDrawable(const gpu::Context& ctx, const FrameLoop& loop) : imp
 
 // Frames in flight may still read the instance buffers.
 BodyDrawable::~BodyDrawable() {
-  if (impl_) impl_->ctx.device().waitIdle();
+  if (impl_) impl_->ctx.wait_idle_for_teardown();
 }
 
 void BodyDrawable::prepare(const FrameInfo& frame) { impl_->prepare(frame); }

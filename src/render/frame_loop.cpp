@@ -184,7 +184,11 @@ FrameLoop::FrameLoop(const gpu::Context& ctx, const scene::Scene& scene, const s
     : impl_(std::make_unique<Impl>(ctx, scene, session, gpu, color_format)) {}
 
 FrameLoop::~FrameLoop() {
-  if (impl_) impl_->frames.finish_all();
+  if (!impl_) return;
+  try {
+    impl_->frames.finish_all();
+  } catch (const vk::SystemError&) {  // a lost device: nothing runs any more
+  }
 }
 
 FrameStats FrameLoop::frame(const FrameTarget& target, const FrameView& view) {

@@ -279,7 +279,7 @@ TreeDrawable::TreeDrawable(const gpu::Context& ctx, const FrameLoop& loop, const
 
 // Frames in flight may still read the tree's buffers.
 TreeDrawable::~TreeDrawable() {
-  if (impl_) impl_->ctx.device().waitIdle();
+  if (impl_) impl_->ctx.wait_idle_for_teardown();
 }
 
 void TreeDrawable::prepare(const FrameInfo& frame) { impl_->prepare(frame); }

@@ -40,12 +40,7 @@ class ImGuiSession {
 // still use is destroyed.
 struct IdleBeforeTeardown {
   const gpu::Context& ctx;
-  ~IdleBeforeTeardown() {
-    try {
-      ctx.device().waitIdle();
-    } catch (...) {  // a lost device: nothing more to wait for
-    }
-  }
+  ~IdleBeforeTeardown() { ctx.wait_idle_for_teardown(); }
 };
 
 }  // namespace pond::app::demo
