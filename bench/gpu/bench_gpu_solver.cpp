@@ -77,6 +77,35 @@ void BM_GpuStep(benchmark::State& state, sim::MathMode math) {
 BENCHMARK_CAPTURE(BM_GpuStep, exact, sim::MathMode::exact)->Arg(256)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_GpuStep, fast, sim::MathMode::fast)->Arg(256)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The host's copies of the state for the CPU twin (gpu/state_snapshots.h): the same steps with a
+// copy every StateSnapshots::kSubsteps substeps (as pond runs) and with none, alternated in one
+// benchmark so both see the same load; the counters are each half's node-steps per second.
+void BM_GpuHostCopyCost(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  gpu::GpuSolver with(context(), square_pond(n, 1, sim::MathMode::exact));
+  gpu::GpuSolver without(context(), square_pond(n, 1, sim::MathMode::exact));
+  without.set_host_copy_interval(0);
+  constexpr std::int64_t kSteps = gpu::StateSnapshots::kSubsteps;
+  double t_with = 0, t_without = 0;
+  using clock = std::chrono::steady_clock;
+  for (gpu::GpuSolver* s : {&with, &without}) s->advance(8), s->finish();
+  for (auto _ : state) {
+    for (gpu::GpuSolver* s : {&with, &without}) {
+      const auto t0 = clock::now();
+      s->advance(kSteps);
+      s->finish();
+      s->host_snapshot();  // the host takes the copy, as a session does after each advance
+      (s == &with ? t_with : t_without) += std::chrono::duration<double>(clock::now() - t0).count();
+    }
+  }
+  const double node_steps = static_cast<double>(n) * n * kSteps * static_cast<double>(state.iterations());
+  state.counters["with copies node-steps/s"] = node_steps / t_with;
+  state.counters["without node-steps/s"] = node_steps / t_without;
+  state.counters["cost %"] = 100.0 * (t_with - t_without) / t_without;
+  state.SetLabel(context().device_name());
+}
+BENCHMARK(BM_GpuHostCopyCost)->Arg(256)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
+
 // 1,000 substeps of an 8x8 grid = 1,000 dispatches + barriers in one command buffer: the fixed
 // cost of a dispatch (recording, submission amortized, the driver's launch, the barrier).
 void BM_GpuDispatchOverhead(benchmark::State& state) {

@@ -27,6 +27,7 @@ class HeadlessGpuSolver final : public sim::Solver {
   sim::HostDisplacements displacements() const override { return solver_.displacements(); }
   void set_state(const sim::WaterState& state, std::int64_t steps) override { solver_.set_state(state, steps); }
   std::vector<sim::BodyState> read_bodies() const override { return solver_.read_bodies(); }
+  const sim::HostSnapshot* host_snapshot() const override { return solver_.host_snapshot(); }
   void set_body_models(std::vector<sim::BodyModel> bodies) override { solver_.set_body_models(std::move(bodies)); }
   std::string engine() const override { return solver_.engine(); }
   std::string identity() const override { return solver_.identity(); }

@@ -14,6 +14,7 @@
 #include "app/render_bridge.h"
 #include "core/errors.h"
 #include "gpu/context.h"
+#include "gpu/gpu_failure.h"
 #include "gpu/gpu_solvers.h"
 #include "render/body_drawable.h"
 #include "render/frame_loop.h"
@@ -63,16 +64,16 @@ void print_effect_costs(render::FrameLoop& loop, const render::RenderTarget& tar
   }
 }
 
-}  // namespace
-
-int run_render(const RenderOptions& o) {
-  const scene::Scene scene = scene::load_scene(o.scene);
+// The frames of `scene` on `ctx` and the PNG of the last (a Vulkan failure reaches run_render).
+int render_scene(const RenderOptions& o, const scene::Scene& scene, const gpu::Context& ctx) {
   const sim::SolverChoice solver = parse_solver(o.solver);
-  const gpu::Context ctx(gpu::ContextOptions{.device = o.device, .validation = o.validation});
-  render::check_target_size(ctx, o.width, o.height, render::RenderTarget::kFormat);
-
   gpu::GpuSolvers gpu_solvers(ctx);
-  sim::Session session(scene::session_spec(scene), solver, gpu_solvers.factory());
+  sim::SessionSpec spec = scene::session_spec(scene);
+  // Said once the picture is written: a GPU solver that could not be made (and the CPU's in its
+  // place) matters then; when the device is lost, the renderer fails too, and that is the one line.
+  std::vector<std::string> notices;
+  spec.notify = [&notices](const std::string& text) { notices.push_back(text); };
+  sim::Session session(std::move(spec), solver, gpu_solvers.factory());
   session.track_tile_bounds(true);  // the LOD descends them instead of reading every node
   render::FrameLoop loop(ctx, scene, session, &gpu_solvers, render::RenderTarget::kFormat);
   std::optional<render::TreeDrawable> trees;  // the scene's wind trees, in the water's pass
@@ -116,6 +117,7 @@ int run_render(const RenderOptions& o) {
     throw RuntimeError(std::to_string(ctx.validation_log().messages().size()) +
                        " Vulkan validation message(s), the first: " + ctx.validation_log().messages().front());
   pond::write_png(o.out, o.width, o.height, rgba);
+  for (const std::string& n : notices) std::fprintf(stderr, "pond render: %s\n", n.c_str());
 
   const sim::WaterModel& m = session.model();
   char lod_text[64] = "full mesh";
@@ -140,6 +142,16 @@ int run_render(const RenderOptions& o) {
   if (o.profile) print_effect_costs(loop, target, view, o.frames);
   std::printf("steps done %" PRId64 "\nwrote %s\n", session.steps_done(), o.out.c_str());
   return 0;
+}
+
+}  // namespace
+
+// A lost device or memory it cannot allocate ends the command with one line and nothing written.
+int run_render(const RenderOptions& o) {
+  const scene::Scene scene = scene::load_scene(o.scene);
+  const gpu::Context ctx(gpu::ContextOptions{.device = o.device, .validation = o.validation});
+  render::check_target_size(ctx, o.width, o.height, render::RenderTarget::kFormat);
+  return gpu::guard_gpu(ctx, "while rendering", [&] { return render_scene(o, scene, ctx); });
 }
 
 }  // namespace pond::app

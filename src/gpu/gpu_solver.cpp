@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "gpu/float_policy.h"
+#include "gpu/gpu_failure.h"
 
 namespace pond::gpu {
 namespace {
@@ -53,7 +54,7 @@ PerturbPush push_for(const sim::PerturbationTable& t, std::uint32_t first, std::
 
 }  // namespace
 
-GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, bool drawn)
+GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, bool drawn) try
     : ctx_(ctx),
       model_(std::move(model)),
       drawn_(drawn),
@@ -73,12 +74,15 @@ GpuSolver::GpuSolver(const Context& ctx, sim::WaterModel model, bool drawn)
   ring_ = std::make_unique<SubmissionRing>(ctx_, state_[0].mapped ? 0 : 3 * stride_ * sizeof(float),
                                            model_.bodies.size() * sizeof(sim::BodyState));
   if (!state_[0].mapped) readback_ = std::make_unique<DisplacementReadback>(ctx_, pitch_, stride_);
+  snapshots_ = std::make_unique<StateSnapshots>(ctx_, model_.rows, model_.cols, pitch_, stride_, model_.bodies.size());
   tile_grid_ = sim::TileGrid(model_.rows, model_.cols);
   set_state(sim::rest_state(model_), 0);
+} catch (const vk::SystemError&) {
+  rethrow_as_gpu_failure(ctx.device_name(), "while making the GPU solver");
 }
 
 GpuSolver::~GpuSolver() {
-  if (ring_) ctx_.queue().waitIdle();  // the renderer's frames in flight may read these buffers
+  if (ring_) ctx_.wait_idle_for_teardown();  // the renderer's frames in flight may read these buffers
 }
 
 void GpuSolver::create_buffers() {
@@ -125,15 +129,14 @@ std::int64_t GpuSolver::steps_per_submit() const {
 }
 
 void GpuSolver::advance(std::int64_t steps) {
-  if (steps <= 0) {
-    flush_splashes();
-    return;
-  }
-  while (steps > 0) {
-    const std::int64_t n = std::min(steps, steps_per_submit());
-    submit(n, drawn_);
-    steps -= n;
-  }
+  guard_gpu(ctx_, "while stepping the water", [&] {
+    if (steps <= 0) return flush_splashes();
+    while (steps > 0) {
+      const std::int64_t n = std::min(steps, steps_per_submit());
+      submit(n, drawn_);
+      steps -= n;
+    }
+  });
 }
 
 void GpuSolver::perturb(const sim::PerturbationTable& table) {
@@ -148,6 +151,7 @@ void GpuSolver::flush_splashes() const {
 
 void GpuSolver::submit(std::int64_t steps, bool publish) const {
   Submission& s = ring_->begin();
+  snapshots_->harvest(ring_->finished_serial());
   const std::uint32_t region = ring_->index_of(s);
   const vk::raii::CommandBuffer& cmd = s.cmd;
   WaterKernels::record_barrier(cmd);  // after every earlier submission's writes (uploads, copies)
@@ -155,6 +159,8 @@ void GpuSolver::submit(std::int64_t steps, bool publish) const {
   if (contact_ && steps > 0) contact_->write_schedule(step_, steps, region);
   const std::int64_t first_step = step_;
   for (std::int64_t k = 0; k < steps; ++k) record_step(cmd, region, first_step);
+  if (steps > 0 && snapshots_->due(steps * model_.substeps))  // behind the last step's barrier
+    snapshots_->record(cmd, state_[cur_], contact_ ? &contact_->bodies() : nullptr, ring_->next_serial(), step_);
   // The normals (with the tile bounds where tracked) last: of the state every dispatch left.
   if (publish && tiles_) tiles_->record(cmd, cur_, region);
   else if (publish) kernels_->record_normals(cmd, cur_);
@@ -166,7 +172,14 @@ void GpuSolver::submit(std::int64_t steps, bool publish) const {
 const Submission& GpuSolver::published() const {
   const Submission* last = ring_->last();
   if (!last || !last->published) submit(0, true);
-  return *ring_->finish_last();
+  const Submission& done = *ring_->finish_last();
+  snapshots_->harvest(ring_->finished_serial());
+  return done;
+}
+
+const sim::HostSnapshot* GpuSolver::host_snapshot() const {
+  snapshots_->harvest(ring_->finished_serial());
+  return &snapshots_->latest();
 }
 
 // The splashes queued since the last submission, from the entry's own table (made larger first if
@@ -230,7 +243,12 @@ void GpuSolver::record_copies(const vk::raii::CommandBuffer& cmd, const Submissi
 void GpuSolver::set_state(const sim::WaterState& state, std::int64_t steps_done) {
   if (state.nodes() != model_.nodes()) throw InternalError("GpuSolver::set_state: the state has the wrong node count");
   if (!contact_ && !state.bodies.empty()) throw InternalError("GpuSolver::set_state: bodies for a model without bodies");
+  guard_gpu(ctx_, "while uploading the water's state", [&] { upload_state(state, steps_done); });
+}
+
+void GpuSolver::upload_state(const sim::WaterState& state, std::int64_t steps_done) {
   ring_->finish_all();
+  snapshots_->set(state, steps_done);
   splash_entries_.clear();
   splash_pushes_.clear();
   const std::vector<float> words = to_soa_words(state, static_cast<std::size_t>(model_.rows),
@@ -263,6 +281,10 @@ Buffer GpuSolver::copy_to_host(const Buffer& src, const char* name) const {
 }
 
 sim::WaterState GpuSolver::read_state() const {
+  return guard_gpu(ctx_, "while reading the water's state back", [&] { return read_state_now(); });
+}
+
+sim::WaterState GpuSolver::read_state_now() const {
   const Buffer staging = copy_to_host(state_[cur_], "state readback");
   sim::WaterState s(model_.nodes());
   s.bodies = read_bodies();
@@ -276,7 +298,7 @@ sim::WaterState GpuSolver::read_state() const {
 }
 
 sim::HostDisplacements GpuSolver::displacements() const {
-  const Submission& s = published();
+  const Submission& s = guard_gpu(ctx_, "while waiting for the water's step", [&]() -> const Submission& { return published(); });
   if (readback_) return readback_->host(s, ring_->index_of(s));
   const float* u = static_cast<const float*>(state_[cur_].mapped);  // read in place (lavapipe)
   return {u, u + stride_, u + 2 * stride_, pitch_};
@@ -310,19 +332,21 @@ void GpuSolver::keep_on_host(std::optional<std::vector<core::GridWindow>> window
 bool GpuSolver::holds_on_host(const core::GridWindow& w) const {
   if (!readback_) return true;
   const core::GridWindow in = within(w, model_.rows, model_.cols);
-  const Submission& s = published();
+  const Submission& s = guard_gpu(ctx_, "while waiting for the water's step", [&]() -> const Submission& { return published(); });
   return in.rows == 0 || readback_->holds(s, ring_->index_of(s), in);
 }
 
 void GpuSolver::bring_to_host(std::span<const core::GridWindow> windows) const {
   if (!readback_) return;
-  const Submission& s = published();
-  readback_->bring(s, ring_->index_of(s), state_[cur_], within(windows, model_.rows, model_.cols));
+  guard_gpu(ctx_, "while reading the water's nodes back", [&] {
+    const Submission& s = published();
+    readback_->bring(s, ring_->index_of(s), state_[cur_], within(windows, model_.rows, model_.cols));
+  });
 }
 
 std::vector<sim::BodyState> GpuSolver::read_bodies() const {
   if (!contact_) return {};
-  const Submission* s = &published();
+  const Submission* s = &guard_gpu(ctx_, "while reading the bodies back", [&]() -> const Submission& { return published(); });
   if (!s->bodies_seen) s->bodies.invalidate(ctx_);
   s->bodies_seen = true;
   std::vector<sim::BodyState> out(model_.bodies.size());
@@ -331,8 +355,10 @@ std::vector<sim::BodyState> GpuSolver::read_bodies() const {
 }
 
 sim::Normals GpuSolver::normals() const {
-  published();  // the normals of the current state
-  const Buffer staging = copy_to_host(normals_, "normals readback");
+  const Buffer staging = guard_gpu(ctx_, "while reading the normals back", [&] {
+    published();  // the normals of the current state
+    return copy_to_host(normals_, "normals readback");
+  });
   sim::Normals n;
   const auto* v = static_cast<const float*>(staging.mapped);
   for (std::size_t k = 0; k < model_.nodes(); ++k) {
@@ -344,6 +370,10 @@ sim::Normals GpuSolver::normals() const {
 }
 
 void GpuSolver::track_tile_bounds(bool on) {
+  guard_gpu(ctx_, "while setting up the tile bounds", [&] { track_tiles(on); });
+}
+
+void GpuSolver::track_tiles(bool on) {
   if (on == static_cast<bool>(tiles_)) return;
   if (!on) {
     ctx_.queue().waitIdle();  // a renderer's frames in flight may read the bounds
@@ -358,14 +388,14 @@ void GpuSolver::track_tile_bounds(bool on) {
 
 std::span<const sim::TileBounds> GpuSolver::tile_bounds() const {
   if (!tiles_) return {};
-  const Submission& s = published();  // the bounds of the current state
+  const Submission& s = guard_gpu(ctx_, "while waiting for the water's step", [&]() -> const Submission& { return published(); });
   return tiles_->host_bounds(ring_->index_of(s));
 }
 
 void GpuSolver::set_body_models(std::vector<sim::BodyModel> bodies) {
   if (bodies.size() != model_.bodies.size()) throw InternalError("set_body_models: another number of bodies");
   model_.bodies = std::move(bodies);
-  if (contact_) contact_->upload_constants();
+  if (contact_) guard_gpu(ctx_, "while uploading the bodies", [&] { contact_->upload_constants(); });
 }
 
 std::string GpuSolver::identity() const {

@@ -11,6 +11,9 @@
 //    host-readable, and the bodies); displacements() and read_bodies() wait for the last one. An
 //    undrawn solver (pond simulate, benchmarks) publishes only when they ask. A splash is a dispatch in the next submission, never a round trip: those two show it
 //    once that submission is made (the next advance(), or read_state(), which submits it first).
+//  - Every so often a submission also copies the state to the host (gpu/state_snapshots.h): the
+//    copy a CPU solver goes on from when the device is lost (host_snapshot()). Vulkan's failures
+//    leave every entry point as GpuFailure (gpu/gpu_failure.h).
 //  - Exact math (model.math == exact) gives the CPU solver's bits; fast math (hardware
 //    inversesqrt, contraction allowed) is the same pipeline with a specialization constant.
 #include <cstdint>
@@ -23,6 +26,7 @@
 #include "gpu/buffer.h"
 #include "gpu/context.h"
 #include "gpu/displacement_readback.h"
+#include "gpu/state_snapshots.h"
 #include "gpu/submission_ring.h"
 #include "gpu/tile_kernels.h"
 #include "gpu/water_kernels.h"
@@ -64,7 +68,10 @@ class GpuSolver : public sim::Solver {
   bool holds_on_host(const core::GridWindow& w) const override;
   void bring_to_host(std::span<const core::GridWindow> windows) const override;
   std::vector<sim::BodyState> read_bodies() const override;
+  const sim::HostSnapshot* host_snapshot() const override;
 
+  // Substeps between the host's copies of the state (StateSnapshots; 0: none, for benchmarks).
+  void set_host_copy_interval(std::int64_t substeps) { snapshots_->set_interval(substeps); }
   // Waits until every submission finished (benchmarks time the steps, not their submission).
   void finish() const { ring_->finish_all(); }
   std::size_t stride() const { return stride_; }  // floats between the state's component arrays
@@ -95,6 +102,9 @@ class GpuSolver : public sim::Solver {
 
  private:
   void create_buffers();
+  void upload_state(const sim::WaterState& state, std::int64_t steps_done);  // set_state's work
+  sim::WaterState read_state_now() const;                                     // read_state's
+  void track_tiles(bool on);                                                  // track_tile_bounds's
   void map_state_where_host_readable();
   void upload_kinds_and_perturbations();
 
@@ -126,6 +136,7 @@ class GpuSolver : public sim::Solver {
   std::unique_ptr<TileKernels> tiles_;    // while the tile bounds are tracked: with the normals
   std::unique_ptr<SubmissionRing> ring_;
   std::unique_ptr<DisplacementReadback> readback_;  // where the state is not read in place
+  std::unique_ptr<StateSnapshots> snapshots_;
   // Mutable: the const readers submit the queued splashes first (flush_splashes()).
   mutable std::vector<PerturbEntry> splash_entries_;          // queued, node = row * pitch + col
   mutable std::vector<PerturbPush> splash_pushes_;           // one per queued splash (first: into entries)

@@ -1,5 +1,7 @@
 #include "gpu/submission_ring.h"
 
+#include <algorithm>
+
 #include "core/errors.h"
 
 namespace pond::gpu {
@@ -36,6 +38,7 @@ void SubmissionRing::finish(const Submission& s) const {
   if (ctx_.device().waitForFences(*s.done, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
     throw RuntimeError("waiting for the water's compute failed");
   s.in_flight = false;
+  finished_ = std::max(finished_, s.serial);
 }
 
 Submission& SubmissionRing::begin() {
@@ -54,6 +57,7 @@ void SubmissionRing::submit() {
   const vk::CommandBufferSubmitInfo info{.commandBuffer = *s.cmd};
   ctx_.queue().submit2(vk::SubmitInfo2{.commandBufferInfoCount = 1, .pCommandBufferInfos = &info}, *s.done);
   s.in_flight = true;
+  s.serial = next_serial_++;
   last_ = static_cast<int>(next_);
   next_ = (next_ + 1) % kSize;
 }

@@ -19,6 +19,7 @@ struct Submission {
   Buffer bodies;         // readback: the bodies' states (empty without bodies)
   Buffer splashes;       // upload: the entries of the splashes it applies (grown when needed)
   bool published = false;  // it computed the normals and made the host's copies
+  std::uint64_t serial = 0;  // its place in submission order, from 1
   mutable bool in_flight = false;
   // Its copies invalidated since it finished (each once: the host reads them several times).
   mutable bool displacements_seen = false, bodies_seen = false;
@@ -43,6 +44,10 @@ class SubmissionRing {
   const Submission* finish_last() const;
   // Every entry finished.
   void finish_all() const;
+  // The serial the next submission gets, and the newest serial known finished: a queue runs its
+  // submissions in order, so every earlier one has finished too.
+  std::uint64_t next_serial() const { return next_serial_; }
+  std::uint64_t finished_serial() const { return finished_; }
 
  private:
   void finish(const Submission& s) const;
@@ -52,6 +57,8 @@ class SubmissionRing {
   std::array<Submission, kSize> entries_;
   std::uint32_t next_ = 0;
   int last_ = -1;
+  std::uint64_t next_serial_ = 1;
+  mutable std::uint64_t finished_ = 0;
 };
 
 }  // namespace pond::gpu

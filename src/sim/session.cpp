@@ -30,9 +30,20 @@ void constrain(WaterState& s, const WaterModel& model) {
 
 }  // namespace
 
+template <class F>
+auto Session::guarded(F&& read) {
+  try {
+    return read();
+  } catch (const GpuFailure& failure) {
+    if (!choice_.gpu) throw;
+    fail_over(failure);
+    return read();
+  }
+}
+
 Session::Session(SessionSpec spec, SolverChoice choice, GpuSolverFactory gpu)
     : water_(std::move(spec.water)), wind_spec_(spec.wind), rules_(std::move(spec.rules)), choice_(choice),
-      gpu_(std::move(gpu)), wind_(spec.wind, spec.trees), sun_(spec.sun) {
+      gpu_(std::move(gpu)), wind_(spec.wind, spec.trees), sun_(spec.sun), notify_(std::move(spec.notify)) {
   if (wind_spec_.ripples) ripples_until_ = kRippleHorizonSteps;
   WaterModel model = build();
   const WaterState rest = rest_state(model);
@@ -55,36 +66,95 @@ void Session::replace_solver(WaterModel model, const WaterState& state, std::int
   if (choice_.gpu) {
     if (!gpu_) throw InternalError("a GPU solver was chosen without a factory for it");
     solver_.reset();  // one solver's buffers at a time
-    next = gpu_(model);
-  } else {
-    next = std::make_unique<CpuSolver>(std::move(model), choice_.backend, choice_.threads);
+    try {
+      next = gpu_(model);
+      next->track_tile_bounds(track_tiles_);
+      next->set_state(state, steps);
+    } catch (const GpuFailure& failure) {  // the state is the host's: the CPU takes it as it is
+      next.reset();
+      choose_cpu(failure);
+    }
   }
-  next->track_tile_bounds(track_tiles_);
-  next->set_state(state, steps);
+  if (!next) {
+    next = std::make_unique<CpuSolver>(std::move(model), choice_.backend, choice_.threads);
+    next->track_tile_bounds(track_tiles_);
+    next->set_state(state, steps);
+  }
+  if (choice_.gpu) journal_.restart(steps, next->model().bodies);
   solver_ = std::move(next);
   ++solver_generation_;
   ++state_revision_;
 }
 
+void Session::fail_over(const GpuFailure& failure) {
+  const HostSnapshot* copy = solver_->host_snapshot();
+  if (!copy) throw failure;  // nothing to go on from (a solver that cannot fail has no copy)
+  const HostSnapshot from = *copy;
+  const std::int64_t lost_at = solver_->steps_done();
+  choice_.gpu = false;
+  choice_.backend = best_backend();
+  solver_.reset();  // the failed solver's buffers go first
+  auto cpu = std::make_unique<CpuSolver>(build(), choice_.backend, choice_.threads);
+  cpu->track_tile_bounds(track_tiles_);
+  cpu->set_state(from.state, from.step);
+  journal_.replay(*cpu, from.step);
+  solver_ = std::move(cpu);
+  journal_ = SolverJournal{};
+  ++solver_generation_;
+  ++state_revision_;
+  if (notify_)
+    notify_(std::string(failure.what()) + " at step " + std::to_string(lost_at) + "; going on on the CPU (" +
+            solver_->engine() + ") from the host's copy of step " + std::to_string(from.step) +
+            (choice_.math == MathMode::exact ? ", with the same bits" : ""));
+}
+
+void Session::choose_cpu(const GpuFailure& failure) {
+  choice_.gpu = false;
+  choice_.backend = best_backend();
+  if (notify_) notify_(std::string(failure.what()) + "; going on on the CPU (" + backend_name(choice_.backend) + ")");
+}
+
+void Session::recover(const GpuFailure& failure) {
+  if (choice_.gpu) fail_over(failure);
+}
+
+void Session::trim_journal() {
+  if (!journaling()) return;
+  if (const HostSnapshot* copy = solver_->host_snapshot()) journal_.trim(copy->step);
+}
+
 void Session::advance(std::int64_t steps) {
-  if (steps <= 0) return;
+  if (steps <= 0) {
+    guarded([&] { solver_->advance(0); });  // the splashes, submitted
+    return;
+  }
   const std::int64_t end = solver_->steps_done() + steps;
   if (wind_spec_.ripples && end > ripples_until_) {
     ripples_until_ = end + kRippleHorizonSteps;
-    replace_solver(build(), solver_->read_state(), solver_->steps_done());
+    const WaterState state = guarded([&] { return solver_->read_state(); });
+    replace_solver(build(), state, solver_->steps_done());
   }
-  solver_->advance(steps);
+  if (journaling()) journal_.advance(solver_->steps_done(), steps);
+  try {
+    solver_->advance(steps);
+  } catch (const GpuFailure& failure) {
+    if (!choice_.gpu) throw;
+    fail_over(failure);  // the journal has these steps: the CPU replays them
+  }
+  trim_journal();
   ++state_revision_;
 }
 
 void Session::splash(const Perturbation& splash) {
-  solver_->perturb(tabulate(splash, solver_->model()));
+  PerturbationTable table = tabulate(splash, solver_->model());
+  if (journaling()) journal_.splash(solver_->steps_done(), table);
+  solver_->perturb(table);
   ++state_revision_;
 }
 
 void Session::set_physics(const Physics& physics) {
   if (rules_.physics) rules_.physics(physics, water_);
-  const WaterState state = solver_->read_state();
+  const WaterState state = this->state();
   const std::int64_t steps = solver_->steps_done();
   water_.physics = physics;
   replace_solver(build(), state, steps);
@@ -94,7 +164,7 @@ void Session::set_water(const WaterSpec& water) {
   if (water.grid.rows != water_.grid.rows || water.grid.cols != water_.grid.cols ||
       water.grid.spacing != water_.grid.spacing)
     throw InternalError("new constraints must keep the grid");
-  WaterState state = solver_->read_state();
+  WaterState state = this->state();
   const std::int64_t steps = solver_->steps_done();
   const Physics physics = water_.physics;
   water_ = water;
@@ -105,7 +175,7 @@ void Session::set_water(const WaterSpec& water) {
 }
 
 void Session::set_solver(SolverChoice choice) {
-  const WaterState state = solver_->read_state();
+  const WaterState state = this->state();
   const std::int64_t steps = solver_->steps_done();
   const SolverChoice previous = choice_;
   choice_ = choice;
@@ -119,7 +189,7 @@ void Session::set_solver(SolverChoice choice) {
 }
 
 void Session::add_body(const BodySpec& body) {
-  WaterState state = solver_->read_state();
+  WaterState state = this->state();
   std::vector<std::array<double, 3>> at;  // where the bodies are now, not where the scene started them
   const double h = water_.grid.spacing;
   for (const BodyState& b : state.bodies) at.push_back({b.x * h, b.y * h, b.z * h});
@@ -134,7 +204,7 @@ void Session::add_body(const BodySpec& body) {
 
 void Session::remove_body(std::size_t index) {
   if (index >= water_.bodies.size()) throw InternalError("no body " + std::to_string(index));
-  WaterState state = solver_->read_state();
+  WaterState state = this->state();
   const std::int64_t steps = solver_->steps_done();
   water_.bodies.erase(water_.bodies.begin() + static_cast<std::ptrdiff_t>(index));
   state.bodies.erase(state.bodies.begin() + static_cast<std::ptrdiff_t>(index));
@@ -145,11 +215,12 @@ void Session::remove_body(std::size_t index) {
   replace_solver(build(), state, steps);
 }
 
+// A new set of body models for the solver, journaled (the GPU solver uploads them).
 void Session::drag_body(std::size_t index, const std::array<double, 3>& target, std::int64_t steps) {
   if (index >= water_.bodies.size()) throw InternalError("no body " + std::to_string(index));
   held_.resize(water_.bodies.size());
   const double h = water_.grid.spacing;
-  const BodyState now = solver_->read_bodies()[index];
+  const BodyState now = bodies()[index];
   BodySpec& spec = water_.bodies[index];
   if (!held_[index]) held_[index] = spec;
   const std::array<double, 3> to{std::clamp(target[0], 0.0, (water_.grid.cols - 1) * h), target[1],
@@ -161,13 +232,20 @@ void Session::drag_body(std::size_t index, const std::array<double, 3>& target, 
   steps = std::max({steps, std::int64_t{1}, static_cast<std::int64_t>(std::ceil(spacings / POND_MAX_SPACINGS_PER_STEP))});
   spec.motion = BodyMotion::kinematic;
   spec.path = {PathKey{from, {now.x * h, now.y * h, now.z * h}}, PathKey{from + steps, to}};
-  solver_->set_body_models(build_bodies(water_.bodies, water_.physics, h));
+  std::vector<BodyModel> models = build_bodies(water_.bodies, water_.physics, h);
+  if (journaling()) journal_.body_models(from, models);
+  try {
+    solver_->set_body_models(std::move(models));
+  } catch (const GpuFailure& failure) {
+    if (!choice_.gpu) throw;
+    fail_over(failure);  // the journal has the new models
+  }
 }
 
 void Session::release_body(std::size_t index, const std::array<double, 3>& velocity) {
   if (!held(index)) return;
   const double h = water_.grid.spacing;
-  WaterState state = solver_->read_state();
+  WaterState state = this->state();
   BodyState& now = state.bodies[index];
   BodySpec spec = *held_[index];
   held_[index].reset();
@@ -187,9 +265,7 @@ void Session::release_body(std::size_t index, const std::array<double, 3>& veloc
     now.vx = now.vy = now.vz = 0.0f;
   }
   water_.bodies[index] = spec;
-  solver_->set_body_models(build_bodies(water_.bodies, water_.physics, h));
-  solver_->set_state(state, solver_->steps_done());
-  ++state_revision_;
+  put_state(state, solver_->steps_done(), build_bodies(water_.bodies, water_.physics, h));
 }
 
 void Session::reset() {
@@ -198,19 +274,44 @@ void Session::reset() {
     if (held_[b]) water_.bodies[b] = *held_[b];
   held_.assign(water_.bodies.size(), std::nullopt);
   if (wind_spec_.ripples) ripples_until_ = kRippleHorizonSteps;
-  replace_solver(build(), rest_state(solver_->model()), 0);
+  WaterModel model = build();
+  const WaterState rest = rest_state(model);
+  replace_solver(std::move(model), rest, 0);
 }
 
 void Session::set_state(const WaterState& state, std::int64_t steps) {
   if (state.nodes() != model().nodes())
     throw InternalError("set_state: " + std::to_string(state.nodes()) + " nodes for a grid of " +
                      std::to_string(model().nodes()));
-  solver_->set_state(state, steps);
+  put_state(state, steps, {});
+}
+
+// The same solver with new body models (unless empty) and a new state: the host holds it, so the
+// journal starts again from it.
+void Session::put_state(const WaterState& state, std::int64_t steps, std::vector<BodyModel> bodies) {
+  try {
+    if (!bodies.empty()) solver_->set_body_models(std::move(bodies));
+    solver_->set_state(state, steps);
+  } catch (const GpuFailure& failure) {
+    if (!choice_.gpu) throw;
+    choose_cpu(failure);
+    replace_solver(build(), state, steps);
+    return;
+  }
+  if (journaling()) journal_.restart(steps, solver_->model().bodies);
   ++state_revision_;
 }
 
-WaterState Session::finite_state() const {
-  WaterState state = solver_->read_state();
+WaterState Session::state() {
+  return guarded([&] { return solver_->read_state(); });
+}
+
+std::vector<BodyState> Session::bodies() {
+  return guarded([&] { return solver_->read_bodies(); });
+}
+
+WaterState Session::finite_state() {
+  WaterState state = this->state();
   if (first_blown_up_node(state) || first_blown_up_body(state)) throw_blow_up(state, model(), "");
   return state;
 }

@@ -6,6 +6,11 @@
 // steps, splashes, physics edits (checked by the rules it is given: the scene file's), new
 // constraints, bodies added, dragged and removed, a solver switch, reset, and the blow-up check.
 // No Vulkan: the GPU solver comes from a factory the front end passes in (gpu/gpu_solvers.h).
+//
+// Nothing is lost when the GPU fails (GpuFailure: its device lost, its memory short): the session
+// keeps a journal of what it did since the newest copy of the state the GPU solver left on the host
+// (sim/solver_journal.h), and goes on on a CPU solver from that copy with the same bits, saying so
+// through SessionSpec::notify. Its state can be saved and restored whole (image(), restore()).
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -14,9 +19,11 @@
 #include <string>
 #include <vector>
 
+#include "core/errors.h"
 #include "sim/model.h"
 #include "sim/rain.h"
 #include "sim/solver.h"
+#include "sim/solver_journal.h"
 #include "sim/state.h"
 #include "tree/wind.h"
 
@@ -41,6 +48,21 @@ struct SessionSpec {
   std::size_t trees = 0;                   // tree instances the wind sways (each its own phase)
   std::array<double, 3> sun{};             // toward the sun (the scene's lighting.sun)
   EditRules rules;
+  // Told once, in one line, when the session changes solver by itself (a GPU failure).
+  std::function<void(const std::string&)> notify;
+};
+
+// Everything of a session that its spec (with the edits: water(), the wind's spec and sun()) does
+// not say: the state and step count, the wind's and the rain's state, what was already reported.
+// Session::restore() on a session made from the same spec continues exactly where image() left.
+struct SessionImage {
+  WaterSpec water;   // water() as saved: a held body let go where it is, at rest
+  WaterState state;  // grid units, with the bodies
+  std::int64_t steps = 0;
+  std::int64_t ripples_until = 0;
+  std::uint64_t clamp_reported = 0;
+  Rain::Image rain;
+  tree::Wind::Image wind;
 };
 
 class Session {
@@ -72,8 +94,10 @@ class Session {
   void set_water(const WaterSpec& water);
   void set_solver(SolverChoice choice);  // the state and the step count carry over
 
-  // The bodies (grid units). Their specs are water().bodies, with the edits below.
+  // The bodies (grid units). Their specs are water().bodies, with the edits below. The non-const
+  // overloads here and below go on on the CPU when the GPU fails while they read.
   std::vector<BodyState> bodies() const { return solver_->read_bodies(); }
+  std::vector<BodyState> bodies();
   // Adds a body where its spec puts it (InputError from the rules: a radius below the grid
   // spacing, a position off the grid, too many bodies, ...). The water carries over.
   void add_body(const BodySpec& body);
@@ -93,7 +117,7 @@ class Session {
   void set_state(const WaterState& state, std::int64_t steps);
   // The state after the blow-up check (the CPU solver stops at the step it blows up, the GPU
   // solver does not stop to look): InputError naming the first node whose velocity is not finite.
-  WaterState finite_state() const;
+  WaterState finite_state();
 
   // The trees' wind: by default its clock is the simulated time, moved by catch_up_wind(); the
   // demo moves it in real time with advance_wind(). The controls change the user's wind.
@@ -112,6 +136,18 @@ class Session {
   std::int64_t steps_done() const { return solver_->steps_done(); }
   double simulated_seconds() const { return static_cast<double>(steps_done()) * water_.physics.dt; }
   WaterState state() const { return solver_->read_state(); }
+  WaterState state();
+  // After a GPU failure elsewhere (the renderer's: the device is lost for everyone), the session
+  // goes on on the CPU from its journal, if the GPU solver did not already.
+  void recover(const GpuFailure& failure);
+
+  // The spec's part that restore() cannot take: the water with its edits (water()), the wind's
+  // spec as the scene gave it (ripples_spec(), which the ripples follow) and the sun.
+  const tree::WindSpec& ripples_spec() const { return wind_spec_; }
+  // Everything else, with the water (a body held by drag_body() is saved let go, at rest).
+  SessionImage image();
+  // Takes an image of a session made from the same spec (InputError naming what does not fit).
+  void restore(const SessionImage& image);
   const Solver& solver() const { return *solver_; }
   // Whether every solver of the session keeps its tile bounds (solver.h), for a renderer's LOD.
   void track_tile_bounds(bool on) {
@@ -125,8 +161,21 @@ class Session {
 
  private:
   WaterModel build() const;
-  // `model` (from build()) with `state` at `steps`; the solver the choice says.
+  // `model` (from build()) with `state` at `steps`; the solver the choice says (the CPU's when the
+  // GPU's cannot be made: the failure is told).
   void replace_solver(WaterModel model, const WaterState& state, std::int64_t steps);
+  // The solver's state replaced (and its bodies' models, unless empty), the GPU's failure survived.
+  void put_state(const WaterState& state, std::int64_t steps, std::vector<BodyModel> bodies);
+  // The CPU's widest backend chosen after `failure`, and told.
+  void choose_cpu(const GpuFailure& failure);
+  // After `failure` of the GPU solver: a CPU solver from its host copy and the journal.
+  void fail_over(const GpuFailure& failure);
+  // Calls `read` on the solver; on a GPU failure, fails over and calls it again.
+  template <class F>
+  auto guarded(F&& read);
+  // Keeps the journal short: forgets what the solver's host copy already holds.
+  void trim_journal();
+  bool journaling() const { return choice_.gpu; }
 
   WaterSpec water_;
   tree::WindSpec wind_spec_;  // the scene's, for the ripples (a pure function of it and the step)
@@ -141,6 +190,8 @@ class Session {
   tree::Wind wind_;
   std::array<double, 3> sun_;
   Rain rain_;
+  std::function<void(const std::string&)> notify_;
+  SolverJournal journal_;  // while the GPU solves
   std::uint64_t solver_generation_ = 0, state_revision_ = 0;
 };
 

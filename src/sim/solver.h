@@ -28,6 +28,12 @@ struct HostDisplacements {
   std::size_t pitch = 0;
 };
 
+// A state the host holds a copy of, `step` steps done (sim/solver_journal.h).
+struct HostSnapshot {
+  WaterState state;
+  std::int64_t step = 0;
+};
+
 class Solver {
  public:
   virtual ~Solver() = default;
@@ -75,6 +81,10 @@ class Solver {
   // Those bounds while tracked, valid as displacements() is; empty when not tracked or where the
   // solver keeps none.
   virtual std::span<const TileBounds> tile_bounds() const { return {}; }
+  // The newest copy of this solver's state that the host holds, for a solver that can fail (the GPU
+  // solver: GpuFailure): a CPU solver can go on from it (sim/solver_journal.h). Null for a solver
+  // that cannot fail (the CPU solver: its state is the host's).
+  virtual const HostSnapshot* host_snapshot() const { return nullptr; }
   // What runs the steps, for messages: "avx2 x 2 threads", "gpu".
   virtual std::string engine() const = 0;
   // For a solver whose bit-identity with the CPU reference depends on the device: one line saying

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <numbers>
+#include <string>
+
+#include "core/errors.h"
 
 namespace pond::tree {
 
@@ -32,6 +35,17 @@ void Wind::set_strength(double strength) {
   const double s = std::clamp(strength, 0.0, static_cast<double>(kMaxWindStrength));
   user_.strength = static_cast<float>(s);
   spec_.strength = s;
+}
+
+void Wind::restore(const Image& image) {
+  if (image.states.size() != states_.size())
+    throw InternalError("Wind::restore: " + std::to_string(image.states.size()) + " instances for " +
+                        std::to_string(states_.size()));
+  user_ = image.user;
+  spec_.strength = image.strength;
+  spec_.direction_deg = image.direction_deg;
+  time_ = image.time;
+  states_ = image.states;
 }
 
 TreeWindFrame Wind::frame(std::size_t k, BendMode mode) const {

@@ -34,6 +34,18 @@ class Wind {
   TreeWindFrame frame(std::size_t k, BendMode mode) const;
   double time() const { return time_; }    // seconds advanced so far
 
+  // Everything that moved since construction from its spec (for a checkpoint): the user's wind
+  // with its edits, the clock and each instance's state. restore() takes it back on a Wind made
+  // from the same spec and instance count (InternalError otherwise).
+  struct Image {
+    UserWind user;
+    double strength = 0.0, direction_deg = 0.0;  // the spec's edited values
+    double time = 0.0;
+    std::vector<WindState> states;
+  };
+  Image image() const { return {user_, spec_.strength, spec_.direction_deg, time_, states_}; }
+  void restore(const Image& image);
+
  private:
   WindSpec spec_;
   UserWind user_;
