@@ -3,7 +3,7 @@
 # ASan + UBSan, CPU-only: the targets never reach Vulkan) and runs each on its committed seed corpus
 # for a bounded time.
 #
-#   scripts/fuzz.sh [TARGET...]      TARGET: scene npy cli (default: all three)
+#   scripts/fuzz.sh [TARGET...]      TARGET: scene npy cli checkpoint (default: all four)
 #   FUZZ_SECONDS=60                  time per target (default 60)
 #   FUZZ_JOBS=$(nproc)               build jobs
 #
@@ -18,7 +18,7 @@ seconds=${FUZZ_SECONDS:-60}
 build=build-sanitize
 jobs=${FUZZ_JOBS:-$(nproc)}
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(scene npy cli)
+[ ${#targets[@]} -gt 0 ] || targets=(scene npy cli checkpoint)
 
 cmake --preset sanitize > /dev/null
 cmake --build --preset sanitize -j "$jobs" --target "${targets[@]/#/fuzz_}"

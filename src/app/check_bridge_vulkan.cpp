@@ -8,10 +8,11 @@
 
 #include "app/check_bridge.h"
 #include "app/check_cases.h"
-#include "app/interrupt.h"
+#include "core/interrupt.h"
 #include "app/version.h"
 #include "gpu/context.h"
 #include "gpu/float_policy.h"
+#include "gpu/gpu_failure.h"
 #include "gpu/headless.h"
 #include "gpu/parity_check.h"
 #include "scene/scene.h"
@@ -40,11 +41,8 @@ void print_device(const gpu::Context& ctx) {
   std::printf("%s\n", gpu::identity_line(ctx).c_str());
 }
 
-}  // namespace
-
-int run_check(const CheckOptions& o) {
-  const InterruptScope interrupt_scope;
-  const gpu::Context ctx(gpu::headless_options(o.device, false));
+// The cases on `ctx`, a table line each (a Vulkan failure reaches run_check).
+int check_cases_on(const CheckOptions& o, const gpu::Context& ctx) {
   std::printf("%s\n", version_line().c_str());  // first, so a report that is passed on names its build
   std::printf("pond check: the GPU's exact math against the CPU reference, bit for bit, on %s\n\n",
               ctx.device_name().c_str());
@@ -72,6 +70,15 @@ int run_check(const CheckOptions& o) {
   }
   std::printf("%d of %zu cases differ from the CPU\n", differing, total);
   return 1;
+}
+
+}  // namespace
+
+// A lost device or memory it cannot allocate ends the check with one line.
+int run_check(const CheckOptions& o) {
+  const InterruptScope interrupt_scope;
+  const gpu::Context ctx(gpu::headless_options(o.device, false));
+  return gpu::guard_gpu(ctx, "during pond check", [&] { return check_cases_on(o, ctx); });
 }
 
 }  // namespace pond::app

@@ -1,16 +1,21 @@
-// pond simulate: runs the water model headless and writes the contract's STATE.npy.
+// pond simulate: runs the water model headless and writes the contract's STATE.npy; with
+// --checkpoint it saves the run (scene/checkpoint.h) on the way, at the end and when interrupted,
+// and --resume goes on from such a file with the bits of a run that never stopped.
+#include <algorithm>
 #include <chrono>
 #include <cinttypes>
 #include <cstdio>
+#include <functional>
 #include <unistd.h>
 
 #include "app/cli_parse.h"
 #include "app/commands.h"
 #include "app/gpu_bridge.h"
-#include "app/interrupt.h"
+#include "core/interrupt.h"
 #include "core/errors.h"
 #include "core/npy.h"
 #include "core/output_file.h"
+#include "scene/checkpoint.h"
 #include "scene/scene.h"
 #include "scene/session_spec.h"
 #include "sim/diagnostics.h"
@@ -20,26 +25,35 @@ namespace pond::app {
 namespace {
 
 struct SimulateOptions {
-  std::string scene, out, bodies_out, solver = "auto", math = "exact", device;
-  std::int64_t steps = -1;
+  std::string scene, out, bodies_out, solver = "auto", math = "exact", device, checkpoint, resume;
+  std::int64_t steps = -1, checkpoint_every = 0;
   int threads = 0;
 };
 
-// Advances the session, drawing a progress bar on a terminal once the run passes one second, and
-// stops between chunks when SIGINT or SIGTERM arrived (app/interrupt.h).
-void advance_with_progress(sim::Session& session, std::int64_t steps) {
+// Advances the session by `steps`, drawing a progress bar on a terminal once the run passes one
+// second, and stops between chunks when SIGINT or SIGTERM arrived (core/interrupt.h). With `every`
+// > 0, calls `at_boundary` whenever the session's step count reaches a multiple of it. The chunks
+// double from one step up to kChunkNodeSteps node-steps, whatever the timing, so a run makes the
+// same calls every time (and a GPU the same submissions: tests/faults fails each of them).
+constexpr double kChunkNodeSteps = 1 << 24;
+
+void advance_with_progress(sim::Session& session, std::int64_t steps, std::int64_t every,
+                           const std::function<void()>& at_boundary) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
   const bool tty = ::isatty(2);
+  const sim::WaterModel& m = session.model();
+  const auto largest = std::max<std::int64_t>(
+      1, static_cast<std::int64_t>(kChunkNodeSteps / (static_cast<double>(m.nodes()) * m.substeps)));
   std::int64_t done = 0, chunk = 1;
   bool drawn = false;
   while (done < steps) {
-    const std::int64_t n = std::min(chunk, steps - done);
-    const auto t0 = clock::now();
+    std::int64_t n = std::min(chunk, steps - done);
+    if (every > 0) n = std::min(n, every - session.steps_done() % every);  // stop on the boundary
     session.advance(n);
     done += n;
-    const double chunk_s = std::chrono::duration<double>(clock::now() - t0).count();
-    if (chunk_s < 0.05) chunk *= 2;  // keep checks about 20 per second
+    chunk = std::min(2 * chunk, largest);
+    if (every > 0 && session.steps_done() % every == 0) at_boundary();
     if (g_interrupt_signal) {
       if (drawn) std::fprintf(stderr, "\r%*s\r", 80, "");
       throw_if_interrupted("after step " + std::to_string(done) + " of " + std::to_string(steps));
@@ -55,31 +69,75 @@ void advance_with_progress(sim::Session& session, std::int64_t steps) {
   if (drawn) std::fprintf(stderr, "\r%*s\r", 80, "");
 }
 
+// --out, --bodies-out and --checkpoint: each writable, no two naming one file (--resume may be the
+// --checkpoint: a run that saves over the file it came from).
+void check_outputs(const SimulateOptions& o) {
+  check_output_path(o.out);
+  const std::pair<const std::string*, const char*> others[] = {{&o.bodies_out, "--bodies-out"},
+                                                               {&o.checkpoint, "--checkpoint"}};
+  for (const auto& [path, flag] : others) {
+    if (path->empty()) continue;
+    try {
+      check_output_path(*path);
+    } catch (const InputError& e) {
+      throw InputError(std::string(flag) + ": " + e.what());
+    }
+    if (same_file(*path, o.out)) throw InputError(std::string(flag) + " must differ from --out (" + o.out + ")");
+  }
+  if (!o.bodies_out.empty() && !o.checkpoint.empty() && same_file(o.bodies_out, o.checkpoint))
+    throw InputError("--checkpoint must differ from --bodies-out (" + o.bodies_out + ")");
+  if (o.checkpoint_every > 0 && o.checkpoint.empty()) throw InputError("--checkpoint-every needs --checkpoint FILE");
+  if (!o.resume.empty() && !o.scene.empty())
+    throw InputError("--scene cannot be given with --resume: the scene is in the checkpoint");
+}
+
 int run_simulate(const SimulateOptions& o) {
   const sim::MathMode math = o.math == "fast" ? sim::MathMode::fast : sim::MathMode::exact;
-  check_output_path(o.out);
-  if (!o.bodies_out.empty()) {
-    try {
-      check_output_path(o.bodies_out);
-    } catch (const InputError& e) {
-      throw InputError(std::string("--bodies-out: ") + e.what());
-    }
-    if (o.bodies_out == o.out) throw InputError("--bodies-out must differ from --out (" + o.out + ")");
+  check_outputs(o);
+  const InterruptScope interrupt_scope;  // SIGINT/SIGTERM stop the run (a checkpoint saves it first)
+  auto notify = [](const std::string& text) { std::fprintf(stderr, "pond simulate: %s\n", text.c_str()); };
+  const sim::SolverChoice choice = parse_solver(o.solver, math, o.threads);
+  const sim::GpuSolverFactory gpu = headless_gpu_solvers(GpuRunOptions{o.device, false});
+  scene::Scene scene;
+  std::unique_ptr<sim::Session> session;
+  if (!o.resume.empty()) {
+    const scene::Checkpoint checkpoint = scene::read_checkpoint(o.resume);
+    scene = checkpoint.scene;
+    session = scene::resume_session(checkpoint, choice, gpu, notify);
+  } else {
+    scene = scene::load_scene(o.scene);
+    sim::SessionSpec spec = scene::session_spec(scene);
+    spec.notify = notify;
+    session = std::make_unique<sim::Session>(std::move(spec), choice, gpu);
   }
-  const InterruptScope interrupt_scope;  // SIGINT/SIGTERM stop the run before anything is written
-  sim::Session session(scene::session_spec(scene::load_scene(o.scene)), parse_solver(o.solver, math, o.threads),
-                       headless_gpu_solvers(GpuRunOptions{o.device, false}));
+  const std::int64_t first = session->steps_done(), last = first + o.steps;
+  auto save = [&] {
+    if (o.checkpoint.empty()) return;
+    scene::write_checkpoint(o.checkpoint, scene, *session, session->image());
+  };
 
   const auto t0 = std::chrono::steady_clock::now();
-  advance_with_progress(session, o.steps);
-  const sim::WaterState state = session.finite_state();
-  if (const std::string clamped = session.clamp_notice(state.bodies); !clamped.empty())
+  try {
+    advance_with_progress(*session, o.steps, o.checkpoint_every, save);
+  } catch (const Interrupted& e) {
+    if (o.checkpoint.empty()) throw;
+    hold_interrupts();  // the checkpoint is written whole, whatever signal comes next
+    save();
+    const std::int64_t at = session->steps_done();
+    throw Interrupted(e.signal, std::string("interrupted by ") + signal_name(e.signal) + " at step " +
+                                    std::to_string(at) + " of " + std::to_string(last) + "; wrote " + o.checkpoint +
+                                    " (step " + std::to_string(at) + "); go on with: pond simulate --resume " +
+                                    o.checkpoint + " --steps " + std::to_string(last - at) + " --out " + o.out);
+  }
+  const sim::WaterState state = session->finite_state();
+  if (const std::string clamped = session->clamp_notice(state.bodies); !clamped.empty())
     std::fprintf(stderr, "pond simulate: %s\n", clamped.c_str());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const sim::WaterModel& model = session.model();
-  const std::string engine = session.solver().engine();
+  const sim::WaterModel& model = session->model();
+  const std::string engine = session->solver().engine();
 
   throw_if_interrupted("after the last step");
+  save();
   const std::vector<float> world = sim::to_world_interleaved(state, model);
   const std::size_t shape[3] = {static_cast<std::size_t>(model.rows),
                                 static_cast<std::size_t>(model.cols), 6};
@@ -95,12 +153,14 @@ int run_simulate(const SimulateOptions& o) {
   std::printf("simulated %" PRId64 " steps (%d substep%s each) of a %d x %d grid on %s, %s math\n",
               o.steps, model.substeps, model.substeps == 1 ? "" : "s", model.rows, model.cols,
               engine.c_str(), o.math.c_str());
+  if (first > 0) std::printf("resumed at step %" PRId64 " from %s, now at step %" PRId64 "\n", first, o.resume.c_str(), last);
   std::printf("time %.3f s, %.1f M node-steps/s\n", seconds,
               seconds > 0 ? node_steps / seconds * 1e-6 : 0.0);
   std::printf("energy %.6g (kinetic %.6g, spring %.6g), max displacement %.6g\n", d.total(),
               d.kinetic, d.spring, d.max_displacement);
   std::printf("state hash %016" PRIx64 "\n", sim::state_hash(world));
-  if (const std::string identity = session.solver().identity(); !identity.empty()) std::printf("%s\n", identity.c_str());
+  if (const std::string identity = session->solver().identity(); !identity.empty()) std::printf("%s\n", identity.c_str());
+  if (!o.checkpoint.empty()) std::printf("wrote %s (checkpoint at step %" PRId64 ")\n", o.checkpoint.c_str(), last);
   std::printf("wrote %s\n", o.out.c_str());
   if (!o.bodies_out.empty()) std::printf("wrote %s (%zu bodies)\n", o.bodies_out.c_str(), state.bodies.size());
   return 0;
@@ -112,7 +172,7 @@ Command add_simulate_command(CLI::App& app) {
   auto o = std::make_shared<SimulateOptions>();
   CLI::App* sub = app.add_subcommand("simulate", "Run the water model headless and write STATE.npy");
   sub->add_option("--scene", o->scene, "Scene JSON file (default: the embedded scene)");
-  sub->add_option("--steps", o->steps, "Number of time steps")->required()->check(CLI::Range(
+  sub->add_option("--steps", o->steps, "Number of time steps (with --resume: more steps)")->required()->check(CLI::Range(
       std::int64_t{0}, std::int64_t{1} << 40));
   sub->add_option("--solver", o->solver, "Solver backend (default: the widest the CPU has)")
       ->check(CLI::IsMember({"auto", "scalar", "sse", "avx2", "avx512", "gpu"}));
@@ -124,6 +184,11 @@ Command add_simulate_command(CLI::App& app) {
   sub->add_option("--out", o->out, "Output STATE.npy: float32 (rows, cols, 6)")->required();
   sub->add_option("--bodies-out", o->bodies_out,
                   "Output BODIES.npy: float32 (bodies, 6) = x, y, z, vx, vy, vz after the last step");
+  sub->add_option("--checkpoint", o->checkpoint,
+                  "Save the run to FILE at the end, when interrupted, and with --checkpoint-every on the way");
+  sub->add_option("--checkpoint-every", o->checkpoint_every, "Save the checkpoint every N steps too")
+      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 40));
+  sub->add_option("--resume", o->resume, "Go on from a checkpoint FILE for --steps more steps (its scene: no --scene)");
   return {sub, [o] { return run_simulate(*o); }};
 }
 

@@ -1,22 +1,24 @@
 // pond: parses the command line and dispatches to one subcommand. Errors are exceptions caught here
 // once: bad input (InputError, CLI11 parse errors) exits 2, run-time failures and internal errors
-// (core/errors.h) exit 1, each with one line on stderr; a command stopped by SIGINT or SIGTERM exits 128 + the signal (app/interrupt.h).
+// (core/errors.h) exit 1, each with one line on stderr; a command stopped by a signal exits 128 +
+// the signal (core/interrupt.h).
 #include <cstdio>
 #include <exception>
 #include <new>
 #include <string>
 
 #include "app/command_line.h"
-#include "app/interrupt.h"
+#include "core/interrupt.h"
 #include "core/errors.h"
 
 int main(int argc, char** argv) {
+  pond::install_signal_handling();
   try {
     pond::app::CommandLine command_line;
     const pond::app::CommandLine::Parsed parsed = command_line.parse(argc, argv);
     if (!parsed.command) return parsed.exit_code;
     return parsed.command->run();
-  } catch (const pond::app::Interrupted& e) {  // SIGINT/SIGTERM: 128 + the signal, as a shell reports it
+  } catch (const pond::Interrupted& e) {  // SIGINT/SIGTERM: 128 + the signal, as a shell reports it
     std::fprintf(stderr, "pond: %s\n", e.what());
     return 128 + e.signal;
   } catch (const pond::InputError& e) {

@@ -4,14 +4,17 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
-#include <fstream>
-#include <sstream>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "core/errors.h"
+#include "core/interrupt.h"
 
 namespace pond {
 namespace fs = std::filesystem;
+
+// What a file that is not a regular one (a FIFO, a device) may give before it is cut off.
+constexpr std::size_t kMaxStreamBytes = std::size_t{1} << 30;
 
 void check_output_path(const fs::path& path) {
   if (path.empty()) throw InputError("output path is empty");
@@ -64,26 +67,70 @@ void write_file_atomic(const fs::path& path, std::span<const std::byte> bytes) {
   // The temporary name carries the pid so that two pond processes never share one.
   fs::path tmp = path;
   tmp += ".tmp." + std::to_string(::getpid());
+  set_temporary_file(tmp.c_str());  // a signal that ends pond now removes it
   if (int err = write_all(tmp, bytes)) {
     std::remove(tmp.c_str());
+    set_temporary_file(nullptr);
     throw RuntimeError("cannot write '" + path.string() + "': " + std::strerror(err));
   }
   fs::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw RuntimeError("cannot write '" + path.string() + "': " + ec.message());
-  }
+  if (ec) std::remove(tmp.c_str());
+  set_temporary_file(nullptr);
+  if (ec) throw RuntimeError("cannot write '" + path.string() + "': " + ec.message());
+  count_file_written();
+}
+
+bool same_file(const fs::path& a, const fs::path& b) {
+  std::error_code ec;
+  if (fs::exists(a, ec) && fs::exists(b, ec)) return fs::equivalent(a, b, ec);
+  auto where = [&](const fs::path& p) {
+    const fs::path folder = p.parent_path().empty() ? fs::path(".") : p.parent_path();
+    return fs::weakly_canonical(folder, ec) / p.filename();
+  };
+  return where(a) == where(b);
 }
 
 std::string read_file(const fs::path& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError("file '" + path.string() + "' does not exist");
   if (fs::is_directory(path, ec)) throw InputError("'" + path.string() + "' is a folder, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot read '" + path.string() + "'");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return std::move(s).str();
+  // open() and read() by hand: a FIFO without a writer blocks in open(), and a signal while a
+  // command polls (core/interrupt.h) interrupts either; a device that never ends is cut off.
+  int fd = -1;
+  while ((fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC)) < 0 && errno == EINTR)
+    throw_if_interrupted("while opening '" + path.string() + "'");
+  if (fd < 0) throw InputError("cannot read '" + path.string() + "': " + std::strerror(errno));
+  struct stat st {};
+  const bool regular = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+  std::string out;
+  if (regular) out.reserve(static_cast<std::size_t>(st.st_size));
+  char chunk[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(fd, chunk, sizeof chunk);
+    if (n < 0 && errno == EINTR) {
+      try {
+        throw_if_interrupted("while reading '" + path.string() + "'");
+      } catch (...) {
+        ::close(fd);
+        throw;
+      }
+      continue;
+    }
+    if (n < 0) {
+      const int err = errno;
+      ::close(fd);
+      throw InputError("cannot read '" + path.string() + "': " + std::strerror(err));
+    }
+    if (n == 0) break;
+    out.append(chunk, static_cast<std::size_t>(n));
+    if (!regular && out.size() > kMaxStreamBytes) {
+      ::close(fd);
+      throw InputError("'" + path.string() + "' is not a regular file and gave more than " +
+                       std::to_string(kMaxStreamBytes >> 20) + " MiB without ending");
+    }
+  }
+  ::close(fd);
+  return out;
 }
 
 }  // namespace pond

@@ -19,4 +19,8 @@ void write_file_atomic(const std::filesystem::path& path, std::span<const std::b
 
 std::string read_file(const std::filesystem::path& path);  // InputError when missing or unreadable
 
+// Whether two output paths name one file: the same file where both exist, else the same name in
+// the same folder ("./a.npy" and "a.npy", a link to the folder and the folder).
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
+
 }  // namespace pond

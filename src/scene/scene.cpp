@@ -224,7 +224,7 @@ void parse_wind(JsonFields f, WindSpec& w) {
 }
 
 // "bodies": each checked against the water (body_problem), then against each other.
-void parse_bodies(JsonFields& f, Scene& s, const std::string& source) {
+void parse_bodies(JsonFields& f, Scene& s, const std::string& source, bool check_overlaps) {
   const auto& bs = f.array("bodies");
   if (bs.size() > kMaxBodies) f.fail("bodies", "holds more than " + std::to_string(kMaxBodies) + " bodies");
   if (bs.empty()) return;
@@ -236,6 +236,7 @@ void parse_bodies(JsonFields& f, Scene& s, const std::string& source) {
     if (const std::optional<Problem> p = body_problem(s.bodies.back(), s, kinds)) body.fail(p->key.c_str(), p->what);
     starts.push_back(start_position(s.bodies.back()));
   }
+  if (!check_overlaps) return;
   if (const std::optional<Overlap> o = first_overlap(s.bodies, starts)) {
     const bool floating = s.bodies[o->index].motion == sim::BodyMotion::floating;
     JsonFields(bs[o->index], "bodies[" + std::to_string(o->index) + "]", source)
@@ -290,7 +291,7 @@ void check_sun(const std::array<double, 3>& toward_sun) {
 
 std::string_view default_scene_json() { return kDefaultSceneJson; }
 
-Scene parse_scene(std::string_view json_text, const std::string& source) {
+Scene parse_scene(std::string_view json_text, const std::string& source, ParseOptions options) {
   nlohmann::json root;
   try {
     root = nlohmann::json::parse(json_text);
@@ -317,7 +318,7 @@ Scene parse_scene(std::string_view json_text, const std::string& source) {
         JsonFields(ps[i], "perturbations[" + std::to_string(i) + "]", source), s.grid));
   const int basin_given = parse_basin(JsonFields(f.object("basin"), "basin", source), s.basin);
   parse_view(JsonFields(f.object("view"), "view", source), s.view, s.basin, basin_given);
-  parse_bodies(f, s, source);
+  parse_bodies(f, s, source, options.body_overlaps);
   if (f.has("camera")) s.camera = parse_camera(JsonFields(f.object("camera"), "camera", source));
   parse_lighting(JsonFields(f.object("lighting"), "lighting", source), s.lighting);
   if (f.has("tree")) s.tree = parse_tree(JsonFields(f.object("tree"), "tree", source), s);

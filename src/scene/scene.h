@@ -21,10 +21,16 @@ struct Scene : sim::WaterSpec {
   view::LightingSpec lighting;
   std::optional<tree::TreeSpec> tree;
   tree::WindSpec wind;
+  bool operator==(const Scene&) const = default;
 };
 
-// Parses and validates; `source` names the file in messages. Throws InputError.
-Scene parse_scene(std::string_view json_text, const std::string& source);
+// Parses and validates; `source` names the file in messages. Throws InputError. A checkpoint's
+// scene skips one check: its bodies' start positions may overlap, as bodies added in the demo may
+// start where others started (each was checked against the bodies where they were then).
+struct ParseOptions {
+  bool body_overlaps = true;
+};
+Scene parse_scene(std::string_view json_text, const std::string& source, ParseOptions options = {});
 Scene load_scene(const std::string& path);  // "" = the embedded default scene
 std::string_view default_scene_json();
 

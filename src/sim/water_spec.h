@@ -15,6 +15,7 @@ struct GridSpec {
   int rows = 50;
   int cols = 50;
   double spacing = 1.0;  // h
+  bool operator==(const GridSpec&) const = default;
 };
 
 // Table 1 of the paper, plus substeps (each step of dt is integrated as `substeps` steps of
@@ -29,6 +30,7 @@ struct Physics {
   double gravity = 0.05;  // world units / time^2, on the floating bodies only (not the membrane)
   double water_density = 1.0;  // mass per unit volume: a floating body's density is relative to it
   double body_drag = 0.05;     // C of the bodies' linear drag, rho_w C A v (world units / time)
+  bool operator==(const Physics&) const = default;
 };
 
 // The solid the water lies in (world units), for the picture and for the bodies alike: a flat
@@ -37,12 +39,14 @@ struct Physics {
 struct BasinSpec {
   double floor_depth = 3.0;
   double land_height = 1.0;
+  bool operator==(const BasinSpec&) const = default;
 };
 
 struct ConstraintRect {
   NodeKind kind = NodeKind::fixed;  // fixed or vertical
   int row0 = 0, row1 = 0;           // inclusive
   int col0 = 0, col1 = 0;           // inclusive
+  bool operator==(const ConstraintRect&) const = default;
 };
 
 struct Perturbation {
@@ -52,6 +56,7 @@ struct Perturbation {
   double amplitude = 1.0;
   PerturbTarget target = PerturbTarget::velocity;
   PerturbMode mode = PerturbMode::add;
+  bool operator==(const Perturbation&) const = default;
 };
 
 // A body in the water (world units; node (i, j) rests at (j h, 0, i h), y up). Kinematic: follows
@@ -61,6 +66,7 @@ enum class BodyMotion { kinematic, floating };
 struct PathKey {
   std::int64_t step = 0;  // the position at the start of this step; piecewise linear between keys
   std::array<double, 3> position{};
+  bool operator==(const PathKey&) const = default;
 };
 struct BodySpec {
   BodyShape shape = BodyShape::sphere;
@@ -71,6 +77,7 @@ struct BodySpec {
   std::array<double, 3> position{};       // floating: at step 0
   std::array<double, 3> velocity{};       // floating: at step 0
   std::vector<PathKey> path;              // kinematic: steps strictly increasing, held after the last
+  bool operator==(const BodySpec&) const = default;
 };
 
 struct WaterSpec {
@@ -81,6 +88,7 @@ struct WaterSpec {
   std::vector<ConstraintRect> constraints;
   std::vector<Perturbation> perturbations;
   std::vector<BodySpec> bodies;
+  bool operator==(const WaterSpec&) const = default;
 };
 
 }  // namespace pond::sim

@@ -20,6 +20,7 @@ struct TreeSpec {
   TreeBend bend = TreeBend::article;
   TreeDraw draw = TreeDraw::tubes;
   bool leaves = true;             // small leaves at the thinnest twigs' tips
+  bool operator==(const TreeSpec&) const = default;
 };
 
 // "wind": the user wind W the trees bend in (the demo's keys 1-9 and right drag); meaningful
@@ -29,6 +30,7 @@ struct WindSpec {
   double direction_deg = 0.0;  // in the xz plane, from +x toward +z (world)
   std::uint64_t seed = 1;      // the gust noise table
   bool ripples = false;        // gusts also drop small deterministic ripples on the water
+  bool operator==(const WindSpec&) const = default;
 };
 
 }  // namespace pond::tree

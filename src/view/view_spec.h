@@ -12,6 +12,7 @@ struct CameraSpec {
   std::array<double, 3> eye{0, 10, 0};
   std::array<double, 3> target{0, 0, 1};
   double fovy_degrees = 45.0;
+  bool operator==(const CameraSpec&) const = default;
 };
 
 // The picture's optional effects (the scene's "view" keys of the same names; FrameView::effects).
@@ -20,6 +21,7 @@ struct Effects {
   bool caustics = true;     // the sun's light focused by the waves on the pool floor
   bool shadows = true;      // the sun's shadows of the trees and the bodies on the land and the water
   bool submerged = true;    // the islands' walls and the bodies under clear water, refracted
+  bool operator==(const Effects&) const = default;
 };
 
 // "view": what a rendered frame advances and which effects it draws (the floor and the land are
@@ -28,6 +30,7 @@ struct ViewSpec {
   std::int64_t steps_per_frame = 1;  // simulation steps per rendered frame
   double lod_tolerance_px = 1.0;     // LOD screen-space error bound; 0 = the full mesh
   Effects effects;                   // "reflections", "caustics", "shadows": true | false
+  bool operator==(const ViewSpec&) const = default;
 };
 
 // "lighting": the sun and the colours the water shader mixes (linear RGB in [0, 1]).
@@ -39,6 +42,7 @@ struct LightingSpec {
   std::array<double, 3> absorption{0.30, 0.057, 0.0094};
   std::array<double, 3> sky{0.28, 0.52, 0.9};      // sky at the zenith (the horizon is lighter)
   std::array<double, 3> ground{0.55, 0.47, 0.33};  // pool floor, shore and islands
+  bool operator==(const LightingSpec&) const = default;
 };
 
 }  // namespace pond::view

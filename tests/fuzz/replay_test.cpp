@@ -42,5 +42,6 @@ void replay(const std::string& name, Target target, std::size_t min_corpus) {
 TEST(FuzzReplay, Scene) { replay("scene", pond::fuzz::scene, 5); }
 TEST(FuzzReplay, Npy) { replay("npy", pond::fuzz::npy, 5); }
 TEST(FuzzReplay, Cli) { replay("cli", pond::fuzz::cli, 5); }
+TEST(FuzzReplay, Checkpoint) { replay("checkpoint", pond::fuzz::checkpoint, 3); }
 
 }  // namespace

@@ -12,6 +12,7 @@ namespace pond::fuzz {
 int scene(const std::uint8_t* data, std::size_t size);  // parse_scene, then build_model + 2 steps
 int npy(const std::uint8_t* data, std::size_t size);    // npy_decode, then an encode round trip
 int cli(const std::uint8_t* data, std::size_t size);    // argv (one argument per line), parse only
+int checkpoint(const std::uint8_t* data, std::size_t size);  // decode_checkpoint, then resume and step
 
 // Fails loudly (abort) with a message: what the fuzzer and the replay test both catch.
 [[noreturn]] void property_failed(const char* what);
