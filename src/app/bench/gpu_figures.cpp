@@ -1,0 +1,92 @@
+#include "app/bench/gpu_figures.h"
+
+#include <chrono>
+
+#include "app/bench/cpu_figures.h"
+#include "app/bench/frame_figures.h"
+#include "app/bench/workloads.h"
+#include "core/errors.h"
+#include "gpu/context.h"
+#include "gpu/gpu_solver.h"
+#include "render/pass_timestamps.h"
+#include "sim/diagnostics.h"
+
+namespace pond::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string device_type(vk::PhysicalDeviceType t) {
+  switch (t) {
+    case vk::PhysicalDeviceType::eDiscreteGpu: return "discrete GPU";
+    case vk::PhysicalDeviceType::eIntegratedGpu: return "integrated GPU";
+    case vk::PhysicalDeviceType::eVirtualGpu: return "virtual GPU";
+    case vk::PhysicalDeviceType::eCpu: return "CPU";
+    default: return "other";
+  }
+}
+
+// The driver's version as its vendor encodes it (NVIDIA 10.8.8.6 bits; most others Vulkan's 10.10.12).
+std::string driver_version(const gpu::Context& ctx, std::uint32_t v) {
+  if (ctx.driver_id() == vk::DriverId::eNvidiaProprietary)
+    return std::to_string(v >> 22) + "." + std::to_string((v >> 14) & 0xff) + "." + std::to_string((v >> 6) & 0xff);
+  return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) + "." +
+         std::to_string(VK_API_VERSION_PATCH(v));
+}
+
+Device describe(const gpu::Context& ctx) {
+  const vk::PhysicalDeviceProperties p = ctx.physical().getProperties();
+  const render::PassTimestamps probe(ctx, 0);
+  const std::uint32_t api = ctx.api_version();
+  return {.name = ctx.device_name(), .type = device_type(p.deviceType), .driver = ctx.driver(),
+          .driver_version = driver_version(ctx, p.driverVersion),
+          .api_version = std::to_string(VK_API_VERSION_MAJOR(api)) + "." + std::to_string(VK_API_VERSION_MINOR(api)) +
+                         "." + std::to_string(VK_API_VERSION_PATCH(api)),
+          .timestamps = probe.supported(), .no_timestamps = probe.unsupported_reason()};
+}
+
+void measure_gpu_solver(const gpu::Context& ctx, const Plan& plan, Progress& progress, Report& report) {
+  for (const int size : plan.solver_sizes())
+    for (const sim::MathMode math : {sim::MathMode::exact, sim::MathMode::fast}) {
+      const char* math_name = math == sim::MathMode::exact ? "exact" : "fast";
+      const std::string label = std::string(math_name) + " math, " + std::to_string(size) + "²";
+      progress.show("GPU solver, " + label);
+      gpu::GpuSolver solver(ctx, rippled_model(size, math));
+      const std::int64_t steps = steps_per_sample(size, plan.node_steps_per_sample());
+      solver.advance(kWarmSteps);
+      solver.finish();
+      Figure f = make_figure(std::string("gpu.") + math_name + "." + std::to_string(size), "GPU solver, " + label, "node-steps/s");
+      for (int r = 0; r < plan.repeats(); ++r) {
+        const auto t0 = Clock::now();
+        solver.advance(steps);
+        solver.finish();
+        f.samples.push_back(double(size) * size * double(steps) / std::chrono::duration<double>(Clock::now() - t0).count());
+      }
+      f.hash = hex_hash(sim::state_hash(solver.read_state(), solver.model()));
+      // Exact math takes the CPU's steps: its hash is the CPU's where the device gives the CPU's bits.
+      const Figure* cpu = report.find("cpu.scalar.t1." + std::to_string(size));
+      if (math == sim::MathMode::exact && cpu && cpu->hash != f.hash)
+        report.notes.push_back("the GPU's exact state at " + std::to_string(size) + "² (" + *f.hash +
+                               ") is not the CPU's (" + *cpu->hash + "): run `pond check` on this device");
+      report.add(std::move(f));
+    }
+}
+
+}  // namespace
+
+void measure_gpu_groups(const Plan& plan, Progress& progress, Report& report) {
+  if (!plan.runs("gpu") && !plan.runs("frame")) return;
+  progress.show("opening the Vulkan device");
+  gpu::ContextOptions options;
+  options.device = plan.device;
+  options.validation = plan.validation;
+  const gpu::Context ctx(options);
+  report.device = describe(ctx);
+  if (plan.runs("gpu")) measure_gpu_solver(ctx, plan, progress, report);
+  if (plan.runs("frame")) measure_frame(ctx, plan, progress, report);
+  if (plan.validation && !ctx.validation_log().messages().empty())
+    throw RuntimeError(std::to_string(ctx.validation_log().messages().size()) +
+                       " Vulkan validation message(s), the first: " + ctx.validation_log().messages().front());
+}
+
+}  // namespace pond::bench
