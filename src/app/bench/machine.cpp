@@ -40,6 +40,7 @@ Machine this_machine() {
     if (core::cpu_has(feature)) m.instruction_sets.push_back(name);
   const std::string mem = proc_value("/proc/meminfo", "MemTotal");  // "24683748 kB"
   if (!mem.empty()) m.memory_bytes = std::stoull(mem) * 1024;
+  std::ifstream("/proc/loadavg") >> m.load_average;
   return m;
 }
 

@@ -35,6 +35,7 @@ struct Machine {
   int cores = 0;                              // logical CPUs pond may use
   std::vector<std::string> instruction_sets;  // the SIMD sets the solver may choose: "sse2", "avx2", ...
   std::uint64_t memory_bytes = 0;
+  double load_average = 0;  // /proc/loadavg's last minute when the run began: other work on the cores
 };
 
 struct Device {
