@@ -61,6 +61,9 @@ int run_bench(const BenchOptions& o) {
   bench::Report report;
   report.version = POND_VERSION, report.date = today_utc(), report.quick = o.plan.quick;
   report.machine = bench::this_machine();
+  if (report.machine.load_average > 0.5 * report.machine.cores)
+    report.notes.push_back("the machine was busy as the run began (load " + std::to_string(report.machine.load_average).substr(0, 4) +
+                           " on " + std::to_string(report.machine.cores) + " cores): expect slower, noisier figures");
   {
     bench::Progress progress;
     const bench::Plan& plan = o.plan;

@@ -81,7 +81,7 @@ void measure_lod(const Plan& plan, Progress& progress, Report& report) {
     std::size_t indices = builder.build(positions, ranges, camera, 1.0, out);
     const int batch = std::max(1, static_cast<int>(0.02 / std::max(seconds_since(t0), 1e-6)));
     Figure f = make_figure("lod." + std::to_string(side), "LOD build, rain, " + grid_text(side) + ", 1280x720, 1 px, 1 thread", "ms", false);
-    for (int r = 0; r < std::max(plan.repeats(), 5); ++r) {
+    for (int r = 0; r < 2 * plan.repeats() - 1; ++r) {  // builds are short: more samples
       t0 = Clock::now();
       for (int k = 0; k < batch; ++k) indices = builder.build(positions, ranges, camera, 1.0, out);
       f.samples.push_back(1e3 * seconds_since(t0) / batch);
@@ -93,7 +93,7 @@ void measure_lod(const Plan& plan, Progress& progress, Report& report) {
 
 void measure_cpu_bodies(const Plan& plan, Progress& progress, Report& report) {
   const int side = plan.bodies_grid();
-  const std::int64_t steps = plan.quick ? 4 : 8;
+  const std::int64_t steps = plan.quick ? 4 : 16;
   for (const int count : {8, 64}) {
     progress.show("bodies on the CPU solver, " + std::to_string(count) + " at " + grid_text(side));
     sim::CpuSolver plain(bodies_model(side, 0), sim::best_backend(), 0);
@@ -103,7 +103,7 @@ void measure_cpu_bodies(const Plan& plan, Progress& progress, Report& report) {
     Figure f = make_figure("bodies.cpu." + std::to_string(count), std::to_string(count) + " bodies, a step with / without, " + plain.engine() + ", " + grid_text(side), "x", false);
     for (int r = 0; r < plan.repeats() + 2; ++r) {  // a ratio of two short runs: a few more samples
       double with = 0, without = 0;
-      for (int k = 0; k < 4; ++k) {  // alternated, so a shared machine's load falls on both alike
+      for (int k = 0; k < (plan.quick ? 4 : 8); ++k) {  // alternated: a shared machine's load falls on both alike
         auto t0 = Clock::now();
         plain.advance(steps);
         without += seconds_since(t0);
