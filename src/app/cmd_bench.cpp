@@ -6,7 +6,10 @@
 #include <cstdlib>
 #include <ctime>
 #include <memory>
+#include <optional>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "app/bench/compare.h"
 #include "app/bench/cpu_figures.h"
