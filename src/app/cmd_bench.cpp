@@ -70,10 +70,12 @@ int run_bench(const BenchOptions& o) {
   {
     bench::Progress progress;
     const bench::Plan& plan = o.plan;
-    if (plan.runs("cpu")) bench::measure_cpu_solver(plan, progress, report);
-    throw_if_interrupted("after the CPU solver's figures");
+    // The GPU's first: a --device that names no device is bad input, found before the long runs.
     bench::measure_gpu_groups(plan, progress, report);
     throw_if_interrupted("after the GPU's figures");
+    if (plan.runs("cpu")) bench::measure_cpu_solver(plan, progress, report);
+    bench::note_gpu_hashes(plan, report);
+    throw_if_interrupted("after the CPU solver's figures");
     if (plan.runs("lod")) bench::measure_lod(plan, progress, report);
     throw_if_interrupted("after the LOD's figures");
     if (plan.runs("bodies")) bench::measure_cpu_bodies(plan, progress, report);
@@ -112,7 +114,7 @@ Command add_bench_command(CLI::App& app) {
   sub->add_option("--compare", o->compare, "An earlier --json file: print each figure's ratio, exit 1 past --tolerance");
   sub->add_option("--tolerance", o->tolerance, "How much worse than --compare's figure is a regression, in % (default 20)");
   sub->add_option("--device", o->plan.device, "Vulkan device name (substring); default: $POND_DEVICE, else the most capable");
-  sub->add_option("--only", o->plan.only, "Only these groups: cpu gpu lod frame bodies")->expected(1, -1);
+  sub->add_option("--only", o->plan.only, "Only these groups: gpu frame cpu lod bodies")->expected(1, -1);
   sub->add_flag("--validation", o->plan.validation, "Vulkan validation on; any message fails the run (for tests)");
   return {sub, [o] { return run_bench(*o); }};
 }

@@ -66,6 +66,16 @@ void measure_cpu_solver(const Plan& plan, Progress& progress, Report& report) {
   }
 }
 
+void note_gpu_hashes(const Plan& plan, Report& report) {
+  for (const int size : plan.solver_sizes()) {
+    const Figure* cpu = report.find("cpu.scalar.t1." + std::to_string(size));
+    const Figure* gpu = report.find("gpu.exact." + std::to_string(size));
+    if (cpu && gpu && cpu->hash != gpu->hash)
+      report.notes.push_back("the GPU's exact state at " + grid_text(size) + " (" + *gpu->hash + ") is not the CPU's (" +
+                             *cpu->hash + "): run `pond check` on this device");
+  }
+}
+
 void measure_lod(const Plan& plan, Progress& progress, Report& report) {
   for (const int side : plan.lod_sizes()) {
     progress.show("LOD build, rain, " + grid_text(side) + " (simulating the rain)");

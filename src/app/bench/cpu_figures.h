@@ -11,6 +11,9 @@ namespace pond::bench {
 // sets report.hashes_agree (every run of a size takes the same steps, so every backend and thread
 // count must end in the same bits).
 void measure_cpu_solver(const Plan& plan, Progress& progress, Report& report);
+// After both solvers ran: a note for each size where the GPU's exact math (the CPU's steps) did not
+// end in the CPU's bits.
+void note_gpu_hashes(const Plan& plan, Report& report);
 // "lod.<side>" in ms a build, with its triangles.
 void measure_lod(const Plan& plan, Progress& progress, Report& report);
 // "bodies.cpu.<n>": a step's time with n bodies over the same pond's without, alternated.

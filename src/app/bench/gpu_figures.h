@@ -8,8 +8,9 @@
 
 namespace pond::bench {
 
-// Runs the "gpu" and "frame" groups the plan has on one device and fills report.device.
-// RuntimeError without a device, or for a validation message when the plan asks for validation.
+// Runs the "gpu" and "frame" groups the plan has on one device and fills report.device. Without
+// Vulkan or a device, a note (RuntimeError when --only named the groups); RuntimeError for a
+// validation message when the plan asks for validation.
 void measure_gpu_groups(const Plan& plan, Progress& progress, Report& report);
 
 }  // namespace pond::bench
