@@ -11,7 +11,7 @@ json=${1:-bench/results/epyc-zen5-2-cores.json}
 out=${2:-docs/solver_speed.png}
 data=$(mktemp)
 trap 'rm -f "$data" "$data.title" "$data.title.n"' EXIT
-# Rows: grid sizes; columns: the series, in the order pond bench ran them.
+# Rows: grid sizes; columns: the CPU's series in the order pond bench ran them, then the GPU's.
 python3 - "$json" "$data" "$data.title" <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1]))
@@ -28,6 +28,7 @@ for f in r["figures"]:
     if label not in series: series.append(label)
     if size not in sizes: sizes.append(size)
     value[(label, size)] = f["median"] / 1e6
+series.sort(key=lambda label: label.startswith("GPU"))  # the CPU's first (stable), then the GPU's
 if not series:
     sys.exit("%s: no solver figures (run pond bench without --only, or with --only cpu gpu)" % sys.argv[1])
 with open(sys.argv[2], "w") as out:
