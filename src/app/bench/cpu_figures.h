@@ -16,7 +16,8 @@ void measure_cpu_solver(const Plan& plan, Progress& progress, Report& report);
 void note_gpu_hashes(const Plan& plan, Report& report);
 // "lod.<side>" in ms a build, with its triangles.
 void measure_lod(const Plan& plan, Progress& progress, Report& report);
-// "bodies.cpu.<n>": a step's time with n bodies over the same pond's without, alternated.
+// "bodies.cpu.<n>": a step's time with n bodies over the same pond's without, alternated (the GPU
+// solver's, "bodies.gpu.<n>", are gpu_figures.h's).
 void measure_cpu_bodies(const Plan& plan, Progress& progress, Report& report);
 
 // A hash as the JSON and the table show it: 16 hex digits.

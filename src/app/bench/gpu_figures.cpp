@@ -68,10 +68,37 @@ void measure_gpu_solver(const gpu::Context& ctx, const Plan& plan, Progress& pro
     }
 }
 
+// The bodies' cost on the GPU solver, as measure_cpu_bodies has it on the CPU's: a step with 8 and
+// 64 bodies over the same pond's without, alternated, each submission waited for.
+void measure_gpu_bodies(const gpu::Context& ctx, const Plan& plan, Progress& progress, Report& report) {
+  const int side = plan.bodies_grid();
+  const std::int64_t steps = plan.quick ? 4 : 16;
+  for (const int count : {8, 64}) {
+    progress.show("bodies on the GPU solver, " + std::to_string(count) + " at " + std::to_string(side) + "²");
+    gpu::GpuSolver plain(ctx, bodies_model(side, 0)), bodies(ctx, bodies_model(side, count));
+    Figure f = make_figure("bodies.gpu." + std::to_string(count),
+                           std::to_string(count) + " bodies, a step with / without, GPU solver, " + std::to_string(side) + "²",
+                           "x", false);
+    const auto run = [steps](gpu::GpuSolver& solver) {
+      const auto t0 = Clock::now();
+      solver.advance(steps);
+      solver.finish();
+      return std::chrono::duration<double>(Clock::now() - t0).count();
+    };
+    run(plain), run(bodies);
+    for (int r = 0; r < plan.repeats() + 2; ++r) {
+      double with = 0, without = 0;
+      for (int k = 0; k < (plan.quick ? 2 : 4); ++k) without += run(plain), with += run(bodies);
+      f.samples.push_back(with / without);
+    }
+    report.add(std::move(f));
+  }
+}
+
 }  // namespace
 
 void measure_gpu_groups(const Plan& plan, Progress& progress, Report& report) {
-  if (!plan.runs("gpu") && !plan.runs("frame")) return;
+  if (!plan.runs("gpu") && !plan.runs("frame") && !plan.runs("bodies")) return;
   progress.show("opening the Vulkan device");
   gpu::ContextOptions options;
   options.device = plan.device;
@@ -81,13 +108,14 @@ void measure_gpu_groups(const Plan& plan, Progress& progress, Report& report) {
     opened.emplace(options);
   } catch (const RuntimeError& e) {  // no Vulkan, no device: the CPU's figures still stand
     if (!plan.only.empty()) throw;     // unless the GPU's were asked for by name
-    report.notes.push_back(std::string("gpu and frame skipped: ") + e.what());
+    report.notes.push_back(std::string("the GPU's figures skipped: ") + e.what());
     return;
   }
   const gpu::Context& ctx = *opened;
   report.device = describe(ctx);
   if (plan.runs("gpu")) measure_gpu_solver(ctx, plan, progress, report);
   if (plan.runs("frame")) measure_frame(ctx, plan, progress, report);
+  if (plan.runs("bodies")) measure_gpu_bodies(ctx, plan, progress, report);
   if (plan.validation && !ctx.validation_log().messages().empty())
     throw RuntimeError(std::to_string(ctx.validation_log().messages().size()) +
                        " Vulkan validation message(s), the first: " + ctx.validation_log().messages().front());

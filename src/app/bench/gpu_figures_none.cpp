@@ -4,8 +4,8 @@
 namespace pond::bench {
 
 void measure_gpu_groups(const Plan& plan, Progress&, Report& report) {
-  if (plan.runs("gpu") || plan.runs("frame"))
-    report.notes.push_back("gpu and frame skipped: this build has no Vulkan");
+  if (plan.runs("gpu") || plan.runs("frame") || plan.runs("bodies"))
+    report.notes.push_back("the GPU's figures skipped: this build has no Vulkan");
 }
 
 }  // namespace pond::bench
