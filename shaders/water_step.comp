@@ -1,5 +1,5 @@
 #version 460
-// One substep of the water grid: spring forces and symplectic Euler, state A -> state B.
+// One substep of the water grid: spring forces and semi-implicit (symplectic) Euler, state A -> state B.
 //
 // Speed on lavapipe (llvmpipe runs 8 invocations as the lanes of one AVX2 register; what decides
 // the speed is the number of memory operations per node, not the arithmetic):
@@ -151,7 +151,7 @@ vec3 accumulate(vec3 acc, vec3 t, bool exists) {
   return exists ? sum : acc;
 }
 
-// Symplectic Euler of one node: v' = v + (G*kc - v*kd), constrained components +0 (not v' * 0,
+// Semi-implicit Euler of one node: v' = v + (G*kc - v*kd), constrained components +0 (not v' * 0,
 // which could be -0 or NaN), u' = u + v'*dt. Returns u' in out_u, v' in out_v.
 void integrate(vec3 u0, vec3 v0, vec3 g, uint kind, out vec3 out_u, out vec3 out_v) {
   precise vec3 v1 = v0 + ((g * p.kc) - (v0 * p.kd));

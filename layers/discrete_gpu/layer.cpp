@@ -85,7 +85,11 @@ VKAPI_ATTR VkResult VKAPI_CALL create_instance(const VkInstanceCreateInfo* info,
       .get_memory_properties =
           load<PFN_vkGetPhysicalDeviceMemoryProperties>(gipa, in, "vkGetPhysicalDeviceMemoryProperties"),
       .get_memory_properties2 =
-          load<PFN_vkGetPhysicalDeviceMemoryProperties2>(gipa, in, "vkGetPhysicalDeviceMemoryProperties2")};
+          load<PFN_vkGetPhysicalDeviceMemoryProperties2>(gipa, in, "vkGetPhysicalDeviceMemoryProperties2"),
+      .get_queue_families =
+          load<PFN_vkGetPhysicalDeviceQueueFamilyProperties>(gipa, in, "vkGetPhysicalDeviceQueueFamilyProperties"),
+      .get_queue_families2 =
+          load<PFN_vkGetPhysicalDeviceQueueFamilyProperties2>(gipa, in, "vkGetPhysicalDeviceQueueFamilyProperties2")};
   // A Vulkan 1.0 instance has the *2 queries only from VK_KHR_get_physical_device_properties2.
   if (!d.get_properties2)
     d.get_properties2 = load<PFN_vkGetPhysicalDeviceProperties2>(gipa, in, "vkGetPhysicalDeviceProperties2KHR");
@@ -94,6 +98,9 @@ VKAPI_ATTR VkResult VKAPI_CALL create_instance(const VkInstanceCreateInfo* info,
   if (!d.get_memory_properties2)
     d.get_memory_properties2 =
         load<PFN_vkGetPhysicalDeviceMemoryProperties2>(gipa, in, "vkGetPhysicalDeviceMemoryProperties2KHR");
+  if (!d.get_queue_families2)
+    d.get_queue_families2 =
+        load<PFN_vkGetPhysicalDeviceQueueFamilyProperties2>(gipa, in, "vkGetPhysicalDeviceQueueFamilyProperties2KHR");
   std::lock_guard lock(registry().mutex);
   registry().instances[dispatch_key(in)] = d;
   return VK_SUCCESS;
@@ -201,6 +208,9 @@ const Entry kInstanceCommands[] = {
     {"vkGetPhysicalDeviceMemoryProperties", as_void(get_physical_device_memory_properties)},
     {"vkGetPhysicalDeviceMemoryProperties2", as_void(get_physical_device_memory_properties2)},
     {"vkGetPhysicalDeviceMemoryProperties2KHR", as_void(get_physical_device_memory_properties2)},
+    {"vkGetPhysicalDeviceQueueFamilyProperties", as_void(get_physical_device_queue_family_properties)},
+    {"vkGetPhysicalDeviceQueueFamilyProperties2", as_void(get_physical_device_queue_family_properties2)},
+    {"vkGetPhysicalDeviceQueueFamilyProperties2KHR", as_void(get_physical_device_queue_family_properties2)},
 };
 
 const Entry kDeviceCommands[] = {

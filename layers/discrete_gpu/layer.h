@@ -53,6 +53,8 @@ struct InstanceDispatch {
   PFN_vkGetPhysicalDeviceFeatures2 get_features2 = nullptr;
   PFN_vkGetPhysicalDeviceMemoryProperties get_memory_properties = nullptr;
   PFN_vkGetPhysicalDeviceMemoryProperties2 get_memory_properties2 = nullptr;
+  PFN_vkGetPhysicalDeviceQueueFamilyProperties get_queue_families = nullptr;
+  PFN_vkGetPhysicalDeviceQueueFamilyProperties2 get_queue_families2 = nullptr;
 };
 
 // The next layer's device-level functions this layer calls.
@@ -169,6 +171,12 @@ VKAPI_ATTR void VKAPI_CALL get_physical_device_memory_properties(VkPhysicalDevic
                                                                  VkPhysicalDeviceMemoryProperties*);
 VKAPI_ATTR void VKAPI_CALL get_physical_device_memory_properties2(VkPhysicalDevice,
                                                                   VkPhysicalDeviceMemoryProperties2*);
+// POND_DISCRETE_GPU_NO_TIMESTAMPS=1 (timestamps.cpp): no timestamps on the presented device.
+bool hides_timestamps();
+VKAPI_ATTR void VKAPI_CALL get_physical_device_queue_family_properties(VkPhysicalDevice, std::uint32_t*,
+                                                                       VkQueueFamilyProperties*);
+VKAPI_ATTR void VKAPI_CALL get_physical_device_queue_family_properties2(VkPhysicalDevice, std::uint32_t*,
+                                                                        VkQueueFamilyProperties2*);
 // Whether vkCreateDevice asks for a feature the presented device lacks (shaderInt64 and the 64-bit
 // atomics); says which on stderr.
 bool requests_hidden_feature(const VkDeviceCreateInfo& info);

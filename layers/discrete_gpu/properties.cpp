@@ -63,6 +63,7 @@ void present(VkPhysicalDeviceProperties& p) {
   l.maxMemoryAllocationCount = std::min(l.maxMemoryAllocationCount, kMaxMemoryAllocationCount);
   l.maxSamplerAllocationCount = std::min(l.maxSamplerAllocationCount, kMaxSamplerAllocationCount);
   l.maxTexelBufferElements = max_texel_buffer_elements(l.maxTexelBufferElements);
+  if (hides_timestamps()) l.timestampComputeAndGraphics = VK_FALSE;
 }
 
 void present(VkPhysicalDeviceFeatures& f) { f.shaderInt64 = VK_FALSE; }

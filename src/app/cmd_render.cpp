@@ -30,7 +30,7 @@ Command add_render_command(CLI::App& app) {
   sub->add_option("--device", o->device, "Vulkan device name (substring)");
   sub->add_flag("--validation", o->validation, "Enable the Vulkan validation layer (fails on any message)");
   sub->add_flag("--profile", o->profile,
-                "After the picture, time each effect the scene has on against frozen frames without it");
+                "Each pass's GPU time from timestamp queries; after the picture, each effect against frozen frames without it");
   return {sub, [o, raw] {
             const Size2 size = parse_size((*raw)[0], "--size");
             o->width = size.width;

@@ -19,7 +19,7 @@ class CommandLine {
     app_.set_version_flag("--version", [] { return version_line(); },
                           "Print the version, the CPU backends and the Vulkan headers of this build, then exit");
     commands_ = {add_demo_command(app_), add_simulate_command(app_), add_render_command(app_),
-                 add_lod_command(app_), add_tree_command(app_), add_check_command(app_)};
+                 add_lod_command(app_), add_tree_command(app_), add_check_command(app_), add_bench_command(app_)};
   }
   CommandLine(const CommandLine&) = delete;
   CommandLine& operator=(const CommandLine&) = delete;

@@ -19,5 +19,6 @@ Command add_render_command(CLI::App& app);
 Command add_lod_command(CLI::App& app);
 Command add_tree_command(CLI::App& app);
 Command add_check_command(CLI::App& app);  // the parity suite on the chosen device
+Command add_bench_command(CLI::App& app);  // the headline figures on this machine
 
 }  // namespace pond::app

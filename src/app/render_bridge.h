@@ -18,7 +18,7 @@ struct RenderOptions {
   std::optional<double> fovy, lod_tolerance;
   bool wireframe = false;
   bool validation = false;
-  bool profile = false;  // after the picture: each effect's cost, by frozen frames with and without it
+  bool profile = false;  // each pass's GPU time (timestamps); after the picture, each effect's cost by frozen frames
 };
 
 int run_render(const RenderOptions& options);

@@ -64,6 +64,21 @@ void print_effect_costs(render::FrameLoop& loop, const render::RenderTarget& tar
   }
 }
 
+// Each pass's GPU time from timestamp queries in the frames drawn above (read as their slots came
+// round again, so the last frame or two are not among them), or why the device has none.
+void print_pass_times(const render::PassTimestamps& timestamps, const std::vector<std::vector<double>>& pass_ms) {
+  if (!timestamps.supported()) {
+    std::printf("GPU pass times: none, the device has no timestamps (%s)\n", timestamps.unsupported_reason().c_str());
+    return;
+  }
+  std::printf("GPU pass times (timestamp queries, medians):");
+  for (std::size_t p = 0; p < pass_ms.size(); ++p)
+    if (!pass_ms[p].empty())
+      std::printf(" %s %.3f ms (%zu frames);", render::timed_pass_name(static_cast<render::TimedPass>(p)),
+                  median(pass_ms[p]), pass_ms[p].size());
+  std::printf("\n");
+}
+
 // The frames of `scene` on `ctx` and the PNG of the last (a Vulkan failure reaches run_render).
 int render_scene(const RenderOptions& o, const scene::Scene& scene, const gpu::Context& ctx) {
   const sim::SolverChoice solver = parse_solver(o.solver);
@@ -96,6 +111,8 @@ int render_scene(const RenderOptions& o, const scene::Scene& scene, const gpu::C
   auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   session.advance(o.steps + steps_per_frame);  // what the first frame shows
   std::vector<double> total, simulate, wait, lod, draw;
+  std::vector<std::vector<double>> pass_ms(render::kTimedPasses);  // the GPU's clock, frames as read
+  std::uint64_t timed_frame = 0;
   render::FrameStats last;
   Clock::time_point start = Clock::now();
   for (int f = 0; f < o.frames; ++f) {
@@ -110,6 +127,11 @@ int render_scene(const RenderOptions& o, const scene::Scene& scene, const gpu::C
     draw.push_back(last.draw_ms);
     total.push_back(ms(start, end));
     start = end;
+    if (const render::PassTimes& t = loop.timestamps().last(); t.frame != timed_frame) {
+      timed_frame = t.frame;
+      for (std::size_t p = 0; p < render::kTimedPasses; ++p)
+        if (t.ran[p]) pass_ms[p].push_back(t.ms[p]);
+    }
   }
   session.finite_state();
   const std::vector<std::uint8_t> rgba = target.read_rgba();
@@ -139,7 +161,10 @@ int render_scene(const RenderOptions& o, const scene::Scene& scene, const gpu::C
   }
   if (bodies.drawn() > 0)
     std::printf("bodies: %zu drawn, %zu triangles\n", bodies.drawn(), bodies.triangles());
-  if (o.profile) print_effect_costs(loop, target, view, o.frames);
+  if (o.profile) {
+    print_pass_times(loop.timestamps(), pass_ms);
+    print_effect_costs(loop, target, view, o.frames);
+  }
   std::printf("steps done %" PRId64 "\nwrote %s\n", session.steps_done(), o.out.c_str());
   return 0;
 }

@@ -31,8 +31,12 @@ void record_early_passes(const vk::raii::CommandBuffer& cmd, const FrameContext&
     for (const vk::ImageMemoryBarrier2& b : layer_pass_begin(d.submerged)) batch.images.push_back(b);
   batch.record(cmd);
 
-  if (plan.caustics) caustics.record_dispatch(cmd, frame.slot, caustics_push);
+  if (plan.caustics) {
+    const PassTimestamps::Scope timed = frame.timestamps.scope(cmd, frame.slot, TimedPass::caustics);
+    caustics.record_dispatch(cmd, frame.slot, caustics_push);
+  }
   if (plan.shadow) {
+    const PassTimestamps::Scope timed = frame.timestamps.scope(cmd, frame.slot, TimedPass::shadow);
     FrameInfo sun = info;
     sun.view_proj = plan.shadow->clip.data();
     sun.extent = d.shadow.extent;
@@ -41,6 +45,7 @@ void record_early_passes(const vk::raii::CommandBuffer& cmd, const FrameContext&
     });
   }
   if (plan.reflection) {
+    const PassTimestamps::Scope timed = frame.timestamps.scope(cmd, frame.slot, TimedPass::reflection);
     FrameInfo mirrored = info;
     mirrored.extent = d.reflection.color.extent;
     mirrored.pixel_scale = static_cast<float>(mirrored.extent.height) / static_cast<float>(info.extent.height);
@@ -52,13 +57,15 @@ void record_early_passes(const vk::raii::CommandBuffer& cmd, const FrameContext&
       for (PassDrawable* p : frame.drawables) p->draw_reflected(mirrored);
     });
   }
-  if (plan.submerged)
+  if (plan.submerged) {
+    const PassTimestamps::Scope timed = frame.timestamps.scope(cmd, frame.slot, TimedPass::submerged);
     record_layer_pass(cmd, d.submerged, [&] {
       cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *frame.pipes.layout, 0, *d.set, nullptr);
       cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *frame.pipes.land_submerged);
       frame.geometry.draw_submerged(cmd);
       for (PassDrawable* p : frame.drawables) p->draw_submerged(info);
     });
+  }
   // After: what they wrote to shader-read for the main pass's fragment shaders (a frame without
   // shadows or without the submerged layer still puts the map or the layer, which every water.frag
   // declares, in that layout).

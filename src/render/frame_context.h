@@ -7,6 +7,7 @@
 
 #include "render/frame_data.h"
 #include "render/pass_drawable.h"
+#include "render/pass_timestamps.h"
 #include "render/visible_geometry.h"
 #include "render/water_pipeline.h"
 #include "view/frame_plan.h"
@@ -24,6 +25,7 @@ struct FrameContext {
   // The drawables' values for `cmd` (FrameInfo::cmd is ignored: each pass records into its own).
   FrameInfo info(const vk::raii::CommandBuffer& cmd) const;
   const FrameInfo& base;
+  PassTimestamps& timestamps;  // written around each pass
 };
 
 inline FrameInfo FrameContext::info(const vk::raii::CommandBuffer& cmd) const {

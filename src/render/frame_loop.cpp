@@ -10,6 +10,7 @@
 #include "render/early_passes.h"
 #include "render/frame_data.h"
 #include "render/main_pass.h"
+#include "render/pass_timestamps.h"
 #include "render/render_layout.h"
 #include "render/reflection_pass.h"
 #include "render/shadow_pass.h"
@@ -45,6 +46,7 @@ struct FrameLoop::Impl {
   WaterSource water;
   VisibleGeometry geometry;
   CausticsPass caustics;
+  PassTimestamps timestamps;  // each pass's GPU time, read at the frame's wait
   std::vector<PassDrawable*> drawables;
   std::uint32_t next = 0;
   std::uint64_t generation;  // the session's solver the caustics' views are of
@@ -70,6 +72,7 @@ struct FrameLoop::Impl {
         nearest_sampler(create_reflection_sampler(c)), shadow_sampler(create_shadow_sampler(c)),
         frames(c, *pipes.set_layout), water(c, drawn, gpu),
         geometry(c, drawn.model()), caustics(c, drawn.model(), kFramesInFlight),
+        timestamps(c, kFramesInFlight),
         generation(drawn.solver_generation()) {}
 
   FrameInfo info(const vk::raii::CommandBuffer& cmd, const Prepared& f) const {
@@ -79,7 +82,7 @@ struct FrameLoop::Impl {
             session, f.lighting, f.water.bodies};
   }
   FrameContext context(const Prepared& f, const FrameInfo& base) {
-    return {f.slot, frames[f.slot], f.plan, f.draws, geometry, pipes, drawables, base};
+    return {f.slot, frames[f.slot], f.plan, f.draws, geometry, pipes, drawables, base, timestamps};
   }
 
   // The frame's resources, camera, plan, land and uniforms at `extent`; the early passes into
@@ -111,6 +114,7 @@ struct FrameLoop::Impl {
                                                f.water.stride, f.water.pitch, f.plan.shadow ? &*f.plan.shadow : nullptr});
     std::memcpy(d.uniforms.mapped, &u, sizeof u);
     d.uniforms.flush(ctx);
+    timestamps.begin_frame(cmd, f.slot);
     record_early_passes(cmd, context(f, base), caustics,
                         view::caustics_push(session.model(), view::unit(f.lighting.sun), session.model().basin.floor_depth,
                                             f.water.stride, f.water.pitch));
@@ -133,6 +137,7 @@ struct FrameLoop::Impl {
     water.sync();  // the frame's one wait: for the last compute, which also finishes this slot's last use
     f.stats.wait_ms = ms_since(t);
     frames.finish(f.slot);
+    timestamps.collect(f.slot);  // finished: its last frame's pass times are there to read
     if (generation != session.solver_generation()) {  // the old solver's buffers are gone
       caustics.forget_water_buffers();
       generation = session.solver_generation();
@@ -169,11 +174,17 @@ struct FrameLoop::Impl {
       f.stats.lod_ms += ms_since(t);
     }
     frames.ensure_depth(f.slot, target.extent);
-    record_main_pass(cmd, context(f, info(cmd, f)), target,
-                     {.wireframe = f.view.wireframe, .reflections = f.plan.reflection, .caustics = f.plan.caustics,
-                      .submerged = f.plan.submerged, .sky = f.lighting.sky});
+    {
+      const PassTimestamps::Scope timed = timestamps.scope(cmd, f.slot, TimedPass::main);
+      record_main_pass(cmd, context(f, info(cmd, f)), target,
+                       {.wireframe = f.view.wireframe, .reflections = f.plan.reflection, .caustics = f.plan.caustics,
+                        .submerged = f.plan.submerged, .sky = f.lighting.sky});
+    }
     frames.submit_main(f.slot, target);
-    if (f.view.wait) frames.finish(f.slot);
+    if (f.view.wait) {
+      frames.finish(f.slot);
+      timestamps.collect(f.slot);
+    }
     f.stats.draw_ms += ms_since(t);
     return f.stats;
   }
@@ -199,6 +210,7 @@ FrameStats FrameLoop::prepare(const FrameView& view, vk::Extent2D extent) { retu
 bool FrameLoop::prepared() const { return impl_->is_prepared(); }
 FrameStats FrameLoop::draw(const FrameTarget& target) { return impl_->draw(target); }
 void FrameLoop::wait_idle() const { impl_->frames.finish_all(); }
+const PassTimestamps& FrameLoop::timestamps() const { return impl_->timestamps; }
 void FrameLoop::add_drawable(PassDrawable& drawable) { impl_->drawables.push_back(&drawable); }
 
 const sim::Session& FrameLoop::session() const { return impl_->session; }

@@ -28,6 +28,7 @@
 #include "gpu/gpu_solvers.h"
 #include "lod/camera_budget.h"
 #include "render/frame_target.h"
+#include "render/pass_timestamps.h"
 #include "render/pass_drawable.h"
 #include "scene/scene.h"
 #include "sim/session.h"
@@ -77,6 +78,9 @@ class FrameLoop {
   // The second half: the prepared frame into `target` (prepared again first if the target's size
   // differs from the one prepare() was given). InternalError without a prepared frame.
   FrameStats draw(const FrameTarget& target);
+  // Each pass's GPU time (timestamp queries) of the last frame whose slot was read: a frame drawn
+  // with FrameView::wait is read at once, any other when its slot is prepared again.
+  const PassTimestamps& timestamps() const;
   // Waits until every submitted frame is drawn (before reading back, resizing, tearing down).
   void wait_idle() const;
 

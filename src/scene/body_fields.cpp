@@ -122,7 +122,7 @@ std::optional<Problem> motion_problem(const sim::BodySpec& b, const sim::WaterSp
 
 DensityRange stable_densities(double radius, const sim::Physics& p) {
   // Buoyancy is a spring of stiffness (3/4) g / (density r) per unit mass at the waterline
-  // (d f / d hs at hs = r); symplectic Euler needs omega dt < 2: keep omega dt <= 1.
+  // (d f / d hs at hs = r); semi-implicit Euler needs omega dt < 2: keep omega dt <= 1.
   const double sub_dt = p.dt / p.substeps;
   return {std::max(kMinDensity, 0.75 * p.gravity * sub_dt * sub_dt / radius), kMaxDensity};
 }

@@ -265,7 +265,7 @@ std::optional<Problem> physics_problem(const Physics& p) {
     const double needed = std::floor(p.dt / bound) + 1.0;
     char msg[256];
     std::snprintf(msg, sizeof msg,
-                  "%g%s exceeds the explicit-Euler stability bound %.6g for mass %g, "
+                  "%g%s exceeds the semi-implicit Euler stability bound %.6g for mass %g, "
                   "stiffness %g, damping %g; use dt < %.6g or physics.substeps >= %.15g",
                   p.dt, p.substeps > 1 ? (" / " + std::to_string(p.substeps) + " substeps").c_str() : "",
                   bound, p.mass, p.stiffness, p.damping, bound, needed);

@@ -39,7 +39,7 @@ struct Problem {
   std::string key;
   std::string what;
 };
-// The "physics" object's ranges and the explicit-Euler stability bound.
+// The "physics" object's ranges and the integrator's stability bound (sim/stability.h).
 std::optional<Problem> physics_problem(const sim::Physics& physics);
 // lighting.sun: a direction, finite and not zero.
 std::optional<Problem> sun_problem(const std::array<double, 3>& toward_sun);

@@ -17,7 +17,7 @@ enum class MathMode { exact, fast };
 // The constants of one substep, as floats rounded once from double here, so the CPU and the GPU use
 // the same bits. With G the sum of (x_b - x_a) * factor over a node's springs:
 //   v' = v + (G * kc - v * kd);   x' = x + v' * dt
-// which is symplectic Euler with a = (c G - gamma v) / m folded into two products.
+// which is semi-implicit (symplectic) Euler with a = (c G - gamma v) / m folded into two products.
 struct StepConstants {
   float kc = 0;         // c * dt / m
   float kd = 0;         // gamma * dt / m

@@ -23,7 +23,7 @@
 //        (i,j-1) (i,j+1) (i-1,j) (i+1,j) (i-1,j-1) (i+1,j+1) (i-1,j+1) (i+1,j-1).
 //    A missing neighbour (grid border) is skipped; here that is an addition of -0 or a subtraction
 //    of +0, both the exact identity on every float including signed zeros.
-//  - Integration (symplectic Euler, model.h):  v' = v + (G*kc - v*kd);  constrained velocity
+//  - Integration (semi-implicit Euler, model.h):  v' = v + (G*kc - v*kd);  constrained velocity
 //    components become +0;  u' = u + v'*dt.
 #include <cstddef>
 #include <cstdint>

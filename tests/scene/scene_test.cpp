@@ -143,7 +143,7 @@ TEST(Scene, HugeGridIsRefusedBeforeAllocating) {
 TEST(Scene, UnstableTimeStepIsRefusedWithTheBound) {
   // Table 1: m = 4, c = 7, gamma = 0.05: the bound is 0.5324...
   const std::string m = error_of(R"({"physics": {"dt": 0.6}})");
-  EXPECT_NE(m.find("physics.dt 0.6 exceeds the explicit-Euler stability bound 0.53363"), std::string::npos) << m;
+  EXPECT_NE(m.find("physics.dt 0.6 exceeds the semi-implicit Euler stability bound 0.53363"), std::string::npos) << m;
   EXPECT_NE(m.find("physics.substeps >= 2"), std::string::npos) << m;
   // Substeps that bring it inside are accepted.
   const Scene s = parse_scene(R"({"physics": {"dt": 0.6, "substeps": 2}})", "x");

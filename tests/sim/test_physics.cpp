@@ -218,7 +218,7 @@ TEST(Physics, DampingMakesTheEnergyDecayAndNoDampingKeepsIt) {
     solver.advance(400);
     const double e1 = diagnose(solver.state(), m).total();
     if (damping == 0.0) {
-      EXPECT_NEAR(e1, e0, 0.05 * e0) << "symplectic Euler keeps energy bounded";
+      EXPECT_NEAR(e1, e0, 0.05 * e0) << "semi-implicit Euler keeps energy bounded";
     } else {
       EXPECT_LT(e1, e0 * (damping >= 0.5 ? 0.01 : 0.6)) << "damping " << damping;
     }

@@ -1,4 +1,4 @@
-// The explicit-Euler stability bound: its formula, and that it is where the model really turns
+// The semi-implicit Euler stability bound: its formula, and that it is where the model really turns
 // unstable (just below: bounded; just above: the fastest mode grows).
 #include <gtest/gtest.h>
 
