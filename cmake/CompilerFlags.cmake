@@ -20,6 +20,12 @@ if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_UNITY_BUILD)
   target_compile_options(pond_flags INTERFACE -Wno-subobject-linkage)
 endif()
 
+# GCC on aarch64 notes that passing a std::pair<float, float> changed in GCC 10.1: a note about
+# linking with code built by GCC 9 and before, which pond never is.
+if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_SYSTEM_PROCESSOR MATCHES "^(aarch64|arm64)$")
+  target_compile_options(pond_flags INTERFACE -Wno-psabi)
+endif()
+
 if(POND_IA32)
   target_compile_options(pond_flags INTERFACE -m32 -msse2 -mfpmath=sse)
   target_link_options(pond_flags INTERFACE -m32)
@@ -34,16 +40,44 @@ if(POND_FUZZ)
   target_compile_options(pond_flags INTERFACE -fsanitize=fuzzer-no-link)  # libFuzzer's coverage
 endif()
 
+# The wide backends of the build's target, its baseline first (every CPU of the target has it):
+# x86-64 sse2 avx2 avx512, IA-32 sse2, aarch64 neon. The sim kernels (kernel_<isa>.cpp) and the LOD's
+# copies are built per backend through pond_isa_sources().
+if(POND_IA32)
+  set(POND_WIDE_BACKENDS sse2)
+elseif(CMAKE_SYSTEM_PROCESSOR MATCHES "^(aarch64|arm64|ARM64)$")
+  set(POND_WIDE_BACKENDS neon)
+elseif(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$")
+  set(POND_WIDE_BACKENDS sse2 avx2 avx512)
+else()
+  message(FATAL_ERROR "pond builds for x86-64, IA-32 (-DPOND_IA32=ON) and aarch64, not ${CMAKE_SYSTEM_PROCESSOR}")
+endif()
+# The CPU solvers of this build, as `--solver` and `pond --version` name them (sse2's is sse).
+set(POND_CPU_SOLVERS scalar)
+foreach(isa IN LISTS POND_WIDE_BACKENDS)
+  string(REPLACE "sse2" "sse" solver ${isa})
+  list(APPEND POND_CPU_SOLVERS ${solver})
+endforeach()
+
 # Per-file flags for the AVX2 and AVX-512 backends, deliberately without -mfma. (-mavx512f makes
 # FMA instructions available, but no FMA intrinsic is used and -ffp-contract=off forbids the
-# compiler to fuse a*b+c, so the backend's bits equal the scalar ones; the tests check it.)
+# compiler to fuse a*b+c, so the backend's bits equal the scalar ones; the tests check it.) The
+# baselines, SSE2 and NEON, need none.
+set(POND_SSE2_FLAGS "")
 set(POND_AVX2_FLAGS -mavx2)
 set(POND_AVX512_FLAGS -mavx512f)
+set(POND_NEON_FLAGS "")
 
-# Builds `sources` (of the calling directory) for one wide backend, avx2 or avx512: its flags, and
-# its own inline namespace for the kernel code they inline (sim/isa_namespace.h).
+# Builds `sources` (of the calling directory) for one wide backend: its flags and, where it has
+# flags, its own inline namespace for the code they inline (sim/isa_namespace.h). Appends to the
+# files' other options.
 function(pond_isa_sources isa)
   string(TOUPPER "${isa}" upper)
-  set_source_files_properties(${ARGN} PROPERTIES
-    COMPILE_OPTIONS "${POND_${upper}_FLAGS}" COMPILE_DEFINITIONS "POND_ISA=isa_${isa}")
+  if(NOT DEFINED POND_${upper}_FLAGS)
+    message(FATAL_ERROR "pond_isa_sources: no backend ${isa}")
+  endif()
+  if(POND_${upper}_FLAGS)
+    set_property(SOURCE ${ARGN} APPEND PROPERTY COMPILE_OPTIONS ${POND_${upper}_FLAGS})
+    set_property(SOURCE ${ARGN} APPEND PROPERTY COMPILE_DEFINITIONS POND_ISA=isa_${isa})
+  endif()
 endfunction()

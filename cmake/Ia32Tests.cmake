@@ -9,16 +9,15 @@
 #
 # Sets POND_IA32_EMULATOR (the command that runs a 32-bit program, empty when they run natively)
 # and, with tests on, builds the targets GTest::gtest and GTest::gtest_main.
-set(POND_IA32_GTEST_SOURCE_DIR /usr/src/googletest/googletest CACHE PATH
-    "GoogleTest's sources, compiled with -m32 for the IA-32 build's tests")
+include(${CMAKE_CURRENT_LIST_DIR}/GTestFromSource.cmake)
 set(POND_IA32_EMULATOR "")
 
 if(NOT DEFINED CACHE{POND_BUILD_TESTS} OR POND_BUILD_TESTS)
   set(can_test ON)
   set(why "")
-  if(NOT EXISTS ${POND_IA32_GTEST_SOURCE_DIR}/CMakeLists.txt)
+  if(NOT EXISTS ${POND_GTEST_SOURCE_DIR}/CMakeLists.txt)
     set(can_test OFF)
-    set(why "no GoogleTest sources in ${POND_IA32_GTEST_SOURCE_DIR} (install googletest)")
+    set(why "no GoogleTest sources in ${POND_GTEST_SOURCE_DIR} (install googletest)")
   else()
     # Can this kernel run a 32-bit program? (Some x86-64 kernels have no IA-32 emulation.)
     set(probe ${CMAKE_BINARY_DIR}/CMakeFiles/pond_ia32_probe.cpp)
@@ -41,24 +40,8 @@ if(NOT DEFINED CACHE{POND_BUILD_TESTS} OR POND_BUILD_TESTS)
   endif()
 endif()
 
-if(NOT DEFINED CACHE{POND_BUILD_TESTS} AND NOT can_test)
-  message(STATUS "IA-32: the tests are off (POND_BUILD_TESTS=OFF): ${why}")
-endif()
-option(POND_BUILD_TESTS "Build the GoogleTest suite (for IA-32: the Vulkan-free unit and CLI tests)" ${can_test})
-
+pond_tests_from_source(IA-32 can_test "${why}" -m32 -msse2 -mfpmath=sse)
 if(POND_BUILD_TESTS)
-  if(NOT can_test)
-    message(FATAL_ERROR "POND_BUILD_TESTS with POND_IA32: ${why}")
-  endif()
-  # Only gtest and gtest_main, only when a test needs them, with the build's IA-32 code generation
-  # (not pond::flags: GoogleTest keeps its own warnings).
-  add_subdirectory(${POND_IA32_GTEST_SOURCE_DIR} ${CMAKE_BINARY_DIR}/googletest-ia32 EXCLUDE_FROM_ALL)
-  foreach(lib gtest gtest_main)  # (GoogleTest's CMake names them GTest::gtest, GTest::gtest_main)
-    target_compile_options(${lib} PRIVATE -m32 -msse2 -mfpmath=sse)
-    if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
-      target_compile_options(${lib} PRIVATE -Wno-restrict)  # GCC bug 105651, as in CompilerFlags.cmake
-    endif()
-  endforeach()
   # Every executable made from here on runs through the emulator in add_test and in
   # gtest_discover_tests (CROSSCOMPILING_EMULATOR), whether or not CMake calls this cross-compiling.
   if(POND_IA32_EMULATOR)

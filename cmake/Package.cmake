@@ -19,9 +19,18 @@ set(CPACK_STRIP_FILES ON)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # pond_<version>_<arch>.deb
 set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)  # GLFW, stb, libstdc++, ... at the versions linked
-# pond loads libvulkan.so.1 at run time (src/gpu/vulkan.h), so dpkg-shlibdeps cannot see it: named
-# here and merged with the computed list. A Vulkan 1.3 loader, for the 1.3 entry points pond calls.
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "libvulkan1 (>= 1.3)")
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS mesa-vulkan-drivers)
-set(CPACK_DEBIAN_PACKAGE_SUGGESTS vulkan-validationlayers)  # for --validation
+if(POND_WITH_VULKAN)
+  # pond loads libvulkan.so.1 at run time (src/gpu/vulkan.h), so dpkg-shlibdeps cannot see it: named
+  # here and merged with the computed list. A Vulkan 1.3 loader, for the 1.3 entry points pond calls.
+  set(CPACK_DEBIAN_PACKAGE_DEPENDS "libvulkan1 (>= 1.3)")
+  set(CPACK_DEBIAN_PACKAGE_RECOMMENDS mesa-vulkan-drivers)
+  set(CPACK_DEBIAN_PACKAGE_SUGGESTS vulkan-validationlayers)  # for --validation
+endif()
+# A cross build's package is for its target: the arm64 preset's, pond_<version>_arm64.deb. Its
+# Depends come from the target's libraries as Debian packages them, libc6:arm64 and the like
+# beside the native ones (multiarch; scripts/setup.sh): dpkg-shlibdeps finds them by the
+# architecture's library path, and their symbols files give the versions.
+if(POND_DEBIAN_ARCHITECTURE)  # set by the toolchain file
+  set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE ${POND_DEBIAN_ARCHITECTURE})
+endif()
 include(CPack)

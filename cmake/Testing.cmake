@@ -14,3 +14,19 @@ function(pond_add_test name)
   gtest_discover_tests(${name} PROPERTIES LABELS "${T_LABELS}" DISCOVERY_TIMEOUT 60
                        WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 endfunction()
+
+# pond_test_command(VAR TARGET): how a shell test runs the executable TARGET: its path, or where
+# programs run under an emulator (CMAKE_CROSSCOMPILING_EMULATOR: IA-32 on a kernel that cannot run
+# 32-bit programs, a cross build) a wrapper script beside it that runs it there.
+function(pond_test_command var target)
+  if(NOT CMAKE_CROSSCOMPILING_EMULATOR)
+    set(${var} $<TARGET_FILE:${target}> PARENT_SCOPE)
+    return()
+  endif()
+  set(wrapper ${CMAKE_CURRENT_BINARY_DIR}/${target}_under_emulator.sh)
+  list(JOIN CMAKE_CROSSCOMPILING_EMULATOR "\" \"" emulator)
+  file(GENERATE OUTPUT ${wrapper}
+       CONTENT "#!/bin/sh\nexec \"${emulator}\" \"$<TARGET_FILE:${target}>\" \"$@\"\n"
+       FILE_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_EXECUTE WORLD_READ WORLD_EXECUTE)
+  set(${var} ${wrapper} PARENT_SCOPE)
+endfunction()

@@ -10,7 +10,13 @@ packages=(
   libglfw3-dev libglm-dev libimgui-dev libstb-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev libmeshoptimizer-dev
   xvfb xauth twm time gcc-multilib g++-multilib
-  qemu-user  # tests/cli/ia32_golden_test.sh, on kernels that cannot run 32-bit programs
+  qemu-user  # tests/cli/ia32_golden_test.sh on kernels that cannot run 32-bit programs; the arm64 tests
+  # The arm64 preset (cmake/Aarch64Toolchain.cmake): clang-14 (below) over Debian's cross sysroot, not
+  # g++-aarch64-linux-gnu (it conflicts with gcc-multilib); GoogleTest's sources for its tests.
+  libc6-dev-arm64-cross libstdc++-12-dev-arm64-cross libgcc-12-dev-arm64-cross binutils-aarch64-linux-gnu googletest
+  # Debian's arm64 runtime, beside the native one (multiarch): the arm64 tests run on it under
+  # qemu-aarch64, and the arm64 .deb's Depends come from its symbols files (dpkg-shlibdeps).
+  libc6:arm64 libstdc++6:arm64 libgcc-s1:arm64
   gnuplot-nox
   clang-14 libclang-rt-14-dev  # scripts/fuzz.sh: libFuzzer and clang's ASan/UBSan runtimes
   dpkg-dev file  # cpack -G DEB (tests/install): dpkg-shlibdeps computes Depends; CPack finds ELF files with `file`
@@ -25,6 +31,9 @@ if [ ${#missing[@]} -eq 0 ]; then
 fi
 
 echo "setup: installing ${missing[*]}" >&2
+# The :arm64 packages come from Debian's arm64 archive, beside the native ones (multiarch).
+add_arm64=
+dpkg --print-foreign-architectures | grep -qx arm64 || add_arm64=1
 if [ "$(id -u)" -ne 0 ]; then
   if command -v sudo >/dev/null 2>&1; then SUDO=sudo; else
     echo "setup: need root to install: ${missing[*]}" >&2; exit 1
@@ -33,5 +42,6 @@ else
   SUDO=
 fi
 export DEBIAN_FRONTEND=noninteractive
+[ -z "$add_arm64" ] || $SUDO dpkg --add-architecture arm64
 $SUDO apt-get update -q
 $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"

@@ -4,7 +4,8 @@
 # coverage) with the CPU tests and each libFuzzer target for a short time on its committed corpus
 # (FUZZ_SECONDS, default 10 here; scripts/fuzz.sh); the GPU solver's tests (context, float policy,
 # SPIR-V checks, a tenth of the parity suite's steps) under ASan + UBSan too; the GPU tests under
-# the discrete-GPU test layer (both denormal settings); then the release tests.
+# the discrete-GPU test layer (both denormal settings); the aarch64 build's tests under qemu-aarch64;
+# then the release tests.
 # The soak (label soak, ~12 min) is left out: scripts/soak.sh runs it. Exits non-zero on the first
 # failure.
 set -euo pipefail
@@ -51,6 +52,15 @@ for pass in "1 gpu" "0 gpu_solver|parity"; do
   POND_DISCRETE_GPU_DENORM_PRESERVE=$denorm POND_PARITY_STEP_SCALE=0.3 \
     ctest --preset release -j "$jobs" -L "$label" -LE "soak|layer|install"
 done
+
+# The aarch64 cross build (the arm64 preset: clang-14 over Debian's cross sysroot, CPU only) and its Vulkan-free
+# tests under qemu-aarch64: the unit, CLI and fuzz-replay tests, the parity scenes' hashes of its
+# scalar and neon solvers against the release build's x86-64 scalar ones (tests/sim/
+# cross_parity_test.sh), no fused multiply-add in its pond, and its .deb (docs/water.md).
+stage "arm64 build and tests under qemu-aarch64"
+cmake --preset arm64 -DPOND_HOST_PARITY_HASHES="$PWD/build/tests/sim/parity_hashes"
+cmake --build --preset arm64 -j "$jobs"
+ctest --preset arm64 -j "$jobs"
 
 # Last, so its summary closes the output.
 stage "release tests"

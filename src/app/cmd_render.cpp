@@ -25,7 +25,7 @@ Command add_render_command(CLI::App& app) {
   sub->add_option("--lod-tolerance", o->lod_tolerance, "LOD screen-space error in pixels; 0 = the full mesh")
       ->check(CLI::Range(0.0, 1e6));
   sub->add_option("--solver", o->solver, "Solver: gpu (default) or a CPU backend")
-      ->check(CLI::IsMember({"gpu", "scalar", "sse", "avx2", "avx512"}));
+      ->check(CLI::IsMember({"gpu", "scalar", "sse", "avx2", "avx512", "neon"}));
   sub->add_flag("--wireframe", o->wireframe, "Overlay the LOD triangles");
   sub->add_option("--device", o->device, "Vulkan device name (substring)");
   sub->add_flag("--validation", o->validation, "Enable the Vulkan validation layer (fails on any message)");

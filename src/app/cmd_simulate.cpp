@@ -175,7 +175,7 @@ Command add_simulate_command(CLI::App& app) {
   sub->add_option("--steps", o->steps, "Number of time steps (with --resume: more steps)")->required()->check(CLI::Range(
       std::int64_t{0}, std::int64_t{1} << 40));
   sub->add_option("--solver", o->solver, "Solver backend (default: the widest the CPU has)")
-      ->check(CLI::IsMember({"auto", "scalar", "sse", "avx2", "avx512", "gpu"}));
+      ->check(CLI::IsMember({"auto", "scalar", "sse", "avx2", "avx512", "neon", "gpu"}));
   sub->add_option("--math", o->math, "Float math: exact (bit-reproducible, the default) or fast (approximations allowed)")
       ->check(CLI::IsMember({"exact", "fast"}));
   sub->add_option("--threads", o->threads, "CPU threads (default: all cores)")

@@ -10,7 +10,7 @@ std::string version_line() {
   std::string line = std::string("pond ") + POND_VERSION;
   if (*POND_GIT_DESCRIBE) line += std::string(" (git ") + POND_GIT_DESCRIBE + ")";
   line += ", CPU backends";
-  for (sim::Backend b : {sim::Backend::scalar, sim::Backend::sse, sim::Backend::avx2, sim::Backend::avx512})
+  for (sim::Backend b : sim::kBackends)
     if (sim::compiled_in(b)) line += std::string(" ") + sim::backend_name(b);
   return line + ", " + vulkan_in_build();
 }

@@ -1,25 +1,24 @@
 #pragma once
 // The node budgets' loops (camera_budget.h: node_budgets), built twice: by camera_budget.cpp for
-// the baseline (SSE2) and by camera_budget_avx2.cpp with AVX2, the one file built so. The compiler
-// vectorizes them, and every lane does a node's operations in the same order, so both copies
-// write the same bits. In an unnamed namespace: each file keeps its own copy, not the linker's pick.
+// the target's baseline (SSE2, NEON) and on x86-64 by camera_budget_avx2.cpp with AVX2's flags
+// (pond_isa_sources). The compiler vectorizes them, and every lane does a node's operations in the
+// same order, so both copies write the same bits. In the file's inline namespace
+// (sim/isa_namespace.h): each file keeps its own copy, not the linker's pick.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 
 #include "lod/camera_budget.h"
+#include "sim/isa_namespace.h"
 
 namespace pond::lod {
 
-#if POND_LOD_AVX2
-inline constexpr bool kAvx2Copy = true;
+#if POND_LOD_AVX2  // x86-64 builds
 void node_budgets_avx2(const NodePositions& p, const BudgetTerms& t, float* budget, bool all_in_view);  // camera_budget_avx2.cpp
-#else
-inline constexpr bool kAvx2Copy = false;  // IA-32 builds
 #endif
 
-namespace {
+inline namespace POND_ISA {
 
 inline void budget_loop(const NodePositions& p, const BudgetTerms& t, float* budget, bool all_in_view) {
   const ViewBasis& b = t.basis;
@@ -78,5 +77,5 @@ inline void budget_loop(const NodePositions& p, const BudgetTerms& t, float* bud
   }
 }
 
-}  // namespace
+}  // namespace POND_ISA
 }  // namespace pond::lod

@@ -107,7 +107,13 @@ double BoxBudget::least(const std::array<double, 3>& lo, const std::array<double
   return outside(lo, hi) ? std::numeric_limits<double>::infinity() : depth_budget(lo, hi);
 }
 
-bool wide_budgets_available() { return kAvx2Copy && __builtin_cpu_supports("avx2"); }
+bool wide_budgets_available() {
+#if POND_LOD_AVX2
+  return __builtin_cpu_supports("avx2");
+#else
+  return false;
+#endif
+}
 
 void node_budgets(const NodePositions& p, const BudgetTerms& t, float* budget, [[maybe_unused]] bool wide,
                   bool all_in_view) {

@@ -1,4 +1,5 @@
-// node_budgets' AVX2 copy (budget_loop.h), chosen by node_budgets where the CPU has AVX2.
+// node_budgets' AVX2 copy (budget_loop.h), chosen by node_budgets where the CPU has AVX2: built
+// with AVX2's flags and inline namespace (pond_isa_sources in src/lod/CMakeLists.txt).
 #include "lod/budget_loop.h"
 
 namespace pond::lod {

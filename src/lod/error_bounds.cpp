@@ -5,10 +5,12 @@
 #include <cmath>
 #include <limits>
 
-#include <emmintrin.h>  // SSE2: the diagonal vertices four at a time
+#include "sim/wide_baseline.h"
 
 namespace pond::lod {
 namespace {
+
+using sim::WideBaseline;  // the diagonal vertices a vector at a time: SSE2 or NEON, four
 
 // Each sum rounds by at most 6e-8 relative; growing by 1e-5 keeps every bound above the exact
 // value it stands for.
@@ -86,58 +88,52 @@ void vertical_row(const Pass& pass, int y) {
   }
 }
 
-// SSE2 helpers for diagonal_row: four vertices (x0, x0 + 2, x0 + 4, x0 + 6) of one row at a time.
-// Lanes 0 and 2 of a, then of b.
-__m128 evens(__m128 a, __m128 b) { return _mm_shuffle_ps(a, b, _MM_SHUFFLE(2, 0, 2, 0)); }
-// c at columns i, i + 2, i + 4, i + 6 (reads i .. i + 7 only).
-__m128 every_other(const float* c, std::size_t i) { return evens(_mm_loadu_ps(c + i), _mm_loadu_ps(c + i + 4)); }
-// The bounds at ids i, i + 2, i + 4, i + 6: their errors and their least budgets.
-void bounds_at(const NestedBound* b, std::size_t i, __m128& error, __m128& least) {
-  const auto pair = [&](std::size_t k) { return _mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(b + k)); };
-  const __m128 t0 = _mm_unpacklo_ps(pair(i), pair(i + 2)), t1 = _mm_unpacklo_ps(pair(i + 4), pair(i + 6));
-  error = _mm_movelh_ps(t0, t1);
-  least = _mm_movehl_ps(t1, t0);
-}
-__m128 select(__m128 mask, __m128 a, __m128 b) { return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b)); }
+// Lanes alternately true and false, from any entry on: the squares of a row of them with the main
+// diagonal, from entry (a + b) & 1 (see diagonal_row).
+constexpr std::uint32_t kAlternating[17] = {~0u, 0, ~0u, 0, ~0u, 0, ~0u, 0, ~0u, 0, ~0u, 0, ~0u, 0, ~0u, 0, ~0u};
 
 // The diagonal ones are the centres (odd x, odd y) of the 2x2 squares. Their four children
 // (x -+ 1, y) and (x, y -+ 1) are scale-1 axis vertices, inside the grid whenever the vertex is,
-// so the general vertex()'s border checks and child loop go away. Four vertices at a time, their
-// squares' diagonals alternating (each lane the scalar formula's operations in its order), then
-// one at a time.
+// so the general vertex()'s border checks and child loop go away. W::width vertices at a time
+// (x, x + 2, ...: every other column, each vector load pair deinterleaved), their squares'
+// diagonals alternating (each lane the scalar formula's operations in its order), then one at a time.
+template <class W>
 void diagonal_row(const Pass& pass, int y) {
+  using F = typename W::F;
   const std::size_t row = static_cast<std::size_t>(pass.cols);
   const NestedBound* bounds = pass.out;
+  const float* const bound_floats = reinterpret_cast<const float*>(bounds);
   const int b = y / 2;  // the squares' row index
   const std::size_t at = static_cast<std::size_t>(y) * row;
-  // Lanes whose square has the main diagonal: (a + b) even, a = the square's index in the row.
-  const __m128 main_lanes = (b & 1) == 0 ? _mm_castsi128_ps(_mm_setr_epi32(-1, 0, -1, 0))
-                                         : _mm_castsi128_ps(_mm_setr_epi32(0, -1, 0, -1));
-  const __m128 half = _mm_set1_ps(0.5f), slack = _mm_set1_ps(pass.slack), grow = _mm_set1_ps(kBoundGrow);
+  const F half = W::set1(0.5f), slack = W::set1(pass.slack), grow = W::set1(kBoundGrow);
+  const int span = 2 * W::width;  // the columns a vector of vertices covers
+  // Lanes whose square has the main diagonal: (a + k + b) even, a + k = the square's index in the
+  // row (with an even width, the same lanes in every vector).
+  typename W::M main_lanes = W::load_mask(kAlternating + (b & 1));
   int x = 1, a = 0;
-  for (; x + 7 < pass.cols; x += 8, a += 4) {
+  for (; x + span - 1 < pass.cols; x += span, a += W::width) {
+    if constexpr (W::width % 2 != 0) main_lanes = W::load_mask(kAlternating + ((a + b) & 1));
     const std::size_t id = at + static_cast<std::size_t>(x), up = id - row, down = id + row;
-    __m128 d2 = _mm_setzero_ps();
+    F d2 = W::set1(0);
     for (const float* c : {pass.x, pass.y, pass.z}) {
       // Ends: (x - 1, y - 1) and (x + 1, y + 1) on a main diagonal, (x + 1, y - 1) and (x - 1, y + 1) else.
-      const __m128 up_left = evens(_mm_loadu_ps(c + up - 1), _mm_loadu_ps(c + up + 3));
-      const __m128 up_right = _mm_shuffle_ps(_mm_loadu_ps(c + up + 1), _mm_loadu_ps(c + up + 4), _MM_SHUFFLE(3, 1, 2, 0));
-      const __m128 down_left = evens(_mm_loadu_ps(c + down - 1), _mm_loadu_ps(c + down + 3));
-      const __m128 down_right = _mm_shuffle_ps(_mm_loadu_ps(c + down + 1), _mm_loadu_ps(c + down + 4), _MM_SHUFFLE(3, 1, 2, 0));
-      const __m128 e0 = select(main_lanes, up_left, up_right), e1 = select(main_lanes, down_right, down_left);
-      const __m128 d = _mm_sub_ps(every_other(c, id), _mm_mul_ps(half, _mm_add_ps(e0, e1)));
-      d2 = c == pass.x ? _mm_mul_ps(d, d) : _mm_add_ps(d2, _mm_mul_ps(d, d));
+      F up_left, up_right, down_left, down_right, here, unused;
+      W::load_evens_odds(c + up - 1, up_left, unused), W::load_evens_odds(c + up, unused, up_right);
+      W::load_evens_odds(c + down - 1, down_left, unused), W::load_evens_odds(c + down, unused, down_right);
+      W::load_evens_odds(c + id, here, unused);
+      const F e0 = W::select(main_lanes, up_left, up_right), e1 = W::select(main_lanes, down_right, down_left);
+      const F d = W::sub(here, W::mul(half, W::add(e0, e1)));
+      d2 = c == pass.x ? W::mul(d, d) : W::add(d2, W::mul(d, d));
     }
-    const __m128 dev = _mm_add_ps(_mm_sqrt_ps(d2), slack);
-    __m128 we, wl, ee, el, ne, nl, se, sl;
-    bounds_at(bounds, id - 1, we, wl), bounds_at(bounds, id + 1, ee, el);
-    bounds_at(bounds, up, ne, nl), bounds_at(bounds, down, se, sl);
-    const __m128 worst = _mm_max_ps(_mm_max_ps(we, ee), _mm_max_ps(ne, se));
-    const __m128 least = _mm_min_ps(_mm_min_ps(every_other(pass.budget, id), _mm_min_ps(wl, el)), _mm_min_ps(nl, sl));
-    const __m128 error = _mm_mul_ps(_mm_add_ps(dev, worst), grow);
-    const __m128 lo = _mm_unpacklo_ps(error, least), hi = _mm_unpackhi_ps(error, least);
-    _mm_storel_pi(reinterpret_cast<__m64*>(pass.out + id), lo), _mm_storeh_pi(reinterpret_cast<__m64*>(pass.out + id + 2), lo);
-    _mm_storel_pi(reinterpret_cast<__m64*>(pass.out + id + 4), hi), _mm_storeh_pi(reinterpret_cast<__m64*>(pass.out + id + 6), hi);
+    const F dev = W::add(W::sqrt(d2), slack);
+    // The bounds (error, least budget) at ids i, i + 2, ...: pairs of floats four apart.
+    F we, wl, ee, el, ne, nl, se, sl, budget, unused;
+    W::load_pairs(bound_floats + 2 * (id - 1), we, wl), W::load_pairs(bound_floats + 2 * (id + 1), ee, el);
+    W::load_pairs(bound_floats + 2 * up, ne, nl), W::load_pairs(bound_floats + 2 * down, se, sl);
+    W::load_evens_odds(pass.budget + id, budget, unused);
+    const F worst = W::max_of(W::max_of(we, ee), W::max_of(ne, se));
+    const F least = W::min_of(W::min_of(budget, W::min_of(wl, el)), W::min_of(nl, sl));
+    W::store_pairs(reinterpret_cast<float*>(pass.out + id), W::mul(W::add(dev, worst), grow), least);
   }
   for (; x + 1 < pass.cols; x += 2, ++a) {
     const std::size_t id = at + static_cast<std::size_t>(x);
@@ -160,7 +156,7 @@ void scale_one(const Pass& pass) {
     horizontal_row(pass, y);
     if (y >= 2) {
       vertical_row(pass, y - 1);
-      diagonal_row(pass, y - 1);
+      diagonal_row<WideBaseline>(pass, y - 1);
     }
   }
 }

@@ -8,36 +8,37 @@
 #include <limits>
 #include <string>
 
-#include <emmintrin.h>  // SSE2: four interleaved records at a time
-
 #include "core/errors.h"
 #include "lod/camera_budget.h"
+#include "sim/wide_baseline.h"
 
 namespace pond::lod {
 namespace {
+
+// The copies' table where the AVX2 copy does not run: SSE2 or NEON, four nodes at a time.
+using W = sim::WideBaseline;
+using F = W::F;
 
 // The largest magnitude is returned as a bit pattern with the sign cleared: those order like the
 // magnitudes, with inf and NaN above every finite value.
 std::uint32_t magnitude_bits(float v) { return std::bit_cast<std::uint32_t>(v) & 0x7fffffffu; }
 
-// What a copy learns of the coordinates on the way, four nodes at a time and then the tail.
+// What a copy learns of the coordinates on the way, a vector of nodes at a time and then the tail.
 // LargestMagnitude: the largest |coordinate|, in floats: `big` keeps the largest magnitudes (inf
-// included) and `nan` flags a NaN, which maxps alone would drop (fewer operations than a maximum
-// on bit patterns, which SSE2 has no instruction for). Its bits() are those of magnitude_bits.
+// included) and `nan` flags a NaN, which a vector maximum alone would drop (fewer operations than a
+// maximum on bit patterns, which SSE2 has no instruction for). Its bits() are those of magnitude_bits.
 struct LargestMagnitude {
-  __m128 big = _mm_setzero_ps(), nan = _mm_setzero_ps();
+  F big = W::set1(0);
+  W::M nan = W::none();
   std::uint32_t tail = 0;
-  void add(__m128 x, __m128 y, __m128 z) {
-    const __m128 abs = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
-    big = _mm_max_ps(big, _mm_max_ps(_mm_max_ps(_mm_and_ps(x, abs), _mm_and_ps(y, abs)), _mm_and_ps(z, abs)));
-    nan = _mm_or_ps(nan, _mm_or_ps(_mm_cmpunord_ps(x, y), _mm_cmpunord_ps(z, z)));
+  void add(F x, F y, F z) {
+    big = W::max_of(big, W::max_of(W::max_of(W::abs(x), W::abs(y)), W::abs(z)));
+    nan = W::either(nan, W::either(W::unordered(x, y), W::unordered(z, z)));
   }
   void add(float x, float y, float z) { tail = std::max({tail, magnitude_bits(x), magnitude_bits(y), magnitude_bits(z)}); }
   std::uint32_t bits() const {
-    if (_mm_movemask_ps(nan) != 0) return 0x7fc00000u;  // a quiet NaN
-    alignas(16) float lanes[4];
-    _mm_store_ps(lanes, big);
-    return std::max(tail, magnitude_bits(std::max({lanes[0], lanes[1], lanes[2], lanes[3]})));
+    if (W::any(nan)) return 0x7fc00000u;  // a quiet NaN
+    return std::max(tail, magnitude_bits(W::reduce_max(big)));  // no NaN: the same in any order
   }
 };
 
@@ -46,23 +47,23 @@ struct LargestMagnitude {
 // +-0; OR-ing the bit patterns keeps a NaN's (all exponent bits, some mantissa bit) and, unlike a
 // sum, makes no long chain of latencies.
 struct MaybeNotFinite {
-  __m128 seen = _mm_setzero_ps();
+  F seen = W::set1(0);
   float tail = 0;
-  void add(__m128 x, __m128 y, __m128 z) { seen = _mm_or_ps(seen, _mm_mul_ps(_mm_add_ps(_mm_add_ps(x, y), z), _mm_setzero_ps())); }
+  void add(F x, F y, F z) { seen = W::bit_or(seen, W::mul(W::add(W::add(x, y), z), W::set1(0))); }
   void add(float x, float y, float z) { tail += (x + y + z) * 0.0f; }
-  bool any() const { return _mm_movemask_ps(_mm_cmpunord_ps(seen, seen)) != 0 || tail != tail; }
+  bool any() const { return W::any(W::unordered(seen, seen)) || tail != tail; }
 };
 
 // Displacements in grid units -> world: x = (col + ux) * h, y = uy * h, z = (row + uz) * h, row by
-// row (no division per node), four columns at a time. SSE2 adds and multiplies round like the
-// scalar ones, so every node gets the same bits as the scalar tail.
+// row (no division per node), a vector of columns at a time. Vector adds and multiplies round like
+// the scalar ones, so every node gets the same bits as the scalar tail.
 template <class Tracker>
 void copy_displacements(const NodePositions& p, int row0, int col0, int rows, int window_cols, float* x, float* y,
                         float* z, Tracker& seen) {
   const std::size_t cols = static_cast<std::size_t>(window_cols), stride = p.stride, pitch = p.row_pitch;
   const std::size_t first = static_cast<std::size_t>(row0) * pitch + static_cast<std::size_t>(col0);
   const float h = p.grid_spacing;
-  const __m128 h4 = _mm_set1_ps(h), step4 = _mm_set1_ps(4.0f);
+  const F hw = W::set1(h), step = W::set1(W::width);
   // Row i's source nodes start at i * pitch, its copies at i * cols.
   const float fc = static_cast<float>(col0);
   for (std::size_t i = 0, row = 0, src_row = first; i < static_cast<std::size_t>(rows);
@@ -70,14 +71,14 @@ void copy_displacements(const NodePositions& p, int row0, int col0, int rows, in
     const float fi = static_cast<float>(static_cast<std::size_t>(row0) + i);
     std::size_t j = 0;
     if (stride == 1) {
-      const __m128 fi4 = _mm_set1_ps(fi);
-      __m128 fj4 = _mm_setr_ps(fc, fc + 1.0f, fc + 2.0f, fc + 3.0f);
-      for (; j + 4 <= cols; j += 4, fj4 = _mm_add_ps(fj4, step4)) {
+      const F fiw = W::set1(fi);
+      F fjw = W::add(W::set1(fc), W::iota());  // column numbers: exact in float (below 2^24)
+      for (; j + W::width <= cols; j += W::width, fjw = W::add(fjw, step)) {
         const std::size_t k = row + j, s = src_row + j;
-        const __m128 vx = _mm_mul_ps(_mm_add_ps(fj4, _mm_loadu_ps(p.x + s)), h4);
-        const __m128 vy = _mm_mul_ps(_mm_loadu_ps(p.y + s), h4);
-        const __m128 vz = _mm_mul_ps(_mm_add_ps(fi4, _mm_loadu_ps(p.z + s)), h4);
-        _mm_storeu_ps(x + k, vx), _mm_storeu_ps(y + k, vy), _mm_storeu_ps(z + k, vz);
+        const F vx = W::mul(W::add(fjw, W::load(p.x + s)), hw);
+        const F vy = W::mul(W::load(p.y + s), hw);
+        const F vz = W::mul(W::add(fiw, W::load(p.z + s)), hw);
+        W::store(x + k, vx), W::store(y + k, vy), W::store(z + k, vz);
         seen.add(vx, vy, vz);
       }
     }
@@ -98,13 +99,11 @@ void copy_records(const float* px, const float* py, const float* pz, std::size_t
   std::size_t k = 0;
   if (py == px + 1 && pz == px + 2 && stride >= 4) {
     // Interleaved records (STATE.npy: x, y, z, vx, vy, vz): each record's first four floats are
-    // one load, four records are transposed into x, y, z (and an unused fourth) vectors.
-    for (; k + 4 <= n; k += 4) {
-      const float* r = px + k * stride;
-      __m128 vx = _mm_loadu_ps(r), vy = _mm_loadu_ps(r + stride);
-      __m128 vz = _mm_loadu_ps(r + 2 * stride), unused = _mm_loadu_ps(r + 3 * stride);
-      _MM_TRANSPOSE4_PS(vx, vy, vz, unused);
-      _mm_storeu_ps(x + k, vx), _mm_storeu_ps(y + k, vy), _mm_storeu_ps(z + k, vz);
+    // one load, a vector's records are transposed into x, y, z vectors.
+    for (; k + W::width <= n; k += W::width) {
+      F vx, vy, vz;
+      W::load_records(px + k * stride, stride, vx, vy, vz);
+      W::store(x + k, vx), W::store(y + k, vy), W::store(z + k, vz);
       seen.add(vx, vy, vz);
     }
   }

@@ -1,16 +1,12 @@
 #pragma once
-// The exact scan's float pass (triangle_scan.h), built twice like the node budgets (budget_loop.h):
-// by triangle_scan.cpp with SSE2 lanes, four nodes a group, and by triangle_scan_avx2.cpp with
-// AVX2 lanes, eight. The AVX2 copy scans a whole small triangle in groups of row pieces instead
-// (group_scan). Every path decides in float only the nodes float rounding cannot mislead (inside
-// the slack of scan_by_rows()'s analysis) and the others by the same test in double, so all give
-// the same verdicts. Its templates are in an unnamed namespace: each file keeps its own copy, not
-// the linker's pick.
-//
-// L, the lanes: a vector type V of L::width floats, and set1, splat<i> (lane i of an __m128 in
-// every lane), iota (0, 1, ...), load (unaligned), add, sub, mul, and_, or_, less and greater (lane
-// masks), any (a mask has a lane set); `pairs` says whether it has group_scan's load_pair (two
-// four-float loads, one a half), load_mask and lane (lane k of a mask is set).
+// The exact scan's float pass (triangle_scan.h), written once against the wide-float tables
+// (sim/wide_*.h) and built like the node budgets (budget_loop.h): by triangle_scan.cpp with the
+// target's baseline table (SSE2 or NEON, four nodes a group), and on x86-64 by
+// triangle_scan_avx2.cpp with AVX2's, eight; the eight-lane copy scans a whole small triangle in
+// groups of row pieces instead (group_scan, with AVX2's load_halves). Every path decides in float
+// only the nodes float rounding cannot mislead (inside the slack of scan_by_rows()'s analysis) and
+// the others by the same test in double, so all give the same verdicts. The code of each copy is in
+// its file's inline namespace (sim/isa_namespace.h), not the linker's pick.
 #include <algorithm>
 #include <bit>
 #include <cstddef>
@@ -19,13 +15,13 @@
 #include <limits>
 #include <vector>
 
-#include <xmmintrin.h>  // a row's first value, its three coordinates in one vector
-
 #include "lod/grid_hierarchy.h"
 #include "lod/node_positions.h"
 #include "lod/triangle_scan.h"
+#include "sim/isa_namespace.h"
 
 namespace pond::lod {
+inline namespace POND_ISA {
 
 // The columns where each row of the closed triangle meets it. Its edges run at 0, 45 or 90
 // degrees, so on the rows it spans the triangle lies between at most two lines on the left and
@@ -58,6 +54,8 @@ class RowSpans {
   };
   Line left_[2], right_[2];
 };
+
+}  // namespace POND_ISA
 
 // A triangle's rows relative to its apex, which depend on its legs only: the first column and
 // length of each (RowSpans'), its first node's offset in arrays of a given pitch and its weights,
@@ -97,13 +95,13 @@ bool row_within_budget_double(const GridHierarchy& grid, const NodePositions& p,
 
 #if POND_LOD_AVX2
 // scan_triangle's and scan_thresholds' AVX2 copies (triangle_scan_avx2.cpp): the same operations
-// lane for lane, so the same bits.
+// lane for lane, so the same bits. (Declared here, defined there: outside the inline namespace.)
 bool scan_triangle_avx2(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, float largest,
                         const Tri& t, const TriCorners* c, const Tri& region, long long* visited);
 void scan_thresholds_avx2(const float* budget, std::size_t n, float largest, float* sure2);
 #endif
 
-namespace {
+inline namespace POND_ISA {
 
 // The rows of the triangle with legs (lx, ly) and (rx, ry) in arrays of `pitch` floats a row, or
 // nullptr for legs the tables do not hold. Each thread, and each copy of the scan, keeps the
@@ -114,7 +112,7 @@ struct ShapeTables {
   std::vector<ShapeTable> shapes;
 };
 constexpr int kPitches = 4;
-thread_local ShapeTables shape_tables[kPitches];
+inline thread_local ShapeTables shape_tables[kPitches];
 
 // shape_table()'s other cases: `pitch` not the most recent one, or the shape not yet tabled.
 // Out of line, so the common lookup stays a few instructions inlined into the scan.
@@ -143,14 +141,13 @@ inline const ShapeTable* shape_table(int lx, int ly, int rx, int ry, std::ptrdif
   return shape_table_miss(key, lx, ly, rx, ry, pitch);
 }
 
-// A triangle's interpolation for the row scan: the apex and the legs in world space (x, y, z, 0),
-// and as vectors built once per triangle, how much the interpolation moves per column and the
-// budgets' rounding slack. Along a row it is linear, so a row needs its first node's value only.
-template <class L>
+// A triangle's interpolation for the row scan, as vectors built once per triangle: how much it
+// moves per column, and the budgets' rounding slack. Along a row it is linear, so a row needs its
+// first node's value only.
+template <class W>
 struct ScanPlane {
-  __m128 a, l, r;
-  typename L::V step[3];
-  typename L::V slack;
+  typename W::F step[3];
+  typename W::F slack;
 };
 
 struct RowVerdict {
@@ -158,44 +155,46 @@ struct RowVerdict {
   bool close;  // a node is so near its budget that float cannot tell
 };
 
-// The squared misses of a row's nodes k .. k + L::width - 1 (kf: those k as floats) from the
+// The squared misses of a row's nodes k .. k + W::width - 1 (kf: those k as floats) from the
 // interpolation, which is `first` at the row's first node and moves by a step per column.
-template <class L>
-inline typename L::V squared_miss(const float* px, const float* py, const float* pz, int k, typename L::V kf,
-                                  const typename L::V first[3], const ScanPlane<L>& r) {
-  using V = typename L::V;
-  const V ex = L::sub(L::load(px + k), L::add(first[0], L::mul(kf, r.step[0])));
-  const V ey = L::sub(L::load(py + k), L::add(first[1], L::mul(kf, r.step[1])));
-  const V ez = L::sub(L::load(pz + k), L::add(first[2], L::mul(kf, r.step[2])));
-  return L::add(L::add(L::mul(ex, ex), L::mul(ey, ey)), L::mul(ez, ez));
+template <class W>
+inline typename W::F squared_miss(const float* px, const float* py, const float* pz, int k, typename W::F kf,
+                                  const typename W::F first[3], const ScanPlane<W>& r) {
+  using F = typename W::F;
+  const F ex = W::sub(W::load(px + k), W::add(first[0], W::mul(kf, r.step[0])));
+  const F ey = W::sub(W::load(py + k), W::add(first[1], W::mul(kf, r.step[1])));
+  const F ez = W::sub(W::load(pz + k), W::add(first[2], W::mul(kf, r.step[2])));
+  return W::add(W::add(W::mul(ex, ex), W::mul(ey, ey)), W::mul(ez, ez));
 }
 
-// The nodes k = 0 .. len-1 of a row, L::width at a time. The last group's lanes past the row read
+// The nodes k = 0 .. len-1 of a row, W::width at a time. The last group's lanes past the row read
 // the following nodes (or the arrays' padding) and are masked out, so there is no scalar tail.
 // First, one compare a node: is any miss over its sure-within threshold (scan_thresholds())? Only
 // a row where one is gets the exact test, which tells a node surely over from one too close to call.
-template <class L>
+template <class W>
 RowVerdict scan_row(const float* px, const float* py, const float* pz, const ScanBudgets& budgets, int len,
-                    const typename L::V first[3], const ScanPlane<L>& r) {
-  using V = typename L::V;
-  const V zero = L::set1(0), width = L::set1(L::width), end = L::set1(static_cast<float>(len));
-  V maybe = zero, kf = L::iota();  // exact integers
-  for (int k = 0; k < len; k += L::width, kf = L::add(kf, width)) {
-    const V e2 = L::and_(L::less(kf, end), squared_miss<L>(px, py, pz, k, kf, first, r));  // 0 past the row
-    maybe = L::or_(maybe, L::greater(e2, L::load(budgets.sure2 + k)));
+                    const typename W::F first[3], const ScanPlane<W>& r) {
+  using F = typename W::F;
+  using M = typename W::M;
+  const F width = W::set1(W::width), end = W::set1(static_cast<float>(len));
+  F kf = W::iota();  // exact integers
+  M maybe = W::none();
+  for (int k = 0; k < len; k += W::width, kf = W::add(kf, width)) {
+    const F e2 = W::keep(W::less(kf, end), squared_miss<W>(px, py, pz, k, kf, first, r));  // 0 past the row
+    maybe = W::either(maybe, W::greater(e2, W::load(budgets.sure2 + k)));
   }
-  if (!L::any(maybe)) return {false, false};
-  const V grow = L::set1(1 + 1e-6f);
-  V over = zero, close = zero;
-  kf = L::iota();
-  for (int k = 0; k < len; k += L::width, kf = L::add(kf, width)) {
-    const V live = L::less(kf, end);
-    const V e2 = squared_miss<L>(px, py, pz, k, kf, first, r);
-    const V high = L::add(L::load(budgets.budget + k), r.slack);
-    over = L::or_(over, L::and_(live, L::greater(e2, L::mul(L::mul(high, high), grow))));
-    close = L::or_(close, L::and_(live, L::greater(e2, L::load(budgets.sure2 + k))));
+  if (!W::any(maybe)) return {false, false};
+  const F grow = W::set1(1 + 1e-6f);
+  M over = W::none(), close = over;
+  kf = W::iota();
+  for (int k = 0; k < len; k += W::width, kf = W::add(kf, width)) {
+    const M live = W::less(kf, end);
+    const F e2 = squared_miss<W>(px, py, pz, k, kf, first, r);
+    const F high = W::add(W::load(budgets.budget + k), r.slack);
+    over = W::either(over, W::both(live, W::greater(e2, W::mul(W::mul(high, high), grow))));
+    close = W::either(close, W::both(live, W::greater(e2, W::load(budgets.sure2 + k))));
   }
-  return {L::any(over), L::any(close)};
+  return {W::any(over), W::any(close)};
 }
 
 // The float scan's rounding slack on a budget, for |coordinates| up to `largest` (see the analysis
@@ -241,31 +240,32 @@ inline WorldLegs world_legs(const TriCorners& c) {
 // row pieces at a time: each node's interpolation a + u l + w r from its own (exact) weights,
 // rounded as a row's first value is (so within scan_by_rows()'s analysis); the nodes float cannot
 // decide are judged in double. Counts the nodes visited into *count.
-template <class L>
+template <class W>
 bool group_scan(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, const Tri& t,
                 const TriCorners* c, const ShapeTable& table, std::ptrdiff_t apex, const WorldLegs& legs, float slack,
                 long long* count) {
-  using V = typename L::V;
-  static_assert(L::width == 8);
+  using F = typename W::F;
+  static_assert(W::width == 8);
   const float *px = p.x + apex, *py = p.y + apex, *pz = p.z + apex, *sure2 = budgets.sure2 + apex;
   const ShapeGroup* g = table.groups.data();
   const ShapeGroup* const end = g + table.groups.size();
   while (g != end) {
     // The groups up to the next one with a node float cannot call within, with the interpolation's
     // terms in registers: no call in this loop, so none of them is saved around one.
-    const V ax = L::set1(legs.a[0]), ay = L::set1(legs.a[1]), az = L::set1(legs.a[2]);
-    const V lx = L::set1(legs.l[0]), ly = L::set1(legs.l[1]), lz = L::set1(legs.l[2]);
-    const V rx = L::set1(legs.r[0]), ry = L::set1(legs.r[1]), rz = L::set1(legs.r[2]);
-    V e2 = L::set1(0), close = e2;
+    const F ax = W::set1(legs.a[0]), ay = W::set1(legs.a[1]), az = W::set1(legs.a[2]);
+    const F lx = W::set1(legs.l[0]), ly = W::set1(legs.l[1]), lz = W::set1(legs.l[2]);
+    const F rx = W::set1(legs.r[0]), ry = W::set1(legs.r[1]), rz = W::set1(legs.r[2]);
+    F e2 = W::set1(0);
+    typename W::M close = W::none();
     for (; g != end; ++g) {
       const std::int32_t lo = g->offset[0], hi = g->offset[1];
-      const V u = L::load(g->u), w = L::load(g->w), live = L::load_mask(g->live);
-      const V ex = L::sub(L::load_pair(px + lo, px + hi), L::add(L::add(ax, L::mul(u, lx)), L::mul(w, rx)));
-      const V ey = L::sub(L::load_pair(py + lo, py + hi), L::add(L::add(ay, L::mul(u, ly)), L::mul(w, ry)));
-      const V ez = L::sub(L::load_pair(pz + lo, pz + hi), L::add(L::add(az, L::mul(u, lz)), L::mul(w, rz)));
-      e2 = L::and_(live, L::add(L::add(L::mul(ex, ex), L::mul(ey, ey)), L::mul(ez, ez)));  // 0 off the triangle
-      close = L::greater(e2, L::load_pair(sure2 + lo, sure2 + hi));
-      if (L::any(close)) break;
+      const F u = W::load(g->u), w = W::load(g->w);
+      const F ex = W::sub(W::load_halves(px + lo, px + hi), W::add(W::add(ax, W::mul(u, lx)), W::mul(w, rx)));
+      const F ey = W::sub(W::load_halves(py + lo, py + hi), W::add(W::add(ay, W::mul(u, ly)), W::mul(w, ry)));
+      const F ez = W::sub(W::load_halves(pz + lo, pz + hi), W::add(W::add(az, W::mul(u, lz)), W::mul(w, rz)));
+      e2 = W::keep(W::load_mask(g->live), W::add(W::add(W::mul(ex, ex), W::mul(ey, ey)), W::mul(ez, ez)));  // 0 off the triangle
+      close = W::greater(e2, W::load_halves(sure2 + lo, sure2 + hi));
+      if (W::any(close)) break;
     }
     if (g == end) break;
     // Group g has a node near its budget: over for sure, or decided in double.
@@ -275,12 +275,13 @@ bool group_scan(const GridHierarchy& grid, const NodePositions& p, const ScanBud
       return false;
     };
     const float* budget = budgets.budget + apex;
-    const V high = L::add(L::load_pair(budget + lo, budget + hi), L::set1(slack));
-    if (L::any(L::greater(e2, L::mul(L::mul(high, high), L::set1(1 + 1e-6f))))) return fail();
+    const F high = W::add(W::load_halves(budget + lo, budget + hi), W::set1(slack));
+    if (W::any(W::greater(e2, W::mul(W::mul(high, high), W::set1(1 + 1e-6f))))) return fail();
     const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(grid.cols());
     const TriCorners corners = c ? *c : corners_of(grid, p, t);
-    for (int k = 0; k < L::width; ++k) {
-      if (!L::lane(close, k)) continue;
+    const unsigned closes = W::lanes_set(close);
+    for (int k = 0; k < W::width; ++k) {
+      if ((closes >> k & 1) == 0) continue;
       const std::ptrdiff_t node = apex + (k < 4 ? lo + k : hi + k - 4);
       const int y = static_cast<int>(node / pitch), x = static_cast<int>(node % pitch);
       if (!row_within_budget_double(grid, p, budgets.budget, t, corners, y, x, x)) return fail();
@@ -301,7 +302,7 @@ inline float inverse_square_leg(int lx, int ly) {
 // The float scan of `region`'s nodes against t's interpolation, row by row; `tabled` is the table of
 // region's shape, or nullptr, and `whole` says region is t. Out of line: scan_triangle() stays
 // small for its common case.
-template <class L>
+template <class W>
 [[gnu::noinline]] bool scan_by_rows(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets,
                                     float largest, const Tri& t, const TriCorners& c, const Tri& region,
                                     const ShapeTable* tabled, bool whole, long long* visited) {
@@ -324,20 +325,17 @@ template <class L>
   const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(grid.cols());
   long long count = 0;
   const float du = static_cast<float>(lx) * inv_len2, dw = static_cast<float>(rx) * inv_len2;
-  ScanPlane<L> plane;
-  for (int i = 0; i < 3; ++i) plane.step[i] = L::set1(du * legs.l[i] + dw * legs.r[i]);
-  plane.a = _mm_setr_ps(legs.a[0], legs.a[1], legs.a[2], 0), plane.l = _mm_setr_ps(legs.l[0], legs.l[1], legs.l[2], 0);
-  plane.r = _mm_setr_ps(legs.r[0], legs.r[1], legs.r[2], 0);
-  plane.slack = L::set1(slack);
+  ScanPlane<W> plane;
+  for (int i = 0; i < 3; ++i) plane.step[i] = W::set1(du * legs.l[i] + dw * legs.r[i]);
+  plane.slack = W::set1(slack);
   bool ok = true;
-  // Each row is tested whole (no early exit inside, it goes L::width nodes at a time), a row float
+  // Each row is tested whole (no early exit inside, it goes W::width nodes at a time), a row float
   // cannot decide once more in double, and the scan stops after the first row with a node over.
   const auto row = [&](std::ptrdiff_t base, int len, float u0, float w0) {
-    // The row's first value a + u0 l + w0 r, the three coordinates at once, each rounded as alone.
-    const __m128 f = _mm_add_ps(_mm_add_ps(plane.a, _mm_mul_ps(_mm_set1_ps(u0), plane.l)),
-                                _mm_mul_ps(_mm_set1_ps(w0), plane.r));
-    const typename L::V first[3] = {L::template splat<0>(f), L::template splat<1>(f), L::template splat<2>(f)};
-    const RowVerdict v = scan_row<L>(p.x + base, p.y + base, p.z + base,
+    // The row's first value (a + u0 l) + w0 r, in every lane.
+    typename W::F first[3];
+    for (int i = 0; i < 3; ++i) first[i] = W::set1((legs.a[i] + u0 * legs.l[i]) + w0 * legs.r[i]);
+    const RowVerdict v = scan_row<W>(p.x + base, p.y + base, p.z + base,
                                      {budgets.budget + base, budgets.sure2 + base, budgets.wide}, len, first, plane);
     count += len;
     ok = !v.over && (!v.close || row_within_budget_double(grid, p, budgets.budget, t, c, static_cast<int>(base / pitch),
@@ -373,7 +371,7 @@ template <class L>
 
 // The float scan of `region`'s nodes against t's interpolation (triangle_scan.h's within_budget):
 // a whole triangle of a shape tabled in groups by group_scan(), any other by rows.
-template <class L>
+template <class W>
 bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, float largest,
                    const Tri& t, const TriCorners* c, const Tri& region, long long* visited) {
   const std::ptrdiff_t pitch = static_cast<std::ptrdiff_t>(grid.cols());
@@ -381,18 +379,29 @@ bool scan_triangle(const GridHierarchy& grid, const NodePositions& p, const Scan
       shape_table(region.left.x - region.apex.x, region.left.y - region.apex.y, region.right.x - region.apex.x,
                   region.right.y - region.apex.y, pitch);
   const bool whole = region.apex == t.apex && region.left == t.left && region.right == t.right;
-  if constexpr (L::pairs) {
+  if constexpr (W::width == 8) {  // two row pieces of four a group
     if (whole && tabled && tabled->grouped) {
       long long count = 0;
       const WorldLegs legs = c ? world_legs(*c) : world_legs(grid, p, t);
-      const bool ok = group_scan<L>(grid, p, budgets, t, c, *tabled, t.apex.y * pitch + t.apex.x, legs,
+      const bool ok = group_scan<W>(grid, p, budgets, t, c, *tabled, t.apex.y * pitch + t.apex.x, legs,
                                     scan_slack(largest), &count);
       if (visited) *visited += count;
       return ok;
     }
   }
-  return scan_by_rows<L>(grid, p, budgets, largest, t, c ? *c : corners_of(grid, p, t), region, tabled, whole, visited);
+  return scan_by_rows<W>(grid, p, budgets, largest, t, c ? *c : corners_of(grid, p, t), region, tabled, whole, visited);
 }
 
-}  // namespace
+// sure2 = max(budget - slack, 0)^2 * (1 - 1e-6) for the n nodes, W::width at a time (the last
+// group's lanes past n into the padding): scan_thresholds() of triangle_scan.h.
+template <class W>
+void scan_thresholds_with(const float* budget, std::size_t n, float largest, float* sure2) {
+  const typename W::F slack = W::set1(scan_slack(largest)), shrink = W::set1(1 - 1e-6f), zero = W::set1(0);
+  for (std::size_t k = 0; k < n; k += W::width) {
+    const typename W::F low = W::max_of(W::sub(W::load(budget + k), slack), zero);
+    W::store(sure2 + k, W::mul(W::mul(low, low), shrink));
+  }
+}
+
+}  // namespace POND_ISA
 }  // namespace pond::lod

@@ -5,10 +5,9 @@
 #include <limits>
 #include <string>
 
-#include <emmintrin.h>  // SSE2: a node's four tiles, three bounds at a time
-
 #include "core/errors.h"
 #include "lod/position_copy.h"
+#include "sim/wide_baseline.h"
 
 namespace pond::lod {
 namespace {
@@ -67,20 +66,21 @@ TileBounds TileRanges::hull_at(std::span<const Point> nodes) const {
   constexpr std::size_t kFloats = sizeof(TileBounds) / sizeof(float);
   const unsigned last_a = static_cast<unsigned>(tiles_x_ - 1), last_b = static_cast<unsigned>(tiles_y_ - 1);
   const std::size_t row = static_cast<std::size_t>(tiles_x_) * kFloats;
-  __m128 low = _mm_set1_ps(kInf), high = _mm_set1_ps(-kInf);
+  using W = sim::WideBaseline;  // four lanes: SSE2 or NEON
+  static_assert(W::width == 4, "a tile's bounds are read four floats at a time");
+  W::F low = W::set1(kInf), high = W::set1(-kInf);
   for (const Point& p : nodes) {
     // (x - 1) / kTileCells and x / kTileCells, clamped to the grid's tiles (x = 0: tile 0 twice).
     const unsigned x = static_cast<unsigned>(p.x), y = static_cast<unsigned>(p.y);
     const std::size_t a0 = std::min((x - (x > 0)) / kTileCells, last_a) * kFloats, a1 = std::min(x / kTileCells, last_a) * kFloats;
     const std::size_t b0 = std::min((y - (y > 0)) / kTileCells, last_b) * row, b1 = std::min(y / kTileCells, last_b) * row;
     const float *t00 = tiles + b0 + a0, *t10 = tiles + b0 + a1, *t01 = tiles + b1 + a0, *t11 = tiles + b1 + a1;
-    const __m128 least = _mm_max_ps(_mm_max_ps(_mm_loadu_ps(t00), _mm_loadu_ps(t10)), _mm_max_ps(_mm_loadu_ps(t01), _mm_loadu_ps(t11)));
-    const __m128 greatest = _mm_min_ps(_mm_min_ps(_mm_loadu_ps(t00 + 2), _mm_loadu_ps(t10 + 2)),
-                                       _mm_min_ps(_mm_loadu_ps(t01 + 2), _mm_loadu_ps(t11 + 2)));
-    low = _mm_min_ps(low, least), high = _mm_max_ps(high, greatest);
+    const W::F least = W::max_of(W::max_of(W::load(t00), W::load(t10)), W::max_of(W::load(t01), W::load(t11)));
+    const W::F greatest = W::min_of(W::min_of(W::load(t00 + 2), W::load(t10 + 2)), W::min_of(W::load(t01 + 2), W::load(t11 + 2)));
+    low = W::min_of(low, least), high = W::max_of(high, greatest);
   }
-  alignas(16) float lo[4], hi[4];
-  _mm_store_ps(lo, low), _mm_store_ps(hi, high);
+  float lo[4], hi[4];
+  W::store(lo, low), W::store(hi, high);
   return {lo[0], lo[1], lo[2], hi[1], hi[2], hi[3]};
 }
 

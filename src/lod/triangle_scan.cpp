@@ -3,34 +3,12 @@
 #include <algorithm>
 #include <vector>
 
-#include <emmintrin.h>  // SSE2: the baseline's row scan, four nodes at a time
-
 #include "lod/scan_rows.h"
+#include "sim/wide_baseline.h"
 
 namespace pond::lod {
-namespace {
 
-// scan_rows.h's lanes for the baseline: SSE2, four floats.
-struct Sse2Lanes {
-  using V = __m128;
-  static constexpr int width = 4;
-  static V set1(float v) { return _mm_set1_ps(v); }
-  template <int i>
-  static V splat(__m128 v) { return _mm_shuffle_ps(v, v, _MM_SHUFFLE(i, i, i, i)); }
-  static V iota() { return _mm_setr_ps(0, 1, 2, 3); }
-  static V load(const float* p) { return _mm_loadu_ps(p); }
-  static V add(V a, V b) { return _mm_add_ps(a, b); }
-  static V sub(V a, V b) { return _mm_sub_ps(a, b); }
-  static V mul(V a, V b) { return _mm_mul_ps(a, b); }
-  static V and_(V a, V b) { return _mm_and_ps(a, b); }
-  static V or_(V a, V b) { return _mm_or_ps(a, b); }
-  static V less(V a, V b) { return _mm_cmplt_ps(a, b); }
-  static V greater(V a, V b) { return _mm_cmpgt_ps(a, b); }
-  static bool any(V m) { return _mm_movemask_ps(m) != 0; }
-  static constexpr bool pairs = false;  // SSE2's four lanes: its scans go by rows
-};
-
-}  // namespace
+using sim::WideBaseline;  // the scans' table where the AVX2 copy does not run (SSE2, NEON)
 
 const ShapeTable* make_shape_table(ShapeTable& table, int lx, int ly, int rx, int ry, std::ptrdiff_t pitch) {
   const float inv_len2 = inverse_square_leg(lx, ly);  // as scan_by_rows's
@@ -103,11 +81,7 @@ void scan_thresholds(const float* budget, std::size_t n, float largest, float* s
 #if POND_LOD_AVX2
   if (wide) return scan_thresholds_avx2(budget, n, largest, sure2);
 #endif
-  const __m128 slack = _mm_set1_ps(scan_slack(largest)), shrink = _mm_set1_ps(1 - 1e-6f), zero = _mm_setzero_ps();
-  for (std::size_t k = 0; k < n; k += 4) {  // the last group's lanes past n into the padding
-    const __m128 low = _mm_max_ps(_mm_sub_ps(_mm_loadu_ps(budget + k), slack), zero);
-    _mm_storeu_ps(sure2 + k, _mm_mul_ps(_mm_mul_ps(low, low), shrink));
-  }
+  scan_thresholds_with<WideBaseline>(budget, n, largest, sure2);
 }
 
 namespace {
@@ -115,10 +89,10 @@ namespace {
 // The scans, out of line like the AVX2 copy: each within_budget() below then only chooses and
 // jumps, with no registers of its own to save. `c`: t's corners, or nullptr where `p` holds them
 // (read there only where needed).
-[[gnu::noinline]] bool scan_triangle_sse2(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets,
+[[gnu::noinline]] bool scan_triangle_baseline(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets,
                                           float largest, const Tri& t, const TriCorners* c, const Tri& region,
                                           long long* visited) {
-  return scan_triangle<Sse2Lanes>(grid, p, budgets, largest, t, c, region, visited);
+  return scan_triangle<WideBaseline>(grid, p, budgets, largest, t, c, region, visited);
 }
 
 inline bool scan(const GridHierarchy& grid, const NodePositions& p, const ScanBudgets& budgets, float largest,
@@ -126,7 +100,7 @@ inline bool scan(const GridHierarchy& grid, const NodePositions& p, const ScanBu
 #if POND_LOD_AVX2
   if (budgets.wide) return scan_triangle_avx2(grid, p, budgets, largest, t, c, region, visited);
 #endif
-  return scan_triangle_sse2(grid, p, budgets, largest, t, c, region, visited);
+  return scan_triangle_baseline(grid, p, budgets, largest, t, c, region, visited);
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 #pragma once
 // One substep of the water grid over a range of rows, written once against the wide-float
-// operation table W (wide_scalar.h, wide_sse2.h, wide_avx2.h, wide_avx512.h). Instantiated per
+// operation table W (wide_scalar.h, wide_sse2.h, wide_avx2.h, wide_avx512.h, wide_neon.h). Instantiated per
 // backend in kernel_<backend>.cpp.
 //
 // The algorithm (the paper's optimized CPU loop, vectorized along a row):

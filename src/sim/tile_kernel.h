@@ -13,7 +13,7 @@
 #include "sim/step_view.h"
 #include "sim/tile_bounds.h"
 #include "sim/wide_scalar.h"
-#include "sim/wide_sse2.h"
+#include "sim/wide_baseline.h"
 
 namespace pond::sim {
 inline namespace POND_ISA {
@@ -27,15 +27,15 @@ inline constexpr int kPassGroup = V::width == 16 ? 8 : 4;
 // them in.
 inline constexpr int kWidePassRows = 4;
 
-// The wide table the bounds use with backend W: W's own, and SSE2's (the baseline of x86-64 and
-// of the IA-32 build) for the scalar backend, whose one-lane table would keep 32 bounds per tile.
+// The wide table the bounds use with backend W: W's own, and the target's baseline (SSE2, NEON:
+// wide_baseline.h) for the scalar backend, whose one-lane table would keep 32 bounds per tile.
 template <class W>
 struct BoundsWide {
   using type = W;
 };
 template <>
 struct BoundsWide<WideScalar> {
-  using type = WideSse2;
+  using type = WideBaseline;
 };
 
 // The bounds of columns [j, j + K * V::width) (`column` is column j's in TileSink::columns) over

@@ -2,6 +2,7 @@
 // The AVX2 backend of the wide-float operation table: 8 floats per operation. Compiled only in the
 // translation unit built with -mavx2 (never -mfma: a fused multiply-add rounds once instead of
 // twice and would change the bits).
+#include <cstddef>
 #include <cstdint>
 #include <immintrin.h>
 
@@ -49,6 +50,36 @@ struct WideAvx2 {
     alignas(32) float l[8];
     _mm256_store_ps(l, v);
     return ((l[0] + l[1]) + (l[2] + l[3])) + ((l[4] + l[5]) + (l[6] + l[7]));
+  }
+
+  // The LOD's operations (wide_scalar.h). The compares are SSE2's (ordered, signalling).
+  static F iota() { return _mm256_setr_ps(0, 1, 2, 3, 4, 5, 6, 7); }
+  static F abs(F v) { return _mm256_andnot_ps(_mm256_set1_ps(-0.0f), v); }
+  static F sqrt(F v) { return _mm256_sqrt_ps(v); }
+  static M less(F a, F b) { return _mm256_cmp_ps(a, b, _CMP_LT_OS); }
+  static M greater(F a, F b) { return _mm256_cmp_ps(a, b, _CMP_GT_OS); }
+  static M unordered(F a, F b) { return _mm256_cmp_ps(a, b, _CMP_UNORD_Q); }
+  static M none() { return _mm256_setzero_ps(); }
+  static M either(M a, M b) { return _mm256_or_ps(a, b); }
+  static M both(M a, M b) { return _mm256_and_ps(a, b); }
+  static F select(M m, F a, F b) { return _mm256_blendv_ps(b, a, m); }
+  static F bit_or(F a, F b) { return _mm256_or_ps(a, b); }
+  static bool any(M m) { return _mm256_movemask_ps(m) != 0; }
+  static unsigned lanes_set(M m) { return static_cast<unsigned>(_mm256_movemask_ps(m)); }
+  static M load_mask(const std::uint32_t* p) {
+    return _mm256_castsi256_ps(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(p)));
+  }
+  // Lanes 0-3 from lo, 4-7 from hi: two four-float loads (the LOD's scan of short row pieces).
+  static F load_halves(const float* lo, const float* hi) { return _mm256_loadu2_m128(hi, lo); }
+  // Records k and k + 4 in the two halves, each four-by-four transposed in its half.
+  static void load_records(const float* r, std::size_t stride, F& x, F& y, F& z) {
+    const auto pair = [&](std::size_t k) { return _mm256_loadu2_m128(r + (k + 4) * stride, r + k * stride); };
+    const __m256 a0 = pair(0), a1 = pair(1), a2 = pair(2), a3 = pair(3);
+    const __m256 xy01 = _mm256_unpacklo_ps(a0, a1), xy23 = _mm256_unpacklo_ps(a2, a3);
+    const __m256 zw01 = _mm256_unpackhi_ps(a0, a1), zw23 = _mm256_unpackhi_ps(a2, a3);
+    x = _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(1, 0, 1, 0));
+    y = _mm256_shuffle_ps(xy01, xy23, _MM_SHUFFLE(3, 2, 3, 2));
+    z = _mm256_shuffle_ps(zw01, zw23, _MM_SHUFFLE(1, 0, 1, 0));
   }
 };
 

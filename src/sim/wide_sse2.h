@@ -1,6 +1,7 @@
 #pragma once
 // The SSE2 backend of the wide-float operation table: 4 floats per operation. SSE2 is the
 // Pentium 4 / IA-32 baseline the paper's "next step" names; the same header builds for -m32.
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <emmintrin.h>
@@ -50,6 +51,44 @@ struct WideSse2 {
     alignas(16) float l[4];
     _mm_store_ps(l, v);
     return (l[0] + l[1]) + (l[2] + l[3]);
+  }
+
+  // The LOD's operations (wide_scalar.h).
+  static F iota() { return _mm_setr_ps(0, 1, 2, 3); }
+  static F abs(F v) { return _mm_andnot_ps(_mm_set1_ps(-0.0f), v); }
+  static F sqrt(F v) { return _mm_sqrt_ps(v); }
+  static M less(F a, F b) { return _mm_cmplt_ps(a, b); }
+  static M greater(F a, F b) { return _mm_cmpgt_ps(a, b); }
+  static M unordered(F a, F b) { return _mm_cmpunord_ps(a, b); }
+  static M none() { return _mm_setzero_ps(); }
+  static M either(M a, M b) { return _mm_or_ps(a, b); }
+  static M both(M a, M b) { return _mm_and_ps(a, b); }
+  static F select(M m, F a, F b) { return _mm_or_ps(_mm_and_ps(m, a), _mm_andnot_ps(m, b)); }
+  static F bit_or(F a, F b) { return _mm_or_ps(a, b); }
+  static bool any(M m) { return _mm_movemask_ps(m) != 0; }
+  static unsigned lanes_set(M m) { return static_cast<unsigned>(_mm_movemask_ps(m)); }
+  static M load_mask(const std::uint32_t* p) { return _mm_castsi128_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p))); }
+  static void load_evens_odds(const float* p, F& even, F& odd) {
+    const __m128 a = _mm_loadu_ps(p), b = _mm_loadu_ps(p + 4);
+    even = _mm_shuffle_ps(a, b, _MM_SHUFFLE(2, 0, 2, 0));
+    odd = _mm_shuffle_ps(a, b, _MM_SHUFFLE(3, 1, 3, 1));
+  }
+  static void load_pairs(const float* p, F& first, F& second) {
+    const auto pair = [&](int k) { return _mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(p + 4 * k)); };
+    const __m128 t0 = _mm_unpacklo_ps(pair(0), pair(1)), t1 = _mm_unpacklo_ps(pair(2), pair(3));
+    first = _mm_movelh_ps(t0, t1);
+    second = _mm_movehl_ps(t1, t0);
+  }
+  static void store_pairs(float* p, F first, F second) {
+    const __m128 lo = _mm_unpacklo_ps(first, second), hi = _mm_unpackhi_ps(first, second);
+    _mm_storel_pi(reinterpret_cast<__m64*>(p), lo), _mm_storeh_pi(reinterpret_cast<__m64*>(p + 4), lo);
+    _mm_storel_pi(reinterpret_cast<__m64*>(p + 8), hi), _mm_storeh_pi(reinterpret_cast<__m64*>(p + 12), hi);
+  }
+  static void load_records(const float* r, std::size_t stride, F& x, F& y, F& z) {
+    __m128 a = _mm_loadu_ps(r), b = _mm_loadu_ps(r + stride), c = _mm_loadu_ps(r + 2 * stride);
+    __m128 unused = _mm_loadu_ps(r + 3 * stride);
+    _MM_TRANSPOSE4_PS(a, b, c, unused);
+    x = a, y = b, z = c;
   }
 };
 

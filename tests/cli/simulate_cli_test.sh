@@ -70,18 +70,21 @@ expect_bad "radius" --steps 5 --scene "$work/radius.json" $out
 expect_bad "mode" --steps 5 --scene "$work/mode.json" $out
 expect_bad "blew up" --steps 50 --scene "$work/blowup.json" $out
 expect_bad "output folder" --steps 5 --scene "$work/ok.json" --out "$work/no/such/dir/state.npy"
-# A backend this CPU lacks, on any CPU: AVX2 masked out (src/sim/backends.h), or absent (IA-32).
+# A backend this CPU lacks, on any CPU: AVX2 masked out (src/sim/backends.h), or absent (IA-32,
+# aarch64); NEON masked out (aarch64) or absent (x86).
 export POND_CPU_FEATURES_MASK=avx2
 expect_bad "solver avx2" --steps 5 --solver avx2 $out
+POND_CPU_FEATURES_MASK=neon
+expect_bad "solver neon" --steps 5 --solver neon $out
 POND_CPU_FEATURES_MASK=avx2,mmx
 expect_bad "POND_CPU_FEATURES_MASK" --steps 5 $out
 unset POND_CPU_FEATURES_MASK
 }
 [ ! -e "$work/no" ] || fail "a missing output folder was created"
-# ... while auto falls back to the widest backend left: sse.
+# ... while auto falls back to the widest backend left: sse (neon on aarch64, where AVX2 is absent).
 POND_CPU_FEATURES_MASK=avx2 "$pond" simulate --steps 5 --scene "$work/ok.json" --out "$work/masked.npy" \
   > "$work/stdout" 2> "$work/stderr" || fail "auto with AVX2 masked: $(cat "$work/stderr")"
-grep -q " on sse x " "$work/stdout" || fail "auto with AVX2 masked did not run sse: $(cat "$work/stdout")"
+grep -q " on \(sse\|neon\) x " "$work/stdout" || fail "auto with AVX2 masked did not run sse or neon: $(cat "$work/stdout")"
 
 # Bodies: --bodies-out writes float32 (B, 6); bad bodies exit 2 naming the key, writing nothing.
 "$pond" simulate --steps 40 --scene "$scenes/bodies.json" --out "$work/b_state.npy" --bodies-out "$work/bodies.npy" \
@@ -100,18 +103,18 @@ expect_bad "bodies\[0\].position is outside the grid" --steps 5 --scene "$work/b
 printf '{"bodies": [{"motion": "kinematic", "radius": 2, "path": [[9, 1, 0, 1], [3, 2, 0, 2]]}]}' > "$work/body_path.json"
 expect_bad "bodies\[0\].path\[1\]" --steps 5 --scene "$work/body_path.json" $out
 expect_bad "bodies-out" --steps 5 --scene "$work/ok.json" $out --bodies-out "$work/no/such/dir/b.npy"
-for solver in scalar sse avx2; do
+for solver in scalar sse avx2 neon; do
   "$pond" simulate --steps 40 --scene "$scenes/bodies.json" --solver $solver --out "$work/bs_$solver.npy" \
-    --bodies-out "$work/bb_$solver.npy" > /dev/null 2>&1 || continue  # avx2 may be absent
+    --bodies-out "$work/bb_$solver.npy" > /dev/null 2>&1 || continue  # absent from this build
   cmp -s "$work/bodies.npy" "$work/bb_$solver.npy" || fail "bodies on $solver differ"
   cmp -s "$work/b_state.npy" "$work/bs_$solver.npy" || fail "state with bodies on $solver differs"
 done
 
 # The same scene on every backend and thread count gives the same bytes.
-for solver in scalar sse avx2; do
+for solver in scalar sse avx2 neon; do
   for threads in 1 2; do
     "$pond" simulate --steps 30 --scene "$work/ok.json" --solver $solver --threads $threads \
-      --out "$work/s_${solver}_$threads.npy" > /dev/null 2>&1 || continue  # avx2 may be absent
+      --out "$work/s_${solver}_$threads.npy" > /dev/null 2>&1 || continue  # absent from this build
     cmp -s "$work/s_scalar_1.npy" "$work/s_${solver}_$threads.npy" || fail "$solver x $threads differs"
   done
 done

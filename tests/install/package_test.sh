@@ -13,14 +13,8 @@ failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 arch=$(dpkg --print-architecture)
-if ! "$cpack" -G DEB --config "$build/CPackConfig.cmake" -B "$tmp/out" > "$tmp/cpack.log" 2>&1; then
-  echo "FAIL: cpack: $(cat "$tmp/cpack.log")"; exit 1
-fi
-deb=$tmp/out/pond_${version}_$arch.deb
-[ -f "$deb" ] || { echo "FAIL: no pond_${version}_$arch.deb, only: $(ls "$tmp/out")"; exit 1; }
-
-field() { dpkg-deb -f "$deb" "$1"; }
-has() { echo "$1" | tr ',' '\n' | sed 's/^ *//; s/ *(.*//' | grep -qx "$2"; }  # package $2 in list $1
+. "$(dirname "$0")/deb_fields.sh"
+make_deb "$cpack" "$build" "pond_${version}_$arch.deb"
 [ "$(field Package)" = pond ] || fail "Package: $(field Package)"
 [ "$(field Version)" = "$version" ] || fail "Version: $(field Version), expected $version"
 [ "$(field Architecture)" = "$arch" ] || fail "Architecture: $(field Architecture)"

@@ -186,6 +186,7 @@ std::string forcing_error(Backend b) {
 // A backend this CPU lacks, on any CPU: AVX2 masked out (and AVX-512F with it, as on a real CPU
 // without AVX2). Forcing it is an InputError naming it; auto falls back to SSE; SSE still runs.
 TEST(Backends, ForcingAMaskedOutBackendFailsClearly) {
+  if (!compiled_in(Backend::sse)) GTEST_SKIP() << "an aarch64 build: no x86 backends (NEON's below)";
   const bool in_build = step_rows_avx2(shared::kRsqrtStepsExact, false, false) != nullptr;  // not in IA-32 builds
   const CpuFeaturesMask mask("avx2");
   EXPECT_FALSE(cpu_supports(Backend::avx2));
@@ -202,9 +203,34 @@ TEST(Backends, ForcingAMaskedOutBackendFailsClearly) {
 }
 
 TEST(Backends, MaskingSse2LeavesScalar) {
+  if (!compiled_in(Backend::sse)) GTEST_SKIP() << "an aarch64 build: no x86 backends (NEON's below)";
   const CpuFeaturesMask mask("avx512f,sse2");
   EXPECT_EQ(best_backend(), Backend::scalar);
   EXPECT_EQ(forcing_error(Backend::sse), "solver sse: SSE2 is masked out by POND_CPU_FEATURES_MASK");
+}
+
+// NEON: auto's choice on aarch64, where every CPU has it; masked out, forcing it is an InputError
+// naming it and auto falls back to scalar. In an x86 build it is not in the build, and the x86
+// features' mask does not touch it (nor neon's theirs).
+TEST(Backends, NeonIsAutosChoiceOnlyInAnAarch64Build) {
+  const bool aarch64 = compiled_in(Backend::neon);
+  EXPECT_EQ(aarch64, !compiled_in(Backend::sse));
+  if (aarch64) {
+    EXPECT_EQ(best_backend(), Backend::neon);
+    {
+      const CpuFeaturesMask mask("avx2,sse2");  // another architecture's: hides nothing here
+      EXPECT_EQ(best_backend(), Backend::neon);
+    }
+    const CpuFeaturesMask mask("neon");
+    EXPECT_EQ(best_backend(), Backend::scalar);
+    EXPECT_EQ(forcing_error(Backend::neon), "solver neon: NEON is masked out by POND_CPU_FEATURES_MASK");
+  } else {
+    const std::string what = forcing_error(Backend::neon);
+    EXPECT_NE(what.find("solver neon is not in this build (its CPU solvers: scalar sse"), std::string::npos) << what;
+    const Backend best = best_backend();
+    const CpuFeaturesMask mask("neon");
+    EXPECT_EQ(best_backend(), best);
+  }
 }
 
 TEST(Backends, MaskHidesOnlyWhatItNames) {
@@ -220,7 +246,7 @@ TEST(Backends, MaskHidesOnlyWhatItNames) {
     EXPECT_EQ(best_backend(), best);
   }
   const CpuFeaturesMask mask("avx2,mmx");
-  EXPECT_THROW(cpu_supports(Backend::sse), InputError);  // a typo is an error, not an empty mask
+  EXPECT_THROW(best_backend(), InputError);  // a typo is an error, not an empty mask
 }
 
 }  // namespace

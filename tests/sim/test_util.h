@@ -36,7 +36,7 @@ inline sim::Perturbation splash(double row, double col, double radius = 2.0, dou
 // The CPU backends this machine runs (compiled in, supported, not masked).
 inline std::vector<sim::Backend> available_backends() {
   std::vector<sim::Backend> out;
-  for (sim::Backend b : {sim::Backend::scalar, sim::Backend::sse, sim::Backend::avx2, sim::Backend::avx512})
+  for (sim::Backend b : sim::kBackends)
     if (sim::cpu_supports(b)) out.push_back(b);
   return out;
 }
