@@ -10,6 +10,7 @@ packages=(
   libglfw3-dev libglm-dev libimgui-dev libstb-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev libmeshoptimizer-dev
   xvfb xauth twm time gcc-multilib g++-multilib
+  x11-utils  # tests/demo/storm_test.sh: xwininfo, to wait until the window manager runs
   qemu-user  # tests/cli/ia32_golden_test.sh, on kernels that cannot run 32-bit programs
   gnuplot-nox
   clang-14 libclang-rt-14-dev  # scripts/fuzz.sh: libFuzzer and clang's ASan/UBSan runtimes
