@@ -37,7 +37,7 @@ PlainNpy<T> read_plain_npy(const std::string& path, const char* descr) {
   PlainNpy<T> out;
   std::stringstream dims(header.substr(open + 10, close - open - 10));
   for (std::string d; std::getline(dims, d, ',');)
-    if (d.find_first_not_of(' ') != std::string::npos) out.shape.push_back(std::stoull(d));
+    if (d.find_first_not_of(' ') != std::string::npos) out.shape.push_back(static_cast<std::size_t>(std::stoull(d)));
   std::size_t count = 1;
   for (std::size_t d : out.shape) count *= d;
   if (bytes.size() - 10 - header_len != count * sizeof(T)) bad("payload size differs from the shape's");
