@@ -62,7 +62,7 @@ grep -q "146 frames" "$work/stdout" || fail "no summary line: $(cat "$work/stdou
 share() { "$probe" share "$work/$1" "$work/$2" "$3" 2> /dev/null || echo missing; }
 same() {  # same A B WHAT: equal bit for bit
   s=$(share "$1" "$2" 0)
-  [ "$s" = "0.0000" ] || fail "$3: $1 and $2 differ ($s of the pixels)"
+  [ "$s" = 0.000000 ] || fail "$3: $1 and $2 differ ($s of the pixels)"
 }
 differs() {  # differs A B WHAT: over 0.2 % of the pixels more than 8 levels apart
   s=$(share "$1" "$2" 8)

@@ -93,12 +93,12 @@ int main(int argc, char** argv) {
   if (argc == 7) {
     const Rgba a = read(argv[1]), b = read(argv[2]);
     const int x = std::atoi(argv[3]), y = std::atoi(argv[4]), r = std::atoi(argv[5]), levels = std::atoi(argv[6]);
-    std::printf("%.4f\n", share(a, b, x - r, y - r, x + r, y + r, levels));
+    std::printf("%.6f\n", share(a, b, x - r, y - r, x + r, y + r, levels));
     return 0;
   }
   if (argc == 5 && std::strcmp(argv[1], "share") == 0) {
     const Rgba a = read(argv[2]), b = read(argv[3]);
-    std::printf("%.4f\n", share(a, b, 0, 0, a.width - 1, a.height - 1, std::atoi(argv[4])));
+    std::printf("%.6f\n", share(a, b, 0, 0, a.width - 1, a.height - 1, std::atoi(argv[4])));
     return 0;
   }
   if (argc == 3 && std::strcmp(argv[1], "size") == 0) {
