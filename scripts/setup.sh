@@ -10,6 +10,7 @@ packages=(
   libglfw3-dev libglm-dev libimgui-dev libstb-dev
   nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev libmeshoptimizer-dev
   xvfb xauth twm time gcc-multilib g++-multilib
+  x11-utils  # tests/demo/storm_test.sh: xwininfo, to wait until the window manager runs
   qemu-user  # tests/cli/ia32_golden_test.sh on kernels that cannot run 32-bit programs; the arm64 tests
   # The arm64 preset (cmake/Aarch64Toolchain.cmake): clang-14 (below) over Debian's cross sysroot, not
   # g++-aarch64-linux-gnu (it conflicts with gcc-multilib); GoogleTest's sources for its tests.

@@ -1,4 +1,5 @@
-// What the wind tree costs per frame at 1280x720 on scenes/demo_257.json, by configuration: frame
+// What the wind tree costs per frame at 1280x720 on scenes/demo_257.json, by configuration (and the
+// length-preserving bend against the article's, which test_tree_render.cpp used to time): frame
 // loops on one device, one without the tree and one per tree configuration, drawn in turn frame by
 // frame (the water frozen, so every loop does the same water work) so that a busy machine slows
 // them alike. Prints each configuration's median draw ms and its excess over the loop without a
@@ -25,6 +26,7 @@ using namespace pond;
 struct Config {
   const char* name;
   bool tree, level_of_detail, leaves;
+  tree::TreeBend bend = tree::TreeBend::article;
 };
 
 double median(std::vector<double> v) {
@@ -40,7 +42,10 @@ int main(int argc, char** argv) {
   const Config configs[] = {{"no tree", false, false, false},
                             {"tubes, every level (LOD off)", true, false, true},
                             {"LOD: tubes + twig lines", true, true, true},
-                            {"LOD, no leaves", true, true, false}};
+                            {"LOD, no leaves", true, true, false},
+                            // The length-preserving bend walks every vertex's ancestors in the
+                            // vertex shader: its cost against the article's bend, every level drawn.
+                            {"tubes, keep-length bend", true, false, true, tree::TreeBend::keep_length}};
   gpu::Context ctx{gpu::ContextOptions{}};
   const render::RenderTarget target(ctx, 1280, 720);
   gpu::GpuSolvers solvers(ctx);
@@ -52,7 +57,9 @@ int main(int argc, char** argv) {
     sessions.back()->advance(200);
     sessions.back()->catch_up_wind();
     loops.push_back(std::make_unique<render::FrameLoop>(ctx, scene, *sessions.back(), &solvers, render::RenderTarget::kFormat));
-    trees.push_back(std::make_unique<render::TreeDrawable>(ctx, *loops.back(), *scene.tree));
+    tree::TreeSpec spec = *scene.tree;
+    spec.bend = c.bend;
+    trees.push_back(std::make_unique<render::TreeDrawable>(ctx, *loops.back(), spec));
     trees.back()->set_level_of_detail(c.level_of_detail);
     trees.back()->set_leaves(c.leaves);
     if (c.tree) loops.back()->add_drawable(*trees.back());

@@ -41,13 +41,19 @@ class ParityLog {
 }  // namespace
 
 std::optional<Difference> first_difference(const sim::WaterState& cpu, const sim::WaterState& gpu) {
+  if (cpu.nodes() != gpu.nodes())
+    return Difference{.node = std::min(cpu.nodes(), gpu.nodes()), .count = true, .cpu_count = cpu.nodes(),
+                      .gpu_count = gpu.nodes()};
   for (std::size_t n = 0; n < cpu.nodes(); ++n)
     for (int c = 0; c < 6; ++c) {
       const float a = component(cpu, c)[n], b = component(gpu, c)[n];
       if (std::bit_cast<std::uint32_t>(a) != std::bit_cast<std::uint32_t>(b))
         return Difference{.step = 0, .node = n, .component = c, .cpu = a, .gpu = b};
     }
-  for (std::size_t k = 0; k < std::min(cpu.bodies.size(), gpu.bodies.size()); ++k) {
+  if (cpu.bodies.size() != gpu.bodies.size())
+    return Difference{.node = std::min(cpu.bodies.size(), gpu.bodies.size()), .body = true, .count = true,
+                      .cpu_count = cpu.bodies.size(), .gpu_count = gpu.bodies.size()};
+  for (std::size_t k = 0; k < cpu.bodies.size(); ++k) {
     const sim::BodyState &p = cpu.bodies[k], &q = gpu.bodies[k];
     const float a[6] = {p.x, p.y, p.z, p.vx, p.vy, p.vz}, b[6] = {q.x, q.y, q.z, q.vx, q.vy, q.vz};
     for (int c = 0; c < 6; ++c)
@@ -61,6 +67,11 @@ std::string describe(const Difference& d, const sim::WaterModel& m) {
   static const char* names[6] = {"ux", "uy", "uz", "vx", "vy", "vz"};
   static const char* body_names[6] = {"x", "y", "z", "vx", "vy", "vz"};
   char text[256];
+  if (d.count) {
+    std::snprintf(text, sizeof text, "after step %" PRId64 " the states hold different numbers of %s: cpu %zu, gpu %zu",
+                  d.step, d.body ? "bodies" : "nodes", d.cpu_count, d.gpu_count);
+    return text;
+  }
   if (d.body) {
     std::snprintf(text, sizeof text, "first difference after step %" PRId64 " at body %zu %s: cpu %a (0x%08x) gpu %a (0x%08x)",
                   d.step, d.node, body_names[d.component], static_cast<double>(d.cpu), std::bit_cast<std::uint32_t>(d.cpu),

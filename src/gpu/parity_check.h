@@ -25,9 +25,13 @@ struct Difference {
   int component = 0;     // 0..5 = ux uy uz vx vy vz (a body's x y z vx vy vz)
   float cpu = 0, gpu = 0;
   bool body = false;     // the water is equal and body `node` differs
+  bool count = false;    // the numbers of nodes (with `body`: of bodies) differ: cpu_count, gpu_count
+  std::size_t cpu_count = 0, gpu_count = 0;
 };
 
-// The first differing node of two states, by node then component, then the first differing body; nullopt when equal bit for bit.
+// The first difference of two states: the numbers of nodes, then the first differing node by node
+// then component, then the numbers of bodies, then the first differing body; nullopt when equal bit
+// for bit. A body that one state has and the other lacks is a difference like any other.
 std::optional<Difference> first_difference(const sim::WaterState& cpu, const sim::WaterState& gpu);
 
 std::string describe(const Difference& d, const sim::WaterModel& model);

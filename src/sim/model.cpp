@@ -56,10 +56,12 @@ PerturbationTable tabulate(const Perturbation& p, const WaterModel& m) {
   t.mode = p.mode;
   const double h = m.spacing;
   const double reach = 3.0 * p.radius / h;  // in index units
-  const int i0 = std::max(0, static_cast<int>(std::ceil(p.row - reach)));
-  const int i1 = std::min(m.rows - 1, static_cast<int>(std::floor(p.row + reach)));
-  const int j0 = std::max(0, static_cast<int>(std::ceil(p.col - reach)));
-  const int j1 = std::min(m.cols - 1, static_cast<int>(std::floor(p.col + reach)));
+  // Clamped to the grid before the conversion to int: a radius far beyond the grid reaches all of it.
+  const double last_row = m.rows - 1, last_col = m.cols - 1;
+  const int i0 = static_cast<int>(std::clamp(std::ceil(p.row - reach), 0.0, last_row));
+  const int i1 = static_cast<int>(std::clamp(std::floor(p.row + reach), 0.0, last_row));
+  const int j0 = static_cast<int>(std::clamp(std::ceil(p.col - reach), 0.0, last_col));
+  const int j1 = static_cast<int>(std::clamp(std::floor(p.col + reach), 0.0, last_col));
   const double limit2 = 9.0 * p.radius * p.radius;
   for (int i = i0; i <= i1; ++i)
     for (int j = j0; j <= j1; ++j) {

@@ -79,17 +79,40 @@ TEST(BodyGrab, ALiftedBallIsThrownWithTheVerticalVelocity) {
   EXPECT_GT(session.bodies()[0].vy, 0.0f) << "thrown upward";
 }
 
-// Removing bodies keeps the hold on the same body, or ends it when that body goes.
+// Removing bodies keeps the hold on the same body, or ends it when that body goes: a body removed
+// after the held one leaves its index alone; one removed before it shifts the index down by one,
+// and the body dragged on is still the one grabbed (the same radius, following the cursor).
 TEST(BodyGrab, FollowsRemovedBodies) {
   sim::Session session(scene::session_spec(scene::parse_scene(kBall, "test")), sim::SolverChoice{.gpu = false});
   session.add_body({.shape = sim::BodyShape::sphere, .motion = sim::BodyMotion::floating, .radius = 2.0, .mass = 30.0,
                     .position = {30.0, 1.5, 30.0}, .velocity = {}, .path = {}});
+  session.add_body({.shape = sim::BodyShape::sphere, .motion = sim::BodyMotion::floating, .radius = 1.5, .mass = 20.0,
+                    .position = {10.0, 1.5, 10.0}, .velocity = {}, .path = {}});
+  // Seen from above body 1, the second ball (radius 2).
+  lod::Camera camera = above();
+  camera.eye = {30.0, 60.0, 40.0};
+  camera.target = {30.0, 0.0, 30.0};
   BodyGrab grab;
-  ASSERT_TRUE(grab.grab(session, pixel_ray(above(), 200, 200)).has_value());
-  grab.body_removed(1);
+  ASSERT_EQ(grab.grab(session, pixel_ray(camera, 200, 200)), std::optional<std::size_t>(1));
+  session.remove_body(2);
+  grab.body_removed(2);  // after the held one: no change
   ASSERT_TRUE(grab.active());
-  EXPECT_EQ(grab.index(), 0u);
-  grab.body_removed(0);
+  EXPECT_EQ(grab.index(), 1u);
+  session.remove_body(0);
+  grab.body_removed(0);  // before it: the held ball is body 0 now
+  ASSERT_TRUE(grab.active());
+  ASSERT_EQ(grab.index(), 0u);
+  ASSERT_EQ(session.water().bodies.size(), 1u);
+  EXPECT_EQ(session.water().bodies[grab.index()].radius, 2.0);
+  const double x0 = session.bodies()[0].x;
+  for (int f = 1; f <= 10; ++f) {
+    grab.move_cursor(200 + 3 * f, 200);
+    grab.drag(session, camera, 1);
+    session.advance(1);
+  }
+  EXPECT_TRUE(session.held(0));
+  EXPECT_GT(session.bodies()[0].x - x0, 1.5) << "the held ball follows the cursor";
+  grab.body_removed(0);  // the held one itself: the hold ends
   EXPECT_FALSE(grab.active());
 }
 

@@ -12,7 +12,9 @@
 # validation layer when the device is destroyed.
 # Then minimize and restore, twice, under a window manager (twm, tests/demo/twmrc; an X server
 # alone ignores iconify requests): the demo must see the minimized frames, draw nothing in them,
-# and come back to the same swapchain path.
+# and come back to the same swapchain path. The demo starts once twm manages the screen: twm
+# creates its own windows (info, size) after taking the root's redirection, so the root having
+# children is the condition waited for (xwininfo, at most 20 s).
 # Usage: storm_test.sh PATH/TO/pond WORKDIR
 set -u
 pond=$1
@@ -60,7 +62,11 @@ esac
 printf 'frame 5 minimize\nframe 15 restore\nframe 20 click 160 100\nframe 25 minimize\nframe 30 restore\n' \
   > "$work/minimize.script"
 here=$(dirname "$0")
-xvfb-run -a -s "-screen 0 1400x900x24" sh -c "twm -f '$here/twmrc' > '$work/twm.log' 2>&1 & wm=\$!; sleep 0.5;
+xvfb-run -a -s "-screen 0 1400x900x24" sh -c "twm -f '$here/twmrc' > '$work/twm.log' 2>&1 & wm=\$!; until=\$((\$(date +%s) + 20));
+  until xwininfo -root -children | grep -q '^ *[1-9][0-9]* child'; do
+    [ \$(date +%s) -le \$until ] || { echo 'twm did not start within 20 s' > '$work/minimize.out'; kill \$wm; exit 1; }
+    sleep 0.05
+  done
   '$pond' demo --frames 40 --size 320x200 --script '$work/minimize.script' --validation \
     --screenshot '$work/minimize.png' > '$work/minimize.out' 2>&1; rc=\$?; kill \$wm; exit \$rc"
 rc=$?

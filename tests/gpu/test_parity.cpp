@@ -190,6 +190,45 @@ TEST_F(GpuTest, BisectFindsTheFirstDifferingStep) {
   EXPECT_NE(text.find("row 25, col 10) uy"), std::string::npos) << text;
 }
 
+// first_difference compares everything both states hold and what only one holds: a body (or node)
+// that one state lacks is a difference, not a shorter comparison. No device needed.
+TEST(FirstDifference, AnExtraOrMissingBodyOrNodeIsADifference) {
+  sim::WaterState a(6);
+  a.bodies.resize(2);
+  a.bodies[1].y = 1.5f;
+  sim::WaterState b = a;
+  EXPECT_FALSE(gpu::first_difference(a, b).has_value());
+  b.bodies.push_back(a.bodies[1]);  // the GPU holds a third body
+  auto d = gpu::first_difference(a, b);
+  ASSERT_TRUE(d.has_value());
+  EXPECT_TRUE(d->body && d->count);
+  EXPECT_EQ(d->cpu_count, 2u);
+  EXPECT_EQ(d->gpu_count, 3u);
+  sim::WaterModel model;
+  model.rows = 2, model.cols = 3;
+  EXPECT_NE(describe(*d, model).find("numbers of bodies: cpu 2, gpu 3"), std::string::npos) << describe(*d, model);
+  b.bodies.resize(1);  // ... or lacks one
+  d = gpu::first_difference(a, b);
+  ASSERT_TRUE(d.has_value());
+  EXPECT_TRUE(d->body && d->count);
+  EXPECT_EQ(d->gpu_count, 1u);
+  // A body that differs in one bit, and water of another size.
+  b = a;
+  b.bodies[1].vz = -0.0f;
+  d = gpu::first_difference(a, b);
+  ASSERT_TRUE(d.has_value());
+  EXPECT_TRUE(d->body && !d->count);
+  EXPECT_EQ(d->node, 1u);
+  EXPECT_EQ(d->component, 5);
+  sim::WaterState c(4);
+  c.bodies = a.bodies;
+  d = gpu::first_difference(a, c);
+  ASSERT_TRUE(d.has_value());
+  EXPECT_TRUE(d->count && !d->body);
+  EXPECT_EQ(d->cpu_count, 6u);
+  EXPECT_EQ(d->gpu_count, 4u);
+}
+
 // The golden hash of the default scene after 1,000 steps: the constant every CPU backend prints
 // (`pond simulate --steps 1000`), printed before failing like box2d's determinism test.
 constexpr std::uint64_t kGoldenHash = 0x338fc857b8648871ull;

@@ -3,10 +3,11 @@
 # build trees, then, from another directory outside both: `pond --version` prints the build's line,
 # `pond render` draws the embedded scene and an installed one (validation on), `pond check` runs
 # under the installed discrete-GPU test layer (its manifest's relative library path), and the
-# installed files do not name the build tree.
-# Usage: install_test.sh CMAKE BUILD_DIR BUILT_POND [VALIDATION_LAYER_DIR]
+# installed files do not name the build tree. The pictures are of the pond right side up (png_probe
+# pond: sky at the top, water in the middle, the shore at the bottom).
+# Usage: install_test.sh CMAKE BUILD_DIR BUILT_POND PNG_PROBE [VALIDATION_LAYER_DIR]
 set -u
-cmake=$1 build=$2 built_pond=$3 validation_dir=${4:-}
+cmake=$1 build=$2 built_pond=$3 probe=$4 validation_dir=${5:-}
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/pond-install-test.XXXXXX") || exit 1
 trap 'rm -rf "$tmp"' EXIT
 prefix=$tmp/prefix pond=$tmp/prefix/bin/pond
@@ -35,6 +36,7 @@ for scene in "" "--scene $prefix/share/pond/scenes/pool.json"; do
   "$pond" render $scene --steps 5 --size 64x48 --out frame.png --validation > out 2> err ||
     fail "render ${scene:-(embedded scene)}: exit $?: $(cat err)"
   [ "$(head -c 4 frame.png | tail -c 3)" = PNG ] || fail "render ${scene:-(embedded scene)}: no PNG"
+  "$probe" pond frame.png > probe 2>&1 || fail "render ${scene:-(embedded scene)}: not the pond right side up: $(cat probe)"
   rm -f frame.png
 done
 

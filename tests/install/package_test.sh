@@ -3,10 +3,11 @@
 # (dpkg-deb -f) name the package, version and architecture, Depends has libvulkan1 (computed by
 # dpkg-shlibdeps) and Recommends mesa-vulkan-drivers; it holds pond, the scenes, the docs and the
 # test layer under /usr; the pond extracted from it (dpkg-deb -x) prints the build's version line and
-# renders a packaged scene from a directory outside the source and build trees.
-# Usage: package_test.sh CPACK BUILD_DIR VERSION BUILT_POND
+# renders a packaged scene from a directory outside the source and build trees: the pond right side
+# up (png_probe pond).
+# Usage: package_test.sh CPACK BUILD_DIR VERSION BUILT_POND PNG_PROBE
 set -u
-cpack=$1 build=$2 version=$3 built_pond=$4
+cpack=$1 build=$2 version=$3 built_pond=$4 probe=$5
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/pond-package-test.XXXXXX") || exit 1
 trap 'rm -rf "$tmp"' EXIT
 failures=0
@@ -33,6 +34,7 @@ pond=$tmp/root/usr/bin/pond
 "$pond" render --scene "$tmp/root/usr/share/pond/scenes/pool.json" --steps 5 --size 64x48 --out frame.png \
   --validation > out 2> err || fail "packaged render: exit $?: $(cat err)"
 [ "$(head -c 4 frame.png | tail -c 3)" = PNG ] || fail "packaged render: no PNG"
+"$probe" pond frame.png > probe 2>&1 || fail "packaged render: not the pond right side up: $(cat probe)"
 
 [ $failures -eq 0 ] && echo "package: all checks passed: $(basename "$deb"), Depends: $(field Depends)"
 exit $failures

@@ -1,9 +1,14 @@
 #!/bin/sh
 # `pond lod` on bad input: every case must exit 2, print one line on stderr naming the problem,
-# and leave an existing output file untouched. Usage: lod_cli_test.sh PATH/TO/pond WORKDIR
+# and leave an existing output file untouched. A good run's TRIS.npy must tile the grid and keep
+# every left-out node in view within the tolerance (tris_check: the independent mesh checker of
+# tests/lod), and leave nodes out: fewer triangles than the full mesh's.
+# Usage: lod_cli_test.sh PATH/TO/pond PATH/TO/tris_check WORKDIR
+# ($POND_TEST_EMULATOR, if set, runs tris_check: the IA-32 build's emulator.)
 set -u
 pond=$1
-work=$2
+checker=$2
+work=$3
 rm -rf "$work" && mkdir -p "$work" || exit 1
 failures=0
 
@@ -18,7 +23,8 @@ i=0; while [ $i -lt 24 ]; do zeros96="$zeros96\\000\\000\\000\\000"; i=$((i + 1)
 nan_then_zeros="\\000\\000\\300\\177"
 i=1; while [ $i -lt 24 ]; do nan_then_zeros="$nan_then_zeros\\000\\000\\000\\000"; i=$((i + 1)); done
 
-"$pond" simulate --steps 3 --out "$work/state.npy" > /dev/null || { echo "simulate failed"; exit 1; }
+# The default scene 40 steps after its splash: rings to keep in detail near the camera.
+"$pond" simulate --steps 40 --out "$work/state.npy" > /dev/null || { echo "simulate failed"; exit 1; }
 printf 'not numpy at all\n' > "$work/text.npy"
 npy "$work/int.npy" '<i4' '(2, 2, 6)' "$zeros96"
 npy "$work/shape.npy" '<f4' '(4, 6)' "$zeros96"
@@ -69,6 +75,23 @@ unset POND_CPU_FEATURES_MASK
   { echo "FAIL: good run: $(cat "$work/stderr")"; failures=$((failures + 1)); }
 grep -q "triangles" "$work/stdout" || { echo "FAIL: no summary line"; failures=$((failures + 1)); }
 head -c 128 "$work/tris.npy" | grep -q "'<u4'.*, 3)" || { echo "FAIL: TRIS.npy header"; failures=$((failures + 1)); }
+# What the triangles are: the contract, checked independently, at the run's camera and tolerance,
+# and fewer than the 50 x 50 grid's 4802.
+check_tris() {  # check_tris TRIS.npy EYE TARGET FOVY SIZE TOLERANCE
+  # shellcheck disable=SC2086
+  $POND_TEST_EMULATOR "$checker" "$work/state.npy" "$@" > "$work/check" 2>&1 ||
+    { echo "FAIL: $1 breaks the contract: $(cat "$work/check")"; failures=$((failures + 1)); return; }
+  cat "$work/check"
+  t=$(sed -n 's/^tris_check: \([0-9]*\) triangles.*/\1/p' "$work/check")
+  [ -n "$t" ] && [ "$t" -lt 4802 ] && [ "$t" -gt 2 ] ||
+    { echo "FAIL: $1 has ${t:-no} triangles, expected between 2 and the full mesh's 4802"; failures=$((failures + 1)); }
+}
+POND_TEST_EMULATOR=${POND_TEST_EMULATOR:-}
+check_tris "$work/tris.npy" 24,30,-20 24,0,24 60 640x480 1
+# A close, grazing view at a quarter pixel.
+"$pond" lod --state "$work/state.npy" --eye 10,3,12 --target 30,0,30 --fovy 50 --size 800x600 --tolerance 0.25 \
+  --out "$work/near.npy" > /dev/null 2> "$work/stderr" || { echo "FAIL: near run: $(cat "$work/stderr")"; failures=$((failures + 1)); }
+check_tris "$work/near.npy" 10,3,12 30,0,30 50 800x600 0.25
 
 # --repeat N reports the median of the N - 1 warm builds in the same line.
 "$pond" lod --state "$work/state.npy" $good --repeat 3 --out "$work/tris3.npy" > "$work/stdout" 2> "$work/stderr" ||

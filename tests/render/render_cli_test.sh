@@ -1,11 +1,13 @@
 #!/bin/sh
-# `pond render` from the command line: a good run writes a PNG and prints the timing lines (the
-# effects' costs only with --profile); bad
-# input exits 2 with one line on stderr naming the problem and leaves an existing output untouched;
-# no Vulkan driver exits 1. Usage: render_cli_test.sh PATH/TO/pond WORKDIR
+# `pond render` from the command line: a good run writes a PNG of the pond right side up (png_probe
+# pond: pale sky at the top, blue-green water in the middle, the green shore at the bottom) and
+# prints the timing lines (the effects' costs only with --profile); bad input exits 2 with one line
+# on stderr naming the problem and leaves an existing output untouched; no Vulkan driver exits 1.
+# Usage: render_cli_test.sh PATH/TO/pond PATH/TO/png_probe WORKDIR
 set -u
 pond=$1
-work=$2
+probe=$2
+work=$3
 rm -rf "$work" && mkdir -p "$work" || exit 1
 failures=0
 
@@ -17,6 +19,8 @@ if [ $code -ne 0 ] || ! grep -q "ms per frame (median of 2)" "$work/stdout" || !
   echo "FAIL (good run): exit $code, stdout: $(cat "$work/stdout"), stderr: $(cat "$work/stderr")"
   failures=$((failures + 1))
 fi
+"$probe" pond "$work/ok.png" > "$work/probe" 2>&1 ||
+  { echo "FAIL (good run): the picture is not the pond right side up: $(cat "$work/probe")"; failures=$((failures + 1)); }
 # The 1025² scene (issue 30) renders end to end under the validation layer.
 scenes=$(dirname "$0")/../../scenes
 "$pond" render --scene "$scenes/rain_1025.json" --steps 5 --frames 2 --size 320x180 --out "$work/big.png" --validation \

@@ -209,5 +209,15 @@ TEST_F(RenderTest, AFrameSimulatedForAnotherSizeIsDrawnAsAtItsOwn) {
   EXPECT_EQ(compare(frame(true), frame(false), 0).share, 0.0);
 }
 
+// POND_REGENERATE_GOLDENS: only "1" regenerates; unset or empty compares; anything else ("0",
+// "false", "yes") is refused rather than taken as a wish to rewrite the goldens.
+TEST(GoldenMode, OnlyOneRegenerates) {
+  EXPECT_EQ(golden_mode(nullptr), GoldenMode::compare);
+  EXPECT_EQ(golden_mode(""), GoldenMode::compare);
+  EXPECT_EQ(golden_mode("1"), GoldenMode::regenerate);
+  for (const char* v : {"0", "false", "no", "yes", "true", "11", " 1", "1 "})
+    EXPECT_EQ(golden_mode(v), GoldenMode::invalid) << "'" << v << "'";
+}
+
 }  // namespace
 }  // namespace pond::test

@@ -8,7 +8,6 @@
 //  - instances sway out of step; the wind ripples are deterministic and land on water.
 // Regenerate the goldens after a deliberate change: POND_REGENERATE_GOLDENS=1 ctest -L image.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -268,27 +267,6 @@ TEST_F(TreeRenderTest, ControlsAndRegrow) {
   EXPECT_EQ(tree.tree().size(), vertices);
   EXPECT_NE(tree.tree().vertices.back().position.y, y);
   loop.frame(target.frame_target(), view);
-}
-
-// The cost of the two bends on this device: depth 8 tubes and leaves, the median of 5 frames of the
-// whole frame (water included). Printed for docs/tree.md; the keep-length walk must stay within a
-// generous factor of the article's.
-TEST_F(TreeRenderTest, KeepLengthCostIsPrinted) {
-  auto median_draw = [&](const char* bend) {
-    const std::string t = std::string(R"({"depth": 8, "draw": "tubes", "bend": ")") + bend + "\"}";
-    std::vector<double> ms;
-    for (int k = 0; k < 5; ++k) {
-      render::FrameStats s;
-      render(tree_scene(t, kWind), kWindSteps, &s);
-      ms.push_back(s.draw_ms);
-    }
-    std::sort(ms.begin(), ms.end());
-    return ms[2];
-  };
-  const double article = median_draw("article"), keep = median_draw("keep-length");
-  std::printf("depth 8 tubes + leaves at %dx%d, draw ms per frame: article %.2f, keep-length %.2f\n", kWidth,
-              kHeight, article, keep);
-  EXPECT_LT(keep, 20 * article + 50);
 }
 
 // ---- Ripples (no GPU) ---------------------------------------------------------------------------

@@ -1,5 +1,7 @@
-# `pond tree` end to end. Run as: cmake -DPOND=<pond> -DCASE=<case> -DWORK=<scratch folder> -P this
-#   good_run        writes both files with the right .npy headers, shapes and sizes, deterministically
+# `pond tree` end to end. Run as:
+#   cmake -DPOND=<pond> -DCHECK=<tree_check> [-DEMULATOR=<runs it>] -DCASE=<case> -DWORK=<folder> -P this
+#   good_run        writes both files with the right .npy headers, shapes and sizes, deterministically;
+#                   their contents follow the spec (tree_check), and another seed grows another tree
 #   bad_depth       0, 11, abc, 2.5, -3, 7x exit 2 with a one-line message naming --depth, no files
 #   bad_seed        -1, 1.5, abc, 2^64, 1e3 exit 2 with a one-line message naming --seed, no files
 #   missing_folder  exit 2 naming the folder; nothing is written or created; likewise when one
@@ -83,6 +85,17 @@ if(CASE STREQUAL "good_run")
   endif()
   run_pond(--depth 8 --seed 0 --out "${WORK}/big")
   expect_npy("${WORK}/big.vertices.npy" "<f4" "(3281, 12)" 157616)
+  # The contents, checked against the spec; seed 6 grows the same trunk and other branches.
+  run_pond(--depth 8 --seed 6 --out "${WORK}/other")
+  foreach(check "t;3" "big;8;${WORK}/other" "other;8")
+    list(GET check 0 prefix)
+    list(SUBLIST check 1 -1 args)
+    execute_process(COMMAND ${EMULATOR} ${CHECK} "${WORK}/${prefix}" ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "tree_check ${prefix} ${args}: exit ${rc}: ${out}${err}")
+    endif()
+    message(STATUS "${out}")
+  endforeach()
 elseif(CASE STREQUAL "bad_depth")
   foreach(depth 0 11 abc 2.5 -3 7x)
     expect_input_error("--depth" --depth "${depth}" --seed 1 --out "${WORK}/t")
