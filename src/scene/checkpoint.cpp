@@ -59,8 +59,9 @@ class Reader {
   [[noreturn]] void fail(const std::string& what) const { throw InputError("'" + name_ + "' " + what); }
   std::string_view take(std::uint64_t n, const char* what) {
     if (n > bytes_.size() - at_) fail(std::string("ends inside its ") + what);
-    const std::string_view out = bytes_.substr(at_, n);
-    at_ += n;
+    const auto size = static_cast<std::size_t>(n);  // fits: it is at most the bytes left
+    const std::string_view out = bytes_.substr(at_, size);
+    at_ += size;
     return out;
   }
   std::uint64_t u64(const char* what) {
@@ -179,8 +180,9 @@ Checkpoint decode_checkpoint(std::string_view bytes, const std::string& name) {
   const std::uint64_t bodies = r.u64("bodies");
   if (bodies != out.scene.bodies.size())
     r.fail("holds " + std::to_string(bodies) + " bodies for its scene's " + std::to_string(out.scene.bodies.size()));
-  s.bodies.resize(bodies);
-  std::memcpy(s.bodies.data(), r.take(bodies * sizeof(sim::BodyState), "bodies").data(), bodies * sizeof(sim::BodyState));
+  s.bodies.resize(out.scene.bodies.size());
+  const auto body_bytes = r.take(bodies * sizeof(sim::BodyState), "bodies");
+  if (bodies != 0) std::memcpy(s.bodies.data(), body_bytes.data(), body_bytes.size());
   for (const sim::BodyState& b : s.bodies)
     for (float v : {b.x, b.y, b.z, b.vx, b.vy, b.vz})
       if (!std::isfinite(v)) r.fail("holds a body whose state is not finite");

@@ -30,7 +30,7 @@ std::string read(const fs::path& p) {
 
 TEST(SceneJson, EveryExampleAndCorpusSceneReadsBackEqual) {
   int scenes = 0;
-  for (const fs::path dir : {fs::path(POND_SCENES_DIR), fs::path(POND_FUZZ_DIR) / "corpus/scene"})
+  for (const fs::path& dir : {fs::path(POND_SCENES_DIR), fs::path(POND_FUZZ_DIR) / "corpus/scene"})
     for (const auto& e : fs::directory_iterator(dir)) {
       if (e.path().extension() != ".json") continue;
       Scene s;
