@@ -4,8 +4,9 @@
 //                                   VK_ERROR_DEVICE_LOST does
 //   out-of-device-memory@allocate:N the Nth vkAllocateMemory returns VK_ERROR_OUT_OF_DEVICE_MEMORY
 //   out-of-host-memory@allocate:N   ... VK_ERROR_OUT_OF_HOST_MEMORY
-// N counts from 1 over the whole process (every device), so a device created after the fault
-// works: an application that recreates its device after a loss goes on.
+// N counts from 1 over the whole process (every instance and device: the library is never
+// unloaded), so a device created after the fault works: an application that recreates its device
+// after a loss goes on.
 #include <atomic>
 #include <cerrno>
 #include <cstdlib>
