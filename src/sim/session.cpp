@@ -118,6 +118,11 @@ void Session::recover(const GpuFailure& failure) {
   if (choice_.gpu) fail_over(failure);
 }
 
+void Session::track_tile_bounds(bool on) {
+  track_tiles_ = on;
+  guarded([&] { solver_->track_tile_bounds(on); });
+}
+
 void Session::trim_journal() {
   if (!journaling()) return;
   if (const HostSnapshot* copy = solver_->host_snapshot()) journal_.trim(copy->step);
@@ -186,6 +191,11 @@ void Session::set_solver(SolverChoice choice) {
     if (!solver_) replace_solver(build(), state, steps);
     throw;
   }
+}
+
+void Session::set_gpu_factory(GpuSolverFactory gpu) {
+  if (choice_.gpu) throw InternalError("set_gpu_factory while a GPU solver runs");
+  gpu_ = std::move(gpu);
 }
 
 void Session::add_body(const BodySpec& body) {

@@ -93,6 +93,9 @@ class Session {
   // physics stays the session's. InternalError for another grid.
   void set_water(const WaterSpec& water);
   void set_solver(SolverChoice choice);  // the state and the step count carry over
+  // Where GPU solvers come from from now on (a front end that made its device again after a loss);
+  // the session must not be on a GPU solver of the old factory (recover() first).
+  void set_gpu_factory(GpuSolverFactory gpu);
 
   // The bodies (grid units). Their specs are water().bodies, with the edits below. The non-const
   // overloads here and below go on on the CPU when the GPU fails while they read.
@@ -150,10 +153,7 @@ class Session {
   void restore(const SessionImage& image);
   const Solver& solver() const { return *solver_; }
   // Whether every solver of the session keeps its tile bounds (solver.h), for a renderer's LOD.
-  void track_tile_bounds(bool on) {
-    track_tiles_ = on;
-    solver_->track_tile_bounds(on);
-  }
+  void track_tile_bounds(bool on);
   // Grows whenever solver() is replaced (a drawer holding its buffers must let go), and whenever
   // the state changes, respectively.
   std::uint64_t solver_generation() const { return solver_generation_; }
