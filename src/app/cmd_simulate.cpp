@@ -153,7 +153,8 @@ int run_simulate(const SimulateOptions& o) {
   std::printf("simulated %" PRId64 " steps (%d substep%s each) of a %d x %d grid on %s, %s math\n",
               o.steps, model.substeps, model.substeps == 1 ? "" : "s", model.rows, model.cols,
               engine.c_str(), o.math.c_str());
-  if (first > 0) std::printf("resumed at step %" PRId64 " from %s, now at step %" PRId64 "\n", first, o.resume.c_str(), last);
+  if (!o.resume.empty())
+    std::printf("resumed at step %" PRId64 " from %s, now at step %" PRId64 "\n", first, o.resume.c_str(), last);
   std::printf("time %.3f s, %.1f M node-steps/s\n", seconds,
               seconds > 0 ? node_steps / seconds * 1e-6 : 0.0);
   std::printf("energy %.6g (kinetic %.6g, spring %.6g), max displacement %.6g\n", d.total(),

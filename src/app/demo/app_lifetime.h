@@ -1,12 +1,9 @@
 #pragma once
-// Two lifetime guards of the demo app: ImGui's context with its GLFW backend, and the wait for an
-// idle GPU before anything the GPU may still use is destroyed.
+// A lifetime guard of the demo app: ImGui's context with its GLFW backend.
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
-
-#include "gpu/context.h"
 
 namespace pond::app::demo {
 
@@ -34,13 +31,6 @@ class ImGuiSession {
   }
   ImGuiSession(const ImGuiSession&) = delete;
   ImGuiSession& operator=(const ImGuiSession&) = delete;
-};
-
-// Last member of the app: on any exit (also by exception) the GPU is idle before anything it may
-// still use is destroyed.
-struct IdleBeforeTeardown {
-  const gpu::Context& ctx;
-  ~IdleBeforeTeardown() { ctx.wait_idle_for_teardown(); }
 };
 
 }  // namespace pond::app::demo

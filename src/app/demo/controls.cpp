@@ -39,6 +39,8 @@ constexpr KeyBinding kBindings[] = {
     {GLFW_KEY_O, Action::drop_ball, "O", "drop a floating ball where the cursor points"},
     {GLFW_KEY_F3, Action::vsync, "F3", "vsync on / off"},
     {GLFW_KEY_F12, Action::screenshot, "F12", "screenshot -> pond-NNNN.png"},
+    {GLFW_KEY_F5, Action::save_checkpoint, "F5", "save the pond to the panel's checkpoint file"},
+    {GLFW_KEY_F9, Action::load_checkpoint, "F9", "load the pond from that file"},
     {GLFW_KEY_ESCAPE, Action::quit, "Esc", "quit"},
 };
 
@@ -122,6 +124,8 @@ void InputDispatch::dispatch(const InputEvent& e, bool ui_mouse, bool ui_keyboar
     case InputEvent::Kind::restore:
     case InputEvent::Kind::remove_body:
     case InputEvent::Kind::add_ball:
+    case InputEvent::Kind::save:
+    case InputEvent::Kind::load:
       return;  // handled by the app (window, swapchain, files), not gestures
   }
 }

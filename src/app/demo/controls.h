@@ -13,7 +13,7 @@ namespace pond::app::demo {
 enum class Action {
   quit, help, panel, pause, step, reset_water, reset_camera, border, all_vertical, islands, wireframe,
   tau_up, tau_down, solver, rain, screenshot, vsync, steps_up, steps_down, reflections, caustics,
-  drop_ball, shadows, submerged
+  drop_ball, shadows, submerged, save_checkpoint, load_checkpoint
 };
 
 // The LOD tolerance one step up or down the table 0, 0.25, 0.5, 1, 2, 4, 8, 16, 32 px (keys ] and [).

@@ -9,6 +9,7 @@
 #include "app/demo/scene_modes.h"
 #include "core/errors.h"
 #include "core/output_file.h"
+#include "gpu/gpu_failure.h"
 #include "scene/session_spec.h"
 #include "sim/backends.h"
 
@@ -33,13 +34,8 @@ DemoApp::DemoApp(const DemoOptions& options, scene::Scene scene, Script script)
       base_scene_(std::move(scene)),
       script_(std::move(script)),
       window_(options.width, options.height, "pond"),
-      ctx_(gpu::ContextOptions{.device = options.device, .validation = options.validation}, window_surface(window_)),
       imgui_session_(window_.handle()),
-      swapchain_(ctx_, window_.framebuffer_extent(), options.vsync),
-      imgui_(ctx_, swapchain_.format()),
-      shots_(ctx_),
-      gpu_solvers_(ctx_),
-      idle_{ctx_} {
+      gpu_(make_gpu_stack(options, window_, options.vsync)) {
   settings_.physics = base_scene_.physics;
   settings_.modes = modes_of(base_scene_);
   settings_.steps_per_frame = base_scene_.view.steps_per_frame;
@@ -47,16 +43,34 @@ DemoApp::DemoApp(const DemoOptions& options, scene::Scene scene, Script script)
   settings_.effects = base_scene_.view.effects;
   settings_.sun = base_scene_.lighting.sun;
   settings_.vsync = options.vsync;
-  stats_.device = ctx_.device_name();
-  if (!swapchain_.can_copy_images() && (!options.screenshot.empty() || !script_.screenshots.empty()))
+  stats_.device = gpu_->ctx.device_name();
+  if (!gpu_->swapchain.can_copy_images() && (!options.screenshot.empty() || !script_.screenshots.empty()))
     throw RuntimeError("this window's swapchain images cannot be read back, so no screenshots can be taken");
-  session_ = std::make_unique<sim::Session>(scene::session_spec(scene_with_settings()), sim::SolverChoice{},
-                                            gpu_solvers_.factory());
-  session_->track_tile_bounds(true);  // the LOD descends them instead of reading every node
-  stats_.solver = solver_label(session_->choice());
-  build_loop();
-  const vk::Extent2D e = swapchain_.extent();
+  make_session(scene_with_settings(), nullptr);  // a GPU solver that fails here leaves the session on the CPU
+  try {
+    gpu::guard_gpu(gpu_->ctx, "while setting up the frame", [&] { build_loop(); });
+  } catch (const GpuFailure& failure) {
+    recover(failure);
+  }
+  const vk::Extent2D e = gpu_->swapchain.extent();
   camera_.set_home(loop_->default_camera(static_cast<int>(e.width), static_cast<int>(e.height)));
+}
+
+DemoApp::~DemoApp() {
+  if (gpu_) gpu_->ctx.wait_idle_for_teardown();  // frames in flight may use what goes first
+}
+
+void DemoApp::make_session(const scene::Scene& scene, const sim::SessionImage* image) {
+  sim::SessionSpec spec = scene::session_spec(scene);
+  spec.notify = [this](const std::string& text) { notice(text); };
+  sim::SolverChoice choice;
+  if (!settings_.gpu_solver) choice = sim::SolverChoice{.gpu = false, .backend = sim::best_backend()};
+  session_.reset();
+  session_ = std::make_unique<sim::Session>(std::move(spec), choice, gpu_->solvers.factory());
+  if (image) session_->restore(*image);
+  session_->track_tile_bounds(true);  // the LOD descends them instead of reading every node
+  settings_.gpu_solver = session_->choice().gpu;
+  stats_.solver = solver_label(session_->choice());
 }
 
 scene::Scene DemoApp::scene_with_settings() const {
@@ -72,24 +86,25 @@ void DemoApp::build_loop() {
   if (loop_) loop_->wait_idle();
   loop_.reset();  // one loop at a time: its buffers and pipelines are the big allocations
   drawn_scene_ = scene_with_settings();
-  loop_ = std::make_unique<render::FrameLoop>(ctx_, drawn_scene_, *session_, &gpu_solvers_, swapchain_.format());
+  loop_ = std::make_unique<render::FrameLoop>(gpu_->ctx, drawn_scene_, *session_, &gpu_->solvers, gpu_->swapchain.format());
   if (drawn_scene_.tree) {  // drawn before the UI
     const tree::TreeSpec spec = tree_ ? tree_->spec() : *drawn_scene_.tree;
     tree_.reset();
-    tree_.emplace(ctx_, *loop_, spec);
+    tree_.emplace(gpu_->ctx, *loop_, spec);
     loop_->add_drawable(*tree_);
   }
   bodies_.reset();
-  bodies_.emplace(ctx_, *loop_);
+  bodies_.emplace(gpu_->ctx, *loop_);
   loop_->add_drawable(*bodies_);
-  loop_->add_drawable(imgui_);
+  loop_->add_drawable(gpu_->imgui);
 }
 
 void DemoApp::draw_ui() {
   ImGui_ImplGlfw_NewFrame();
   // Scripted runs and resizes: ImGui's display size follows the swapchain, not the window query.
   ImGuiIO& io = ImGui::GetIO();
-  io.DisplaySize = ImVec2(static_cast<float>(swapchain_.extent().width), static_cast<float>(swapchain_.extent().height));
+  const vk::Extent2D extent = gpu_->swapchain.extent();
+  io.DisplaySize = ImVec2(static_cast<float>(extent.width), static_cast<float>(extent.height));
   io.DisplayFramebufferScale = ImVec2(1, 1);
   ImGui::NewFrame();
   PanelRequests req;
@@ -104,6 +119,7 @@ void DemoApp::draw_ui() {
 }
 
 bool DemoApp::draw_frame(const std::string* screenshot_path) {
+  Swapchain& swapchain = gpu_->swapchain;
   // The frame's wait for the last compute, its early passes and LOD first, then the swapchain
   // image: acquiring waits for the window system to have taken the last frame, which this way
   // overlaps with them. A frame prepared before a failed acquire is drawn after the swapchain's
@@ -111,28 +127,28 @@ bool DemoApp::draw_frame(const std::string* screenshot_path) {
   if (!loop_->prepared())
     loop_->prepare(render::FrameView{.camera = current_camera(), .lod_tolerance_px = settings_.lod_tolerance_px,
                                      .wireframe = settings_.wireframe, .effects = settings_.effects},
-                   swapchain_.extent());
+                   swapchain.extent());
   const Clock::time_point t0 = Clock::now();
-  const std::optional<AcquiredImage> image = swapchain_.acquire();
+  const std::optional<AcquiredImage> image = swapchain.acquire();
   acquire_ms_ = ms_between(t0, Clock::now());
   if (!image) return false;
-  const vk::Extent2D extent = swapchain_.extent();
+  const vk::Extent2D extent = swapchain.extent();
   const bool shot = screenshot_path != nullptr;
-  const render::FrameTarget target{.image = image->image, .view = image->view, .format = swapchain_.format(),
+  const render::FrameTarget target{.image = image->image, .view = image->view, .format = swapchain.format(),
                                    .extent = extent, .old_layout = vk::ImageLayout::eUndefined,
                                    .final_layout = shot ? vk::ImageLayout::eTransferSrcOptimal : vk::ImageLayout::ePresentSrcKHR,
                                    .wait_semaphore = image->acquired,
-                                   .signal_semaphore = shot ? shots_.drawn() : image->rendered};
+                                   .signal_semaphore = shot ? gpu_->shots.drawn() : image->rendered};
   stats_.last = loop_->draw(target);
   stats_.steps_done = session_->steps_done();
   if (shot) {
-    shots_.save(image->image, swapchain_.format(), extent, image->rendered, *screenshot_path);
+    gpu_->shots.save(image->image, swapchain.format(), extent, image->rendered, *screenshot_path);
     settings_.message = "saved " + *screenshot_path;
   }
   const Clock::time_point t1 = Clock::now();
-  const bool current = swapchain_.present(*image);
+  const bool current = swapchain.present(*image);
   present_ms_ = ms_between(t1, Clock::now());
-  if (!current) swapchain_.recreate(window_.framebuffer_extent(), settings_.vsync);
+  if (!current) swapchain.recreate(window_.framebuffer_extent(), settings_.vsync);
   return true;
 }
 
@@ -164,6 +180,10 @@ void DemoApp::handle_script_events(std::int64_t frame, std::size_t& next_event) 
       remove_body(static_cast<std::size_t>(e.code));
     } else if (e.kind == InputEvent::Kind::add_ball) {
       add_ball(middle_of_pond());
+    } else if (e.kind == InputEvent::Kind::save) {
+      save_checkpoint(script_.checkpoints[static_cast<std::size_t>(e.screenshot)]);
+    } else if (e.kind == InputEvent::Kind::load) {
+      load_checkpoint(script_.checkpoints[static_cast<std::size_t>(e.screenshot)]);
     } else {
       events.push_back(e);
     }
@@ -180,65 +200,83 @@ int DemoApp::run() {
     frame_ = frame;
     window_.poll();
     if (window_.should_close()) break;
-    handle_script_events(frame, next_event);
-    std::vector<InputEvent>& events = window_.events();
-    const ImGuiIO& io = ImGui::GetIO();
-    const double now = glfwGetTime();
-    for (const InputEvent& e : events) input_.dispatch(e, io.WantCaptureMouse, io.WantCaptureKeyboard, now, *this);
-    events.clear();
+    // Everything of a frame that may touch the device (a key's action too) fails as one: the demo
+    // makes its device again and runs the frame anew; the events already handled stay handled.
+    bool drawn = false;
+    try {
+      drawn = gpu::guard_gpu(gpu_->ctx, "during a frame", [&] {
+        handle_script_events(frame, next_event);
+        std::vector<InputEvent>& events = window_.events();
+        const ImGuiIO& io = ImGui::GetIO();
+        const double now = glfwGetTime();
+        for (const InputEvent& e : events) input_.dispatch(e, io.WantCaptureMouse, io.WantCaptureKeyboard, now, *this);
+        events.clear();
+        return quit_ || frame_on_device(frame, minimized_frames, totals, last);
+      });
+    } catch (const GpuFailure& failure) {
+      window_.events().clear();
+      recover(failure);
+      continue;
+    }
     if (quit_) break;
-
-    // Minimized: draw nothing and sleep until something happens (at most 0.1 s). The frame still
-    // counts, so --frames ends and a script's later events (a restore) still come.
-    if (window_.minimized()) {
-      window_.wait(0.1);
-      ++minimized_frames;
-      ++frame;
-      continue;
-    }
-    const vk::Extent2D fb = window_.framebuffer_extent();
-    if (fb != swapchain_.extent() || settings_.vsync != swapchain_.vsync()) swapchain_.recreate(fb, settings_.vsync);
-    stats_.width = static_cast<int>(swapchain_.extent().width);
-    stats_.height = static_cast<int>(swapchain_.extent().height);
-    stats_.present_mode = vk::to_string(swapchain_.present_mode());
-
-    if (settings_.rain.on) {
-      const double h = session_->model().spacing;
-      session_->rain(settings_.rain.drops_per_frame, settings_.rain.radius * h, settings_.rain.amplitude * h);
-    }
-    // The trees' wind in real time (the water runs faster): the previous frame's wall time.
-    session_->advance_wind(stats_.frame_ms / 1000.0);
-    draw_ui();
-    const bool last_frame = options_.frames > 0 && frame + 1 == options_.frames;
-    std::optional<std::string> shot = std::move(pending_shot_);
-    pending_shot_.reset();
-    if (last_frame && !options_.screenshot.empty()) shot = options_.screenshot;
-    if (!draw_frame(shot ? &*shot : nullptr)) {
-      swapchain_.recreate(window_.framebuffer_extent(), settings_.vsync);
-      if (shot) pending_shot_ = std::move(shot);
-      continue;
-    }
-    step();
-    const Clock::time_point t = Clock::now();
-    const double ms = ms_between(last, t);
-    last = t;
-    stats_.frame_ms = totals.drawn == 0 ? ms : 0.9 * stats_.frame_ms + 0.1 * ms;
-    stats_.fps = stats_.frame_ms > 0 ? 1000.0 / stats_.frame_ms : 0;
-    totals.add(ms, stats_.last, stats_.simulate_ms, acquire_ms_, present_ms_);
+    if (!drawn) continue;  // the swapchain was out of date: the same frame again
+    recoveries_ = 0;
     ++frame;
   }
-  ctx_.device().waitIdle();  // every frame and compute done: nothing left for the rings to wait for
+  gpu_->ctx.wait_idle_for_teardown();  // every frame and compute done: nothing left for the rings to wait for
   if (minimized_frames > 0 && !options_.quiet)
     std::printf("pond demo: %lld of %lld frames minimized (nothing drawn)\n", static_cast<long long>(minimized_frames),
                 static_cast<long long>(frame));
   if (!options_.screenshot.empty() && window_.minimized() && options_.frames > 0)
     throw RuntimeError("the window was minimized at the last frame: no screenshot for " + options_.screenshot);
   if (!options_.quiet)
-    totals.print(swapchain_.extent().width, swapchain_.extent().height, ctx_.device_name(), stats_.solver,
+    totals.print(gpu_->swapchain.extent().width, gpu_->swapchain.extent().height, gpu_->ctx.device_name(), stats_.solver,
                  stats_.present_mode, stats_.last.full_triangles);
-  if (options_.validation && ctx_.validation_log().count() > 0)
-    throw RuntimeError(std::to_string(ctx_.validation_log().count()) + " Vulkan validation message(s) were logged (see above)");
+  const std::size_t messages = earlier_validation_messages_ + gpu_->ctx.validation_log().count();
+  if (options_.validation && messages > 0)
+    throw RuntimeError(std::to_string(messages) + " Vulkan validation message(s) were logged (see above)");
   return 0;
+}
+
+bool DemoApp::frame_on_device(std::int64_t frame, std::int64_t& minimized_frames, RunTotals& totals,
+                              Clock::time_point& last) {
+  // Minimized: draw nothing and sleep until something happens (at most 0.1 s). The frame still
+  // counts, so --frames ends and a script's later events (a restore) still come.
+  if (window_.minimized()) {
+    window_.wait(0.1);
+    ++minimized_frames;
+    return true;
+  }
+  Swapchain& swapchain = gpu_->swapchain;
+  const vk::Extent2D fb = window_.framebuffer_extent();
+  if (fb != swapchain.extent() || settings_.vsync != swapchain.vsync()) swapchain.recreate(fb, settings_.vsync);
+  stats_.width = static_cast<int>(swapchain.extent().width);
+  stats_.height = static_cast<int>(swapchain.extent().height);
+  stats_.present_mode = vk::to_string(swapchain.present_mode());
+
+  if (settings_.rain.on) {
+    const double h = session_->model().spacing;
+    session_->rain(settings_.rain.drops_per_frame, settings_.rain.radius * h, settings_.rain.amplitude * h);
+  }
+  // The trees' wind in real time (the water runs faster): the previous frame's wall time.
+  session_->advance_wind(stats_.frame_ms / 1000.0);
+  draw_ui();
+  const bool last_frame = options_.frames > 0 && frame + 1 == options_.frames;
+  std::optional<std::string> shot = pending_shot_;  // taken when the frame is drawn: a failed one keeps it
+  if (last_frame && !options_.screenshot.empty()) shot = options_.screenshot;
+  if (!draw_frame(shot ? &*shot : nullptr)) {
+    swapchain.recreate(window_.framebuffer_extent(), settings_.vsync);
+    return false;
+  }
+  pending_shot_.reset();
+  step();
+  const Clock::time_point t = Clock::now();
+  const double ms = ms_between(last, t);
+  last = t;
+  stats_.frame_ms = totals.drawn == 0 ? ms : 0.9 * stats_.frame_ms + 0.1 * ms;
+  stats_.fps = stats_.frame_ms > 0 ? 1000.0 / stats_.frame_ms : 0;
+  totals.add(ms, stats_.last, stats_.simulate_ms, acquire_ms_, present_ms_);
+  return true;
 }
 
 int run_demo(const DemoOptions& options) {

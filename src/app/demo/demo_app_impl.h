@@ -2,6 +2,7 @@
 // The demo application (demo_app.h runs it): its parts in dependency order, the frame (demo_app.cpp)
 // and what input does to the session and the view (demo_input.cpp). It steps the session; the
 // frame loop draws it read only.
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <string>
@@ -12,14 +13,15 @@
 #include "app/demo/demo_app.h"
 #include "app/demo/demo_settings.h"
 #include "app/demo/imgui_panel.h"
+#include "app/demo/gpu_stack.h"
 #include "app/demo/imgui_renderer.h"
+#include "app/demo/run_totals.h"
 #include "app/demo/orbit_camera.h"
 #include "app/demo/screenshot.h"
 #include "app/demo/script.h"
 #include "app/demo/swapchain.h"
 #include "app/demo/window.h"
-#include "gpu/context.h"
-#include "gpu/gpu_solvers.h"
+#include "core/errors.h"
 #include "render/body_drawable.h"
 #include "render/frame_loop.h"
 #include "render/tree_drawable.h"
@@ -31,15 +33,20 @@ namespace pond::app::demo {
 // "GPU solver" or "CPU solver (avx2)": the panel's and the notices' name for a choice.
 std::string solver_label(const sim::SolverChoice& s);
 
+// The demo's device and what lives on it (gpu_stack.h); an allocation that fails while making it
+// is tried once more (a real shortage fails again and ends the demo with its line).
+std::unique_ptr<GpuStack> make_gpu_stack(const DemoOptions& options, const Window& window, bool vsync);
+
 class DemoApp final : public ControlTarget {
  public:
   DemoApp(const DemoOptions& options, scene::Scene scene, Script script);
+  ~DemoApp();
   int run();
 
   // ControlTarget (demo_input.cpp)
   void on_action(Action action) override;
   void on_orbit(double dx, double dy) override { camera_.orbit(dx, dy); }
-  void on_pan(double dx, double dy) override { camera_.pan(dx, dy, static_cast<int>(swapchain_.extent().height)); }
+  void on_pan(double dx, double dy) override { camera_.pan(dx, dy, static_cast<int>(gpu_->swapchain.extent().height)); }
   void on_zoom(double steps) override { camera_.zoom(steps); }
   void on_splash(double x, double y, SplashKind kind) override;
   // The wind tree (when the scene has one): right drag, keys 1-9, double-click.
@@ -58,11 +65,9 @@ class DemoApp final : public ControlTarget {
   void on_drop_ball(double x, double y) override;
 
  private:
-  static gpu::WindowSurface window_surface(const Window& window) {
-    return gpu::WindowSurface{.instance_extensions = Window::required_instance_extensions(),
-                              .make_surface = [&window](VkInstance instance) { return window.create_surface(instance); }};
-  }
   scene::Scene scene_with_settings() const;  // the scene with the demo's modes and edits
+  // A session for `scene` on the chosen solver, continuing `image` when given.
+  void make_session(const scene::Scene& scene, const sim::SessionImage* image);
   void build_loop();
   void apply_requests(const PanelRequests& req);
   void add_ball(const std::array<double, 3>& position);
@@ -73,8 +78,17 @@ class DemoApp final : public ControlTarget {
   void draw_ui();
   bool draw_frame(const std::string* screenshot_path);  // false: swapchain out of date, retry
   void step();  // the session by this frame's steps (after presenting)
+  // One frame's work on the device (what run() loops over); false: the swapchain was out of date.
+  bool frame_on_device(std::int64_t frame, std::int64_t& minimized_frames, RunTotals& totals,
+                       std::chrono::steady_clock::time_point& last);
+  // After `failure` (a lost device, memory short: device_recovery.cpp): the water goes on on the
+  // CPU, the device and everything on it are made again, then the GPU solver comes back.
+  void recover(const GpuFailure& failure);
+  // The pond saved to / loaded from a checkpoint file (demo_checkpoint.cpp).
+  void save_checkpoint(const std::string& path);
+  void load_checkpoint(const std::string& path);
   lod::Camera current_camera() const {
-    const vk::Extent2D e = swapchain_.extent();
+    const vk::Extent2D e = gpu_->swapchain.extent();
     return camera_.camera(static_cast<int>(e.width), static_cast<int>(e.height));
   }
   void take_screenshot_next(std::string path) { pending_shot_ = std::move(path); }
@@ -86,18 +100,13 @@ class DemoApp final : public ControlTarget {
   // Vulkan before the context, the context's surface before the window, the window before GLFW).
   GlfwSession glfw_;
   Window window_;
-  gpu::Context ctx_;
   ImGuiSession imgui_session_;
-  Swapchain swapchain_;
-  ImGuiRenderer imgui_;
-  ScreenshotWriter shots_;
-  gpu::GpuSolvers gpu_solvers_;            // what the session's GPU solvers come from
+  std::unique_ptr<GpuStack> gpu_;          // the device and what lives on it; made again after a loss
   std::unique_ptr<sim::Session> session_;  // the water: steps, splashes, edits, solver switches go here
   scene::Scene drawn_scene_;               // the scene the loop shows (the modes applied)
   std::unique_ptr<render::FrameLoop> loop_;
   std::optional<render::TreeDrawable> tree_;    // the scene's wind tree; waits for the device when destroyed
   std::optional<render::BodyDrawable> bodies_;  // the session's bodies; waits for the device when destroyed
-  IdleBeforeTeardown idle_;
 
   DemoSettings settings_;
   DemoStats stats_;
@@ -109,6 +118,8 @@ class DemoApp final : public ControlTarget {
   bool quit_ = false;
   std::int64_t frame_ = 0;  // the frame being prepared (notices name it)
   double acquire_ms_ = 0, present_ms_ = 0;  // the last frame's waits in the swapchain
+  int recoveries_ = 0;                      // devices made again without a good frame between
+  std::size_t earlier_validation_messages_ = 0;  // logged on devices since made again
 };
 
 }  // namespace pond::app::demo

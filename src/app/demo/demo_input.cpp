@@ -53,6 +53,8 @@ void DemoApp::on_action(Action action) {
       break;
     case Action::rain: settings_.rain.on = !settings_.rain.on; break;
     case Action::vsync: settings_.vsync = !settings_.vsync; break;
+    case Action::save_checkpoint: save_checkpoint(settings_.checkpoint_file); break;
+    case Action::load_checkpoint: load_checkpoint(settings_.checkpoint_file); break;
     case Action::drop_ball: break;  // needs the cursor: InputDispatch calls on_drop_ball
     case Action::screenshot: {
       char name[32];
@@ -207,6 +209,8 @@ void DemoApp::apply_requests(const PanelRequests& req) {
       settings_.physics = session_->water().physics;
     }
   }
+  if (req.save_checkpoint) save_checkpoint(settings_.checkpoint_file);
+  if (req.load_checkpoint) load_checkpoint(settings_.checkpoint_file);
   if (req.reset_water) {
     session_->reset();
     settings_.message = "water reset";

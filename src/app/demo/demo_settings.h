@@ -45,6 +45,7 @@ struct DemoSettings {
   SplashSettings splash;
   RainSettings rain;
   double ball_density = 0.5;  // of the balls O and "add ball" drop, relative to water (bodies panel)
+  std::string checkpoint_file = "pond.ckpt";  // F5 saves to it, F9 loads it (the panel edits it)
   std::string message;  // the last notice (screenshot saved, unstable parameters refused, …)
 };
 

@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "app/demo/controls.h"
@@ -143,6 +144,14 @@ PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, render::TreeDr
     ImGui::Checkbox("under water (U)", &s.effects.submerged);
     if (ImGui::Button("reset camera (C)")) req.reset_camera = true;
     req.apply_sun = edit_sun(s.sun);
+  }
+  if (ImGui::CollapsingHeader("Checkpoint")) {  // docs/checkpoints.md
+    char name[512];
+    std::snprintf(name, sizeof name, "%s", s.checkpoint_file.c_str());
+    if (ImGui::InputText("file", name, sizeof name)) s.checkpoint_file = name;
+    if (ImGui::Button("save (F5)")) req.save_checkpoint = true;
+    ImGui::SameLine();
+    if (ImGui::Button("load (F9)")) req.load_checkpoint = true;
   }
   if (ImGui::CollapsingHeader("Splashes")) {
     ImGui::TextDisabled("click: velocity, Shift: position, Ctrl: explosion");

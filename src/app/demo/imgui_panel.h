@@ -15,6 +15,8 @@ struct PanelRequests {
   bool reset_water = false;
   bool reset_camera = false;
   bool apply_sun = false;      // settings.sun changed
+  bool save_checkpoint = false;  // to settings.checkpoint_file
+  bool load_checkpoint = false;
 };
 
 // Builds this frame's windows (between ImGui::NewFrame and ImGui::Render). `tree` is the scene's

@@ -70,8 +70,8 @@ class LineParser {
 using Kind = InputEvent::Kind;
 
 constexpr const char* kEvents =
-    "key, click, drag, press, move, release, drop, remove-body, add-ball, scroll, resize, screenshot, minimize, "
-    "restore";
+    "key, click, drag, press, move, release, drop, remove-body, add-ball, scroll, resize, screenshot, save, load, "
+    "minimize, restore";
 
 }  // namespace
 
@@ -178,6 +178,12 @@ Script parse_script(const std::string& text, const std::string& source) {
       check_output_path(file);
       script.screenshots.push_back(file);
       add({.kind = Kind::screenshot, .screenshot = static_cast<int>(script.screenshots.size() - 1)});
+    } else if (verb == "save" || verb == "load") {
+      const std::string file = p.word("file name");
+      if (verb == "save") check_output_path(file);
+      script.checkpoints.push_back(file);
+      add({.kind = verb == "save" ? Kind::save : Kind::load,
+           .screenshot = static_cast<int>(script.checkpoints.size() - 1)});
     } else {
       p.fail("unknown event '" + verb + "' (" + kEvents + ")");
     }

@@ -17,6 +17,8 @@
 //   frame N scroll DY                         mouse wheel (DY > 0 zooms in)
 //   frame N resize W H                        resize the window to W x H
 //   frame N screenshot FILE                   save frame N as a PNG (written atomically)
+//   frame N save FILE / frame N load FILE     save the pond to a checkpoint / load one (F5 / F9
+//                                             with FILE; docs/checkpoints.md)
 //   frame N minimize / frame N restore        iconify / restore the window (needs a window
 //                                             manager; frames while minimized draw nothing)
 //
@@ -39,7 +41,8 @@ struct ScriptEvent {
 
 struct Script {
   std::vector<ScriptEvent> events;        // sorted by frame, file order within a frame
-  std::vector<std::string> screenshots;  // InputEvent::screenshot indexes these
+  std::vector<std::string> screenshots;  // InputEvent::screenshot indexes these (screenshot events)
+  std::vector<std::string> checkpoints;  // and these (save and load events)
 };
 
 Script parse_script(const std::string& text, const std::string& source);

@@ -102,8 +102,8 @@ std::optional<AcquiredImage> Swapchain::acquire() {
       static_cast<VkDevice>(*ctx_.device()), static_cast<VkSwapchainKHR>(*swapchain_), UINT64_MAX,
       static_cast<VkSemaphore>(sem), VK_NULL_HANDLE, &index);
   if (r == VK_ERROR_OUT_OF_DATE_KHR) return std::nullopt;
-  if (r != VK_SUCCESS && r != VK_SUBOPTIMAL_KHR)
-    throw RuntimeError("acquiring a swapchain image failed: " + vk::to_string(static_cast<vk::Result>(r)));
+  if (r != VK_SUCCESS && r != VK_SUBOPTIMAL_KHR)  // Vulkan-Hpp's exception: a lost device is told apart
+    vk::resultCheck(static_cast<vk::Result>(r), "vkAcquireNextImageKHR");
   ++acquires_;
   return AcquiredImage{.index = index, .image = images_[index], .view = *views_[index], .acquired = sem,
                        .rendered = *rendered_[index], .suboptimal = r == VK_SUBOPTIMAL_KHR};
@@ -117,7 +117,7 @@ bool Swapchain::present(const AcquiredImage& image) {
                               .pImageIndices = &image.index, .pResults = nullptr};
   const VkResult r = ctx_.queue().getDispatcher()->vkQueuePresentKHR(static_cast<VkQueue>(*ctx_.queue()), &info);
   if (r == VK_ERROR_OUT_OF_DATE_KHR || r == VK_SUBOPTIMAL_KHR) return false;
-  if (r != VK_SUCCESS) throw RuntimeError("presenting a swapchain image failed: " + vk::to_string(static_cast<vk::Result>(r)));
+  if (r != VK_SUCCESS) vk::resultCheck(static_cast<vk::Result>(r), "vkQueuePresentKHR");
   return !image.suboptimal;
 }
 
