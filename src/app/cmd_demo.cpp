@@ -23,7 +23,7 @@ void add_demo_options(CLI::App& app, DemoCli& cli) {
   app.add_option("--scene", cli.options.scene, "Scene JSON file (default: the embedded scene)")->type_name("FILE");
   app.add_option("--frames", cli.options.frames, "Run N frames, then exit 0 (default: until closed)")
       ->type_name("N")
-      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1000000000}));
+      ->transform(whole_number(1, 1000000000));
   app.add_option("--screenshot", cli.options.screenshot, "Save the last frame as PNG")->type_name("FILE");
   app.add_option("--script", cli.options.script,
                  "Replay input events from a text file (lines like 'frame 10 click 640 360', see README)")

@@ -11,6 +11,7 @@
 #include "core/errors.h"
 #include "core/npy.h"
 #include "core/output_file.h"
+#include "core/text.h"
 #include "scene/scene.h"
 #include "scene/session_spec.h"
 #include "sim/diagnostics.h"
@@ -101,8 +102,8 @@ int run_simulate(const SimulateOptions& o) {
               d.kinetic, d.spring, d.max_displacement);
   std::printf("state hash %016" PRIx64 "\n", sim::state_hash(world));
   if (const std::string identity = session.solver().identity(); !identity.empty()) std::printf("%s\n", identity.c_str());
-  std::printf("wrote %s\n", o.out.c_str());
-  if (!o.bodies_out.empty()) std::printf("wrote %s (%zu bodies)\n", o.bodies_out.c_str(), state.bodies.size());
+  std::printf("wrote %s\n", escaped(o.out).c_str());
+  if (!o.bodies_out.empty()) std::printf("wrote %s (%zu bodies)\n", escaped(o.bodies_out).c_str(), state.bodies.size());
   return 0;
 }
 
@@ -112,14 +113,13 @@ Command add_simulate_command(CLI::App& app) {
   auto o = std::make_shared<SimulateOptions>();
   CLI::App* sub = app.add_subcommand("simulate", "Run the water model headless and write STATE.npy");
   sub->add_option("--scene", o->scene, "Scene JSON file (default: the embedded scene)");
-  sub->add_option("--steps", o->steps, "Number of time steps")->required()->check(CLI::Range(
-      std::int64_t{0}, std::int64_t{1} << 40));
+  sub->add_option("--steps", o->steps, "Number of time steps")->required()->transform(whole_number(0, std::int64_t{1} << 40));
   sub->add_option("--solver", o->solver, "Solver backend (default: the widest the CPU has)")
       ->check(CLI::IsMember({"auto", "scalar", "sse", "avx2", "avx512", "gpu"}));
   sub->add_option("--math", o->math, "Float math: exact (bit-reproducible, the default) or fast (approximations allowed)")
       ->check(CLI::IsMember({"exact", "fast"}));
   sub->add_option("--threads", o->threads, "CPU threads (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+      ->transform(whole_number(1, 1024));
   sub->add_option("--device", o->device, "Vulkan device name (substring) for --solver gpu");
   sub->add_option("--out", o->out, "Output STATE.npy: float32 (rows, cols, 6)")->required();
   sub->add_option("--bodies-out", o->bodies_out,

@@ -12,6 +12,7 @@
 #include "core/errors.h"
 #include "core/npy.h"
 #include "core/output_file.h"
+#include "core/text.h"
 #include "tree/tree.h"
 
 namespace pond::app {
@@ -40,7 +41,7 @@ int parse_depth(const std::string& text) {
   if (!parse_unsigned(text, std::numeric_limits<std::uint32_t>::max(), d) ||
       d < static_cast<std::uint64_t>(tree::kMinTreeDepth) ||
       d > static_cast<std::uint64_t>(tree::kMaxTreeDepth))
-    throw InputError("--depth '" + text + "' must be an integer from " +
+    throw InputError("--depth " + quote(text) + " must be an integer from " +
                      std::to_string(tree::kMinTreeDepth) + " to " +
                      std::to_string(tree::kMaxTreeDepth));
   return static_cast<int>(d);
@@ -49,7 +50,7 @@ int parse_depth(const std::string& text) {
 std::uint64_t parse_seed(const std::string& text) {
   std::uint64_t s = 0;
   if (!parse_unsigned(text, std::numeric_limits<std::uint64_t>::max(), s))
-    throw InputError("--seed '" + text + "' must be a non-negative integer below 2^64");
+    throw InputError("--seed " + quote(text) + " must be a non-negative integer below 2^64");
   return s;
 }
 
@@ -74,14 +75,14 @@ void write_pair(const fs::path& first, std::span<const std::byte> first_bytes, c
   if (ec) {
     fs::remove(first_tmp, ec);
     fs::remove(second_tmp, ec);
-    throw RuntimeError("cannot write '" + first.string() + "': " + ec.message());
+    throw RuntimeError("cannot write " + quote(first.string()) + ": " + ec.message());
   }
   fs::rename(second_tmp, second, ec);
   if (ec) {
     const std::string why = ec.message();
     fs::remove(second_tmp, ec);
     fs::remove(first, ec);
-    throw RuntimeError("cannot write '" + second.string() + "': " + why);
+    throw RuntimeError("cannot write " + quote(second.string()) + ": " + why);
   }
 }
 
@@ -91,7 +92,7 @@ int run_tree(const TreeOptions& o) {
   params.seed = parse_seed(o.seed);
   const fs::path prefix = o.out;
   if (prefix.empty() || !prefix.has_filename())
-    throw InputError("--out '" + o.out + "' must be a file name prefix such as out/tree, not a folder");
+    throw InputError("--out " + quote(o.out) + " must be a file name prefix such as out/tree, not a folder");
   const fs::path vertices_path = o.out + ".vertices.npy";
   const fs::path parents_path = o.out + ".parents.npy";
   check_output_path(vertices_path);  // before any work: a missing folder writes nothing
@@ -108,8 +109,8 @@ int run_tree(const TreeOptions& o) {
   write_pair(vertices_path, vertices, parents_path, parents);
 
   std::printf("tree: %zu vertices, depth %d, seed %" PRIu64 " -> %s (float32 %zu x 12), %s (int32 %zu)\n",
-              t.size(), params.depth, params.seed, vertices_path.c_str(), t.size(),
-              parents_path.c_str(), t.size());
+              t.size(), params.depth, params.seed, escaped(vertices_path.string()).c_str(), t.size(),
+              escaped(parents_path.string()).c_str(), t.size());
   return 0;
 }
 

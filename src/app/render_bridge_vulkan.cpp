@@ -13,6 +13,7 @@
 #include "app/cli_parse.h"
 #include "app/render_bridge.h"
 #include "core/errors.h"
+#include "core/text.h"
 #include "gpu/context.h"
 #include "gpu/gpu_solvers.h"
 #include "render/body_drawable.h"
@@ -138,7 +139,7 @@ int run_render(const RenderOptions& o) {
   if (bodies.drawn() > 0)
     std::printf("bodies: %zu drawn, %zu triangles\n", bodies.drawn(), bodies.triangles());
   if (o.profile) print_effect_costs(loop, target, view, o.frames);
-  std::printf("steps done %" PRId64 "\nwrote %s\n", session.steps_done(), o.out.c_str());
+  std::printf("steps done %" PRId64 "\nwrote %s\n", session.steps_done(), escaped(o.out).c_str());
   return 0;
 }
 

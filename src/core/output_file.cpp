@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "core/errors.h"
+#include "core/text.h"
 
 namespace pond {
 namespace fs = std::filesystem;
@@ -19,11 +20,11 @@ void check_output_path(const fs::path& path) {
   if (folder.empty()) folder = ".";
   std::error_code ec;
   if (!fs::is_directory(folder, ec))
-    throw InputError("output folder '" + folder.string() + "' does not exist");
+    throw InputError("output folder " + quote(folder.string()) + " does not exist");
   if (fs::is_directory(path, ec))
-    throw InputError("output path '" + path.string() + "' is a folder");
+    throw InputError("output path " + quote(path.string()) + " is a folder");
   if (::access(folder.c_str(), W_OK) != 0)
-    throw InputError("output folder '" + folder.string() + "' is not writable");
+    throw InputError("output folder " + quote(folder.string()) + " is not writable");
   // access() says yes to root everywhere but on read-only mounts, and procfs or sysfs refuse new
   // files whatever it says: so try to create one (unless the target is an existing device or pipe,
   // written in place), so that an unwritable folder fails now and as bad input, not after the run.
@@ -31,7 +32,7 @@ void check_output_path(const fs::path& path) {
   const fs::path probe = folder / (".pond-probe." + std::to_string(::getpid()));
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
   if (const int err = fd < 0 ? errno : 0; err && err != EEXIST)
-    throw InputError("output folder '" + folder.string() + "' is not writable: " + std::strerror(err));
+    throw InputError("output folder " + quote(folder.string()) + " is not writable: " + std::strerror(err));
   if (fd >= 0) {
     ::close(fd);
     ::unlink(probe.c_str());
@@ -77,10 +78,10 @@ void write_file_atomic(const fs::path& path, std::span<const std::byte> bytes) {
 
 std::string read_file(const fs::path& path) {
   std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError("file '" + path.string() + "' does not exist");
-  if (fs::is_directory(path, ec)) throw InputError("'" + path.string() + "' is a folder, not a file");
+  if (!fs::exists(path, ec)) throw InputError("file " + quote(path.string()) + " does not exist");
+  if (fs::is_directory(path, ec)) throw InputError(quote(path.string()) + " is a folder, not a file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot read '" + path.string() + "'");
+  if (!in) throw InputError("cannot read " + quote(path.string()));
   std::ostringstream s;
   s << in.rdbuf();
   return std::move(s).str();

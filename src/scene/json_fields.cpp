@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/text.h"
 
 namespace pond::scene {
 namespace {
@@ -93,7 +94,7 @@ std::string JsonFields::text(const char* key, const std::string& fallback,
     if (s == a) return s;
     list += std::string(list.empty() ? "" : " | ") + a;
   }
-  fail(key, "is '" + s + "', expected " + list);
+  fail(key, "is " + quote(s) + ", expected " + list);
 }
 
 bool JsonFields::boolean(const char* key, bool fallback) {
@@ -147,7 +148,7 @@ void JsonFields::index_range(const char* key, int max_index, int& lo, int& hi) {
 
 void JsonFields::finish() const {
   for (const auto& [key, value] : object_.items())
-    if (!read_.contains(key)) fail(key.c_str(), "is not a known key");
+    if (!read_.contains(key)) fail(escaped(key).c_str(), "is not a known key");
 }
 
 }  // namespace pond::scene

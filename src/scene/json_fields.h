@@ -13,6 +13,7 @@ namespace pond::scene {
 
 class JsonFields {
  public:
+  // `source` names the file in messages, already escaped (core/text.h).
   JsonFields(const nlohmann::json& object, std::string path, std::string source);
 
   bool has(const char* key) const;

@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "core/output_file.h"
+#include "core/text.h"
 #include "scene/body_fields.h"
 #include "scene/json_fields.h"
 #include "sim/model.h"
@@ -290,7 +291,8 @@ void check_sun(const std::array<double, 3>& toward_sun) {
 
 std::string_view default_scene_json() { return kDefaultSceneJson; }
 
-Scene parse_scene(std::string_view json_text, const std::string& source) {
+Scene parse_scene(std::string_view json_text, const std::string& file) {
+  const std::string source = escaped(file);  // as messages show it
   nlohmann::json root;
   try {
     root = nlohmann::json::parse(json_text);

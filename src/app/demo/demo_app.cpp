@@ -9,6 +9,7 @@
 #include "app/demo/scene_modes.h"
 #include "core/errors.h"
 #include "core/output_file.h"
+#include "core/text.h"
 #include "scene/session_spec.h"
 #include "sim/backends.h"
 
@@ -127,7 +128,7 @@ bool DemoApp::draw_frame(const std::string* screenshot_path) {
   stats_.steps_done = session_->steps_done();
   if (shot) {
     shots_.save(image->image, swapchain_.format(), extent, image->rendered, *screenshot_path);
-    settings_.message = "saved " + *screenshot_path;
+    settings_.message = "saved " + escaped(*screenshot_path);
   }
   const Clock::time_point t1 = Clock::now();
   const bool current = swapchain_.present(*image);

@@ -10,6 +10,7 @@
 
 #include "core/errors.h"
 #include "core/output_file.h"
+#include "core/text.h"
 
 namespace pond::app::demo {
 namespace {
@@ -22,7 +23,7 @@ std::string upper(std::string s) {
 class LineParser {
  public:
   LineParser(const std::string& source, int line, std::vector<std::string> words)
-      : where_(source + " line " + std::to_string(line)), words_(std::move(words)) {}
+      : where_(escaped(source) + " line " + std::to_string(line)), words_(std::move(words)) {}
 
   [[noreturn]] void fail(const std::string& what) const { throw InputError("--script " + where_ + ": " + what); }
 
@@ -35,14 +36,14 @@ class LineParser {
     const std::string w = word(what);
     double v = 0;
     const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
-    if (ec != std::errc() || end != w.data() + w.size()) fail(std::string(what) + " '" + w + "' is not a number");
+    if (ec != std::errc() || end != w.data() + w.size()) fail(std::string(what) + " " + quote(w) + " is not a number");
     return v;
   }
   std::int64_t integer(const char* what, std::int64_t lo, std::int64_t hi) {
     const std::string w = word(what);
     std::int64_t v = 0;
     const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
-    if (ec != std::errc() || end != w.data() + w.size()) fail(std::string(what) + " '" + w + "' is not an integer");
+    if (ec != std::errc() || end != w.data() + w.size()) fail(std::string(what) + " " + quote(w) + " is not an integer");
     if (v < lo || v > hi) fail(std::string(what) + " " + w + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
     return v;
   }
@@ -53,12 +54,12 @@ class LineParser {
       if (m == "shift") mods |= GLFW_MOD_SHIFT;
       else if (m == "ctrl") mods |= GLFW_MOD_CONTROL;
       else if (m == "alt") mods |= GLFW_MOD_ALT;
-      else fail("unknown modifier '" + m + "' (shift, ctrl, alt)");
+      else fail("unknown modifier " + quote(m) + " (shift, ctrl, alt)");
     }
     return mods;
   }
   void end() const {
-    if (!done()) fail("unexpected '" + words_[next_] + "'");
+    if (!done()) fail("unexpected " + quote(words_[next_]));
   }
 
  private:
@@ -118,7 +119,7 @@ Script parse_script(const std::string& text, const std::string& source) {
     if (verb == "key") {
       const std::string name = p.word("key name");
       const int key = key_from_name(name);
-      if (key < 0) p.fail("unknown key '" + name + "'");
+      if (key < 0) p.fail("unknown key " + quote(name));
       const int mods = p.modifiers();
       add({.kind = Kind::key, .code = key, .action = GLFW_PRESS, .mods = mods});
       add({.kind = Kind::key, .code = key, .action = GLFW_RELEASE, .mods = mods});
@@ -133,7 +134,7 @@ Script parse_script(const std::string& text, const std::string& source) {
       const int button = b == "left" ? GLFW_MOUSE_BUTTON_LEFT
                          : b == "middle" ? GLFW_MOUSE_BUTTON_MIDDLE
                          : b == "right" ? GLFW_MOUSE_BUTTON_RIGHT : -1;
-      if (button < 0) p.fail("unknown button '" + b + "' (left, middle, right)");
+      if (button < 0) p.fail("unknown button " + quote(b) + " (left, middle, right)");
       const double x0 = p.number("x0"), y0 = p.number("y0"), x1 = p.number("x1"), y1 = p.number("y1");
       const int mods = p.modifiers();
       add({.kind = Kind::cursor, .x = x0, .y = y0});
@@ -146,7 +147,7 @@ Script parse_script(const std::string& text, const std::string& source) {
       const int button = b == "left" ? GLFW_MOUSE_BUTTON_LEFT
                          : b == "middle" ? GLFW_MOUSE_BUTTON_MIDDLE
                          : b == "right" ? GLFW_MOUSE_BUTTON_RIGHT : -1;
-      if (button < 0) p.fail("unknown button '" + b + "' (left, middle, right)");
+      if (button < 0) p.fail("unknown button " + quote(b) + " (left, middle, right)");
       const double x = p.number("x"), y = p.number("y");
       const int mods = p.modifiers();
       add({.kind = Kind::cursor, .x = x, .y = y});
@@ -179,7 +180,7 @@ Script parse_script(const std::string& text, const std::string& source) {
       script.screenshots.push_back(file);
       add({.kind = Kind::screenshot, .screenshot = static_cast<int>(script.screenshots.size() - 1)});
     } else {
-      p.fail("unknown event '" + verb + "' (" + kEvents + ")");
+      p.fail("unknown event " + quote(verb) + " (" + kEvents + ")");
     }
     p.end();
   }

@@ -1,0 +1,73 @@
+#!/bin/sh
+# Hostile but fair input to the CPU commands (issue 60), by class: every case exits 2 with one
+# stderr line that names what is wrong (the key, the flag, the file) and holds no control byte,
+# and leaves the output files untouched. Usage: hardening_cli_test.sh PATH/TO/pond WORKDIR
+set -u
+pond=$1
+work=$2
+rm -rf "$work" && mkdir -p "$work" || exit 1
+failures=0
+fail() { printf 'FAIL: %s\n' "$*"; failures=$((failures + 1)); }
+nl='
+'
+esc=$(printf '\033')
+
+# expect_bad TEXT ARGS...: exit 2, one stderr line containing TEXT (a fixed string), no control
+# byte in it, the sentinel outputs untouched.
+expect_bad() {
+  text=$1; shift
+  for f in out.npy bodies.npy out.png; do printf 'sentinel\n' > "$work/$f"; done
+  "$pond" "$@" > "$work/stdout" 2> "$work/stderr"
+  code=$?
+  lines=$(wc -l < "$work/stderr")
+  kept=1
+  for f in out.npy bodies.npy out.png; do [ "$(cat "$work/$f")" = sentinel ] || kept=0; done
+  if [ $code -ne 2 ] || [ "$lines" -ne 1 ] || ! grep -qF -- "$text" "$work/stderr" || [ $kept -ne 1 ] ||
+     tr -d '\n' < "$work/stderr" | LC_ALL=C grep -q '[[:cntrl:]]'; then
+    fail "($text): exit $code, stderr: $(cat "$work/stderr"), args: $*"
+  fi
+}
+scene() { printf '%s' "$2" > "$work/$1.json"; }  # scene NAME JSON
+out="--out $work/out.npy"
+
+# User text is shown escaped on one line: keys, values, paths, flags and words typed by the user.
+scene key_newline '{"grid": {"rows": 8, "cols": 8, "ro\nws": 3}}'
+expect_bad 'grid.ro\nws is not a known key' simulate --steps 1 --scene "$work/key_newline.json" $out
+scene key_escape '{"physics": {"\u001b[2J\u001b[31mred": 1}}'
+expect_bad 'physics.\x1b[2J\x1b[31mred is not a known key' simulate --steps 1 --scene "$work/key_escape.json" $out
+scene value_newline '{"border": "sa\nnd\u0000"}'
+expect_bad "border is 'sa\\nnd\\0', expected" simulate --steps 1 --scene "$work/value_newline.json" $out
+expect_bad "file '$work/no\\nsuch\\x1b[31m.json' does not exist" simulate --steps 1 --scene "$work/no${nl}such${esc}[31m.json" $out
+expect_bad "output folder '$work/no\\ndir' does not exist" simulate --steps 1 --out "$work/no${nl}dir/x.npy"
+expect_bad 'not expected: a\x0ab' simulate --steps 1 $out "a${nl}b"
+expect_bad "--size 'big\\x1b[5m' must be WIDTHxHEIGHT" lod --state "$work/x.npy" --eye 1,1,1 --target 0,0,0 --fovy 45 \
+  --size "big${esc}[5m" --tolerance 1 $out
+expect_bad "--eye '1,2,3\\n' must be three finite numbers" lod --state "$work/x.npy" --eye "1,2,3${nl}" --target 0,0,0 \
+  --fovy 45 --size 8x8 --tolerance 1 $out
+expect_bad "--depth '7\\n' must be an integer" tree --depth "7$nl" --seed 1 --out "$work/tree"
+
+# Every numeric flag in pond's words: a whole number in digits, a finite number in its range.
+expect_bad "--steps: must be a whole number from 0 to 1099511627776 in decimal digits, not '1e3'" simulate --steps 1e3 $out
+expect_bad "--steps: must be a whole number" simulate --steps 99999999999999999999 $out
+expect_bad "--steps: must be a whole number" simulate --steps -1 $out
+expect_bad "--steps: must be a whole number" simulate --steps 0x10 $out
+expect_bad "--threads: must be a whole number from 1 to 1024" simulate --steps 1 --threads 1e1 $out
+expect_bad "--repeat: must be a whole number from 1 to 100000" lod --state "$work/x.npy" --eye 1,1,1 --target 0,0,0 \
+  --fovy 45 --size 8x8 --tolerance 1 --repeat 2.5 $out
+expect_bad "--tolerance: must be a number of pixels > 0, at most 1e6, not 'nan'" lod --state "$work/x.npy" --eye 1,1,1 \
+  --target 0,0,0 --fovy 45 --size 8x8 --tolerance nan $out
+expect_bad "--fovy: must be a number of degrees from 0.01 to 179.99, not 'inf'" lod --state "$work/x.npy" --eye 1,1,1 \
+  --target 0,0,0 --fovy inf --size 8x8 --tolerance 1 $out
+expect_bad "--lod-tolerance: must be a number of pixels >= 0 (0 = the full mesh), at most 1e6, not 'nan'" \
+  render --steps 1 --size 8x8 --lod-tolerance nan --out "$work/out.png"
+expect_bad "--lod-tolerance: must be a number of pixels >= 0" render --steps 1 --size 8x8 --lod-tolerance -0.5 --out "$work/out.png"
+expect_bad "--frames: must be a whole number from 1 to 1000000" render --steps 1 --frames 1e3 --size 8x8 --out "$work/out.png"
+expect_bad "--fovy: must be a number of degrees" render --steps 1 --fovy 1e-300 --size 8x8 --out "$work/out.png"
+expect_bad "--frames: must be a whole number from 1 to 1000000000" demo --frames 1e3
+expect_bad "--steps: must be a whole number from 1 to 10000000" check --steps 1e3
+# 010 is ten steps, not octal eight.
+"$pond" simulate --steps 010 --out "$work/ten.npy" > "$work/stdout" 2>&1 || fail "--steps 010: $(cat "$work/stdout")"
+grep -q "^simulated 10 steps" "$work/stdout" || fail "--steps 010 is not ten steps: $(head -1 "$work/stdout")"
+
+if [ $failures -eq 0 ]; then echo "all hardening CLI cases passed"; exit 0; fi
+exit 1
