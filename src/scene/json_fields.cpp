@@ -1,7 +1,10 @@
 #include "scene/json_fields.h"
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
+#include <vector>
 
 #include "core/errors.h"
 #include "core/text.h"
@@ -18,7 +21,76 @@ const char* type_name(const nlohmann::json& j) {
 }
 const nlohmann::json kEmptyArray = nlohmann::json::array();
 const nlohmann::json kEmptyObject = nlohmann::json::object();
+
+// The objects and arrays open while parsing, for the path of a repeated key: an object's keys so
+// far (a set once there are many), an array's index.
+class OpenLevels {
+ public:
+  // Returns the repeated key's path, or "" when `key` is new in the innermost object.
+  std::string add_key(const std::string& key) {
+    Level& top = levels_.back();
+    const bool seen = top.many ? top.many->contains(key)
+                               : std::find(top.keys.begin(), top.keys.end(), key) != top.keys.end();
+    if (seen) return path() + (levels_.size() > 1 ? "." : "") + escaped(key);
+    top.keys.push_back(key);
+    if (top.many) top.many->insert(key);
+    else if (top.keys.size() > 16) top.many = std::make_unique<std::set<std::string>>(top.keys.begin(), top.keys.end());
+    return {};
+  }
+  void element() {  // a value, object or array begins inside the innermost level
+    if (!levels_.empty() && !levels_.back().object) ++levels_.back().index;
+  }
+  void open(bool object) { levels_.push_back(Level{object}); }
+  void close() { levels_.pop_back(); }
+
+ private:
+  struct Level {
+    bool object = true;
+    std::size_t index = static_cast<std::size_t>(-1);
+    std::vector<std::string> keys;
+    std::unique_ptr<std::set<std::string>> many;
+  };
+  // The path to the innermost level: "bodies[2]", "grid".
+  std::string path() const {
+    std::string p;
+    for (std::size_t k = 0; k + 1 < levels_.size(); ++k) {
+      const Level& l = levels_[k];
+      if (l.object) p += (p.empty() ? "" : ".") + escaped(l.keys.back());
+      else p += "[" + std::to_string(l.index) + "]";
+    }
+    return p;
+  }
+  std::vector<Level> levels_;
+};
 }  // namespace
+
+nlohmann::json parse_json(std::string_view text, const std::string& source) {
+  using Event = nlohmann::json::parse_event_t;
+  OpenLevels open;
+  const auto callback = [&](int /*depth*/, Event event, nlohmann::json& parsed) {
+    switch (event) {
+      case Event::object_start: open.element(), open.open(true); break;
+      case Event::array_start: open.element(), open.open(false); break;
+      case Event::object_end:
+      case Event::array_end: open.close(); break;
+      case Event::value: open.element(); break;
+      case Event::key:
+        if (const std::string repeated = open.add_key(parsed.get<std::string>()); !repeated.empty())
+          throw InputError(source + ": " + repeated + " is given twice");
+        break;
+    }
+    return true;
+  };
+  try {
+    return nlohmann::json::parse(text, callback);
+  } catch (const nlohmann::json::exception& e) {
+    // nlohmann's message is "[json.exception.parse_error.101] parse error at line 3, column 5: ...";
+    // a number too large for a double ("1e999") is its out_of_range.406, also bad input.
+    std::string what = e.what();
+    const auto p = what.find("] ");
+    throw InputError(source + ": invalid JSON: " + (p == std::string::npos ? what : what.substr(p + 2)));
+  }
+}
 
 const nlohmann::json& require_object(const nlohmann::json& json, const std::string& path,
                                      const std::string& source) {

@@ -293,16 +293,7 @@ std::string_view default_scene_json() { return kDefaultSceneJson; }
 
 Scene parse_scene(std::string_view json_text, const std::string& file) {
   const std::string source = escaped(file);  // as messages show it
-  nlohmann::json root;
-  try {
-    root = nlohmann::json::parse(json_text);
-  } catch (const nlohmann::json::exception& e) {
-    // nlohmann's message is "[json.exception.parse_error.101] parse error at line 3, column 5: ...";
-    // a number too large for a double ("1e999") is its out_of_range.406, also bad input.
-    std::string what = e.what();
-    const auto p = what.find("] ");
-    throw InputError(source + ": invalid JSON: " + (p == std::string::npos ? what : what.substr(p + 2)));
-  }
+  const nlohmann::json root = parse_json(json_text, source);
   JsonFields f(root, "", source);
   Scene s;
   s.name = f.text("name", "", {});

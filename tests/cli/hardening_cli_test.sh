@@ -69,5 +69,11 @@ expect_bad "--steps: must be a whole number from 1 to 10000000" check --steps 1e
 "$pond" simulate --steps 010 --out "$work/ten.npy" > "$work/stdout" 2>&1 || fail "--steps 010: $(cat "$work/stdout")"
 grep -q "^simulated 10 steps" "$work/stdout" || fail "--steps 010 is not ten steps: $(head -1 "$work/stdout")"
 
+# A key given twice in one object is refused with its path (nlohmann would keep the last).
+scene twice '{"grid": {"rows": 10, "rows": 20}}'
+expect_bad "twice.json: grid.rows is given twice" simulate --steps 1 --scene "$work/twice.json" $out
+scene twice_body '{"bodies": [{"motion": "floating", "radius": 2, "mass": 3, "position": [5, 1, 5], "mass": 4}]}'
+expect_bad "bodies[0].mass is given twice" simulate --steps 1 --scene "$work/twice_body.json" $out
+
 if [ $failures -eq 0 ]; then echo "all hardening CLI cases passed"; exit 0; fi
 exit 1

@@ -327,7 +327,8 @@ TEST(Scene, BodyErrorsNameThePath) {
   EXPECT_TRUE(has(R"({"motion": "floating", "mass": 3, "position": [5, 1, -0.5], "radius": 2})",
                   "bodies[0].position is outside the grid"));
   EXPECT_TRUE(has(ball + R"("radius": 2, "shape": "cube"})", "bodies[0].shape is 'cube', expected sphere"));
-  EXPECT_TRUE(has(ball + R"("radius": 2, "motion": "sinking"})", "bodies[0].motion is 'sinking', expected kinematic | floating"));
+  EXPECT_TRUE(has(R"({"motion": "sinking", "mass": 3, "position": [5, 1, 5], "radius": 2})",
+                  "bodies[0].motion is 'sinking', expected kinematic | floating"));
   EXPECT_TRUE(has(R"({"radius": 2, "mass": 3, "position": [5, 1, 5]})", "bodies[0].motion is missing"));
   EXPECT_TRUE(has(ball + R"("radius": 2, "colour": "red"})", "bodies[0].colour is not a known key"));
   EXPECT_TRUE(has(ball + R"("radius": 2}, {"motion": "kinematic", "radius": 2, "path": [[0, 1, 0, 1], [10, 2, 0, 2], [5, 3, 0, 3]]})",
