@@ -75,5 +75,29 @@ expect_bad "twice.json: grid.rows is given twice" simulate --steps 1 --scene "$w
 scene twice_body '{"bodies": [{"motion": "floating", "radius": 2, "mass": 3, "position": [5, 1, 5], "mass": 4}]}'
 expect_bad "bodies[0].mass is given twice" simulate --steps 1 --scene "$work/twice_body.json" $out
 
+# Every number of a scene within the range where its arithmetic stays finite and meaningful, in the
+# units it is used in; the message names the key and shows the digits that put it outside.
+refuse_scene() {  # refuse_scene TEXT JSON
+  scene range "$2"
+  expect_bad "$1" simulate --steps 3 --scene "$work/range.json" $out --bodies-out "$work/bodies.npy"
+}
+refuse_scene 'physics.body_drag is 1e+39, outside [0, 1e+06]' '{"physics": {"body_drag": 1e39}}'
+refuse_scene 'physics.water_density is 1e+39' '{"physics": {"water_density": 1e39}}'
+refuse_scene 'physics.mass is 1e-300' '{"physics": {"mass": 1e-300}}'
+refuse_scene 'grid.spacing is 1e+300' '{"grid": {"spacing": 1e300}}'
+refuse_scene 'grid.spacing is 1e-300' '{"grid": {"spacing": 1e-300}}'
+refuse_scene 'wind.direction_deg is 1e+100' '{"wind": {"direction_deg": 1e100}}'
+refuse_scene 'perturbations[0].radius is 1e+09 (1e+09 grid spacings)' \
+  '{"perturbations": [{"row": 25, "col": 25, "radius": 1e9, "amplitude": 1}]}'
+refuse_scene 'perturbations[0].amplitude is 1e+38' '{"perturbations": [{"row": 25, "col": 25, "radius": 2, "amplitude": 1e38}]}'
+refuse_scene 'tree.height is 1e+300' \
+  '{"constraints": [{"kind": "fixed", "rows": [20, 24], "cols": [30, 34]}], "tree": {"height": 1e300}}'
+refuse_scene 'bodies[0].path[1] has y 1e+300' \
+  '{"bodies": [{"motion": "kinematic", "radius": 2, "path": [[0, 10, 0, 10], [10, 10, 1e300, 10]]}]}'
+refuse_scene 'bodies[0].density is 100.00001;' \
+  '{"bodies": [{"motion": "floating", "radius": 2, "density": 100.00001, "position": [10, 0, 10]}]}'
+refuse_scene 'camera.eye has a coordinate that is 1e+160' '{"camera": {"eye": [1e160, 1e160, 1e160], "target": [0, 0, 0]}}'
+refuse_scene 'basin.floor_depth is 1e-300' '{"basin": {"floor_depth": 1e-300}}'
+
 if [ $failures -eq 0 ]; then echo "all hardening CLI cases passed"; exit 0; fi
 exit 1
