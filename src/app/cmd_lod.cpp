@@ -18,6 +18,7 @@
 #include "core/output_file.h"
 #include "core/text.h"
 #include "lod/lod_builder.h"
+#include "view/view_projection.h"
 
 namespace pond::app {
 namespace {
@@ -43,6 +44,7 @@ int run_lod(const LodOptions& o) {
   const Size2 size = parse_size(o.size, "--size");
   camera.width = size.width, camera.height = size.height;
   camera.fovy_degrees = o.fovy;
+  camera = view::checked_camera(camera, "--eye", "--target");
   lod::validate(camera, o.tolerance);
   core::validate_cpu_features_mask();  // the builder reads it; an error below is the state's
   check_output_path(o.out);

@@ -4,6 +4,7 @@
 #include "app/render_bridge.h"
 #include "core/errors.h"
 #include "core/output_file.h"
+#include "view/view_projection.h"
 
 namespace pond::app {
 
@@ -35,8 +36,9 @@ Command add_render_command(CLI::App& app) {
             const Size2 size = parse_size((*raw)[0], "--size");
             o->width = size.width;
             o->height = size.height;
-            if (!(*raw)[1].empty()) o->eye = parse_vec3((*raw)[1], "--eye");
-            if (!(*raw)[2].empty()) o->target = parse_vec3((*raw)[2], "--target");
+            if (!(*raw)[1].empty()) view::check_camera_point(*(o->eye = parse_vec3((*raw)[1], "--eye")), "--eye");
+            if (!(*raw)[2].empty()) view::check_camera_point(*(o->target = parse_vec3((*raw)[2], "--target")), "--target");
+            if (o->eye && o->target && *o->eye == *o->target) throw InputError("--target must differ from --eye");
             check_output_path(o->out);
             return run_render(*o);
           }};

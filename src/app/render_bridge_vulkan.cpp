@@ -24,6 +24,7 @@
 #include "scene/scene.h"
 #include "scene/session_spec.h"
 #include "sim/session.h"
+#include "view/view_projection.h"
 
 namespace pond::app {
 namespace {
@@ -85,6 +86,7 @@ int run_render(const RenderOptions& o) {
   if (o.eye) view.camera.eye = *o.eye;
   if (o.target) view.camera.target = *o.target;
   if (o.fovy) view.camera.fovy_degrees = *o.fovy;
+  view.camera = view::checked_camera(view.camera, o.eye ? "--eye" : "camera.eye", o.target ? "--target" : "camera.target");
   view.lod_tolerance_px = o.lod_tolerance.value_or(scene.view.lod_tolerance_px);
   view.wireframe = o.wireframe;
   view.effects = scene.view.effects;

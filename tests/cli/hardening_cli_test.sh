@@ -99,5 +99,20 @@ refuse_scene 'bodies[0].density is 100.00001;' \
 refuse_scene 'camera.eye has a coordinate that is 1e+160' '{"camera": {"eye": [1e160, 1e160, 1e160], "target": [0, 0, 0]}}'
 refuse_scene 'basin.floor_depth is 1e-300' '{"basin": {"floor_depth": 1e-300}}'
 
+# Cameras float view matrices cannot hold are refused naming the flag; a target a denormal away
+# from the eye gives the triangles of the same direction at a sane scale.
+"$pond" simulate --steps 5 --out "$work/state.npy" > /dev/null || fail "simulate for lod"
+view="--state $work/state.npy --fovy 45 --size 640x480 --tolerance 1"
+lod() { "$pond" lod $view "$@"; }
+expect_bad "--eye has a coordinate 1e+160, outside [-1e+15, 1e+15]" lod $view --eye 1e160,1e160,1e160 --target 25,0,25 $out
+expect_bad "--target has a coordinate -1e+16" lod $view --eye 1,1,1 --target 0,-1e16,0 $out
+expect_bad "--target must differ from --eye" lod $view --eye 3,4,5 --target 3,4,5 $out
+for pair in "0,0,0 5e-324,0,0 1,0,0" "0,10,0 1e-310,10,-1e-310 1,10,-1" "7,3,7 7,3,7.000000000000001 7,3,8"; do
+  set -- $pair
+  lod --eye "$1" --target "$2" --out "$work/tiny.npy" > /dev/null 2>&1 || fail "lod --eye $1 --target $2"
+  lod --eye "$1" --target "$3" --out "$work/sane.npy" > /dev/null 2>&1 || fail "lod --eye $1 --target $3"
+  cmp -s "$work/tiny.npy" "$work/sane.npy" || fail "lod --eye $1 --target $2: not the triangles of --target $3"
+done
+
 if [ $failures -eq 0 ]; then echo "all hardening CLI cases passed"; exit 0; fi
 exit 1
