@@ -1,7 +1,8 @@
 #!/bin/sh
 # `pond render` with hostile but fair input (issue 60), on the test device: a camera far out is
 # refused naming the flag; a target a denormal away from the eye, and a sun given at 1e200 or
-# 1e-200, draw the very picture of the same direction at a sane scale. Usage: hardening_render_test.sh PATH/TO/pond WORKDIR
+# 1e-200, draw the very picture of the same direction at a sane scale; --profile never prints a
+# negative cost. Usage: hardening_render_test.sh PATH/TO/pond WORKDIR
 set -u
 pond=$1
 work=$2
@@ -32,6 +33,11 @@ for sun in "1, 1, 0" "1e200, 1e200, 0" "1e-200, 1e-200, 0" "4e-320, 4e-320, 0"; 
   render "sun_${sun%%,*}" --scene "$work/sun.json"
   cmp -s "$work/sun_1.png" "$work/sun_${sun%%,*}.png" || fail "sun [$sun] draws another picture than [1, 1, 0]"
 done
+
+"$pond" render --steps 2 --frames 2 --size 96x64 --out "$work/profiled.png" --profile > "$work/stdout" 2> "$work/stderr" ||
+  fail "--profile: $(cat "$work/stderr")"
+[ "$(grep -c "^effect " "$work/stdout")" -eq 4 ] || fail "--profile: not four effects: $(cat "$work/stdout")"
+if grep "^effect " "$work/stdout" | grep -q ": -"; then fail "--profile printed a negative cost: $(cat "$work/stdout")"; fi
 
 if [ $failures -eq 0 ]; then echo "all hardening render cases passed"; exit 0; fi
 exit 1
