@@ -11,6 +11,7 @@
 #include "core/errors.h"
 #include "core/npy.h"
 #include "core/output_file.h"
+#include "core/output_paths.h"
 #include "core/text.h"
 #include "scene/scene.h"
 #include "scene/session_spec.h"
@@ -65,7 +66,7 @@ int run_simulate(const SimulateOptions& o) {
     } catch (const InputError& e) {
       throw InputError(std::string("--bodies-out: ") + e.what());
     }
-    if (o.bodies_out == o.out) throw InputError("--bodies-out must differ from --out (" + o.out + ")");
+    check_distinct_outputs({{"--out", o.out}, {"--bodies-out", o.bodies_out}});
   }
   const InterruptScope interrupt_scope;  // SIGINT/SIGTERM stop the run before anything is written
   sim::Session session(scene::session_spec(scene::load_scene(o.scene)), parse_solver(o.solver, math, o.threads),

@@ -12,6 +12,7 @@
 #include "core/errors.h"
 #include "core/npy.h"
 #include "core/output_file.h"
+#include "core/output_paths.h"
 #include "core/text.h"
 #include "tree/tree.h"
 
@@ -97,6 +98,7 @@ int run_tree(const TreeOptions& o) {
   const fs::path parents_path = o.out + ".parents.npy";
   check_output_path(vertices_path);  // before any work: a missing folder writes nothing
   check_output_path(parents_path);
+  check_distinct_outputs({{"--out's vertices", vertices_path}, {"--out's parents", parents_path}});  // a symlink
 
   const tree::Tree t = tree::grow_tree(params);
   const std::size_t vertex_shape[2] = {t.size(), static_cast<std::size_t>(

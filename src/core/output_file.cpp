@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "core/errors.h"
+#include "core/output_paths.h"
 #include "core/text.h"
 
 namespace pond {
@@ -21,6 +22,7 @@ void check_output_path(const fs::path& path) {
   std::error_code ec;
   if (!fs::is_directory(folder, ec))
     throw InputError("output folder " + quote(folder.string()) + " does not exist");
+  check_name_length(path, folder);
   if (fs::is_directory(path, ec))
     throw InputError("output path " + quote(path.string()) + " is a folder");
   if (::access(folder.c_str(), W_OK) != 0)

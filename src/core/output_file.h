@@ -10,8 +10,9 @@
 
 namespace pond {
 
-// Throws InputError when the folder of `path` does not exist or is not a folder (checked before any
-// work, so bad paths fail fast), RuntimeError when writing fails.
+// Throws InputError when the folder of `path` does not exist or is not a folder, or the name is too
+// long for it (core/output_paths.h) (checked before any work, so bad paths fail fast), RuntimeError
+// when writing fails.
 void check_output_path(const std::filesystem::path& path);
 
 // Atomically replaces `path` with `bytes`. Throws RuntimeError on failure; the target is untouched.

@@ -3,7 +3,7 @@
 # stderr line that names what is wrong (the key, the flag, the file) and holds no control byte,
 # and leaves the output files untouched. Usage: hardening_cli_test.sh PATH/TO/pond WORKDIR
 set -u
-pond=$1
+pond=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 work=$2
 rm -rf "$work" && mkdir -p "$work" || exit 1
 failures=0
@@ -113,6 +113,33 @@ for pair in "0,0,0 5e-324,0,0 1,0,0" "0,10,0 1e-310,10,-1e-310 1,10,-1" "7,3,7 7
   lod --eye "$1" --target "$3" --out "$work/sane.npy" > /dev/null 2>&1 || fail "lod --eye $1 --target $3"
   cmp -s "$work/tiny.npy" "$work/sane.npy" || fail "lod --eye $1 --target $2: not the triangles of --target $3"
 done
+
+# Two outputs of one command are compared by what they name, not by their text; a name too long for
+# the file system is refused up front, like a missing folder.
+mkdir -p "$work/real_dir" && ln -sfn real_dir "$work/link_dir" && ln -sfn out.npy "$work/alias.npy"
+expect_bad "--bodies-out '$work/./out.npy' names the same file as --out '$work/out.npy'" \
+  simulate --steps 1 $out --bodies-out "$work/./out.npy"
+expect_bad "names the same file as --out" simulate --steps 1 $out --bodies-out "$work/real_dir/../out.npy"
+expect_bad "names the same file as --out" simulate --steps 1 $out --bodies-out "$work/alias.npy"
+expect_bad "names the same file as --out" simulate --steps 1 --out "$work/real_dir/s.npy" --bodies-out "$work/link_dir/s.npy"
+(cd "$work" && "$pond" simulate --steps 1 --out same.npy --bodies-out ./same.npy > stdout 2> stderr)
+[ $? -eq 2 ] && [ ! -e "$work/same.npy" ] || fail "--out same.npy --bodies-out ./same.npy: $(cat "$work/stderr")"
+printf 'sentinel\n' > "$work/t.vertices.npy" && ln -sfn t.vertices.npy "$work/t.parents.npy"
+expect_bad "--out's parents '$work/t.parents.npy' names the same file as --out's vertices" tree --depth 3 --seed 1 --out "$work/t"
+long=$(printf '%0250d' 0)
+expect_bad "output file name '${long}.npy' has 254 bytes; its folder takes at most 223 (NAME_MAX 255" \
+  simulate --steps 1 --out "$work/$long.npy"
+expect_bad "has 256 bytes" lod --state "$work/state.npy" --eye 1,1,1 --target 0,0,0 --fovy 45 --size 8x8 --tolerance 1 \
+  --out "$work/${long}ab.npy"
+expect_bad "has 243 bytes" tree --depth 3 --seed 1 --out "$work/$(printf '%0230d' 0)"
+expect_bad "has 254 bytes" render --steps 1 --size 8x8 --out "$work/$long.png"
+# A folder that exists, but with the name the whole path passes PATH_MAX (4096).
+deep=$(cd "$work" && i=0 && while [ $i -lt 80 ]; do mkdir -p "d$(printf '%048d' $i)" && cd "d$(printf '%048d' $i)" || exit 1; i=$((i + 1)); done && pwd)
+expect_bad "bytes is longer than the" simulate --steps 1 --out "$deep/$(printf '%0100d' 0).npy"
+printf 'frame 1 screenshot %s\nframe 2 screenshot %s\n' "$work/s.png" "$work/./s.png" > "$work/shots.script"
+expect_bad "--script line 2: screenshot '$work/./s.png' names the same file as --script line 1" demo --frames 3 --script "$work/shots.script"
+printf 'frame 1 screenshot %s\n' "$work/s.png" > "$work/shot.script"
+expect_bad "names the same file as --screenshot" demo --frames 3 --script "$work/shot.script" --screenshot "$work/real_dir/../s.png"
 
 if [ $failures -eq 0 ]; then echo "all hardening CLI cases passed"; exit 0; fi
 exit 1

@@ -9,6 +9,7 @@
 #include "app/demo/scene_modes.h"
 #include "core/errors.h"
 #include "core/output_file.h"
+#include "core/output_paths.h"
 #include "core/text.h"
 #include "scene/session_spec.h"
 #include "sim/backends.h"
@@ -247,6 +248,10 @@ int run_demo(const DemoOptions& options) {
   scene::Scene scene = scene::load_scene(options.scene);
   Script script = load_script(options.script);
   if (!options.screenshot.empty()) check_output_path(options.screenshot);
+  std::vector<std::pair<std::string, std::filesystem::path>> shots{{"--screenshot", options.screenshot}};
+  for (std::size_t k = 0; k < script.screenshots.size(); ++k)
+    shots.emplace_back("--script line " + std::to_string(script.screenshot_lines[k]) + ": screenshot", script.screenshots[k]);
+  check_distinct_outputs(shots);  // one would overwrite the other
   DemoApp app(options, std::move(scene), std::move(script));
   return app.run();
 }

@@ -178,6 +178,7 @@ Script parse_script(const std::string& text, const std::string& source) {
       const std::string file = p.word("file name");
       check_output_path(file);
       script.screenshots.push_back(file);
+      script.screenshot_lines.push_back(number);
       add({.kind = Kind::screenshot, .screenshot = static_cast<int>(script.screenshots.size() - 1)});
     } else {
       p.fail("unknown event " + quote(verb) + " (" + kEvents + ")");

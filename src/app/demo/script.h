@@ -40,6 +40,7 @@ struct ScriptEvent {
 struct Script {
   std::vector<ScriptEvent> events;        // sorted by frame, file order within a frame
   std::vector<std::string> screenshots;  // InputEvent::screenshot indexes these
+  std::vector<int> screenshot_lines;     // the line of each
 };
 
 Script parse_script(const std::string& text, const std::string& source);
