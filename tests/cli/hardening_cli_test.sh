@@ -141,5 +141,36 @@ expect_bad "--script line 2: screenshot '$work/./s.png' names the same file as -
 printf 'frame 1 screenshot %s\n' "$work/s.png" > "$work/shot.script"
 expect_bad "names the same file as --screenshot" demo --frames 3 --script "$work/shot.script" --screenshot "$work/real_dir/../s.png"
 
+# The demo's bad input, refused before any window (so without a display): script numbers finite and
+# bounded, control bytes, frame numbers, screenshots that could never be taken, window sizes.
+if "$pond" --version | grep -q "Vulkan headers"; then
+  script() { printf "$2" > "$work/$1.script"; }  # script NAME PRINTF-FORMAT
+  script nan 'frame 1 move nan nan\n'
+  expect_bad "nan.script line 1: x 'nan' is outside [-65536, 65536]" demo --frames 3 --script "$work/nan.script"
+  script inf 'frame 0 key H\nframe 1 click inf inf\n'
+  expect_bad "inf.script line 2: x 'inf' is outside" demo --frames 3 --script "$work/inf.script"
+  script far 'frame 1 drag left 10 10 10 1e30\n'
+  expect_bad "far.script line 1: y1 '1e30' is outside" demo --frames 3 --script "$work/far.script"
+  script wheel 'frame 1 scroll 1e30\n'
+  expect_bad "wheel.script line 1: scroll amount '1e30' is outside [-100, 100]" demo --frames 3 --script "$work/wheel.script"
+  script huge 'frame 1 scroll 1e999\n'
+  expect_bad "huge.script line 1: scroll amount '1e999' is outside" demo --frames 3 --script "$work/huge.script"
+  script nul 'frame 1 move 1\0002 3\n'
+  expect_bad 'nul.script line 1: control byte \0 at column 15' demo --frames 3 --script "$work/nul.script"
+  script frame 'frame 99999999999999999999 key H\n'
+  expect_bad "frame number '99999999999999999999' is out of range" demo --frames 3 --script "$work/frame.script"
+  script late "frame 1 key H\nframe 50 screenshot $work/late.png\n"
+  expect_bad "late.script line 2: screenshot at frame 50 is past the last frame (--frames 10" \
+    demo --frames 10 --script "$work/late.script"
+  expect_bad "--screenshot must name a file" demo --frames 3 --screenshot ""
+  expect_bad "--screenshot must name a file" --frames 3 --screenshot ""
+  expect_bad "--screenshot saves the last frame of --frames N: give --frames" demo --screenshot "$work/s.png"
+  expect_bad "--size 65536x1: a window takes at most 32767 pixels a side" demo --frames 3 --size 65536x1
+  # A trailing comment is no bad input: the run goes on to need a display (exit 1), not exit 2.
+  script comment 'frame 1 scroll 2   # zoom in\nframe 2 key H # help\n# a whole line\n'
+  env -u DISPLAY -u WAYLAND_DISPLAY "$pond" demo --frames 3 --script "$work/comment.script" > /dev/null 2> "$work/stderr"
+  [ $? -eq 1 ] && grep -q "needs a display" "$work/stderr" || fail "a trailing comment: $(cat "$work/stderr")"
+fi
+
 if [ $failures -eq 0 ]; then echo "all hardening CLI cases passed"; exit 0; fi
 exit 1

@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "core/output_file.h"
 #include "core/output_paths.h"
+#include "render/render_target.h"
 #include "core/text.h"
 #include "scene/session_spec.h"
 #include "sim/backends.h"
@@ -24,6 +25,38 @@ using Clock = std::chrono::steady_clock;
 
 double ms_between(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
 
+// X11 takes window coordinates as 16-bit signed numbers; larger sizes end in an X error.
+constexpr int kMaxWindowSide = 32767;
+
+// Every requested screenshot has a frame the run draws: --screenshot is the last of --frames N, a
+// script's screenshot must come before it.
+void check_requested_shots(const DemoOptions& options, const Script& script) {
+  if (!options.screenshot.empty() && options.frames == 0)
+    throw InputError("--screenshot saves the last frame of --frames N: give --frames");
+  if (options.frames == 0) return;
+  for (const ScriptEvent& e : script.events)
+    if (e.event.kind == InputEvent::Kind::screenshot && e.frame >= options.frames)
+      throw InputError("--script " + escaped(options.script) + " line " +
+                       std::to_string(script.screenshot_lines[static_cast<std::size_t>(e.event.screenshot)]) +
+                       ": screenshot at frame " + std::to_string(e.frame) + " is past the last frame (--frames " +
+                       std::to_string(options.frames) + " ends after frame " + std::to_string(options.frames - 1) + ")");
+}
+
+// The window's size as the swapchain will get it, refused (InputError, as `pond render` refuses a
+// --size) beyond what the device can draw; the script's resizes too.
+vk::Extent2D checked_extent(const gpu::Context& ctx, const Window& window, const DemoOptions& options, const Script& script) {
+  render::check_target_size(ctx, options.width, options.height, render::RenderTarget::kFormat);
+  for (const ScriptEvent& e : script.events)
+    if (e.event.kind == InputEvent::Kind::resize) {
+      try {
+        render::check_target_size(ctx, static_cast<int>(e.event.x), static_cast<int>(e.event.y), render::RenderTarget::kFormat);
+      } catch (const InputError& bad) {
+        throw InputError("--script resize at frame " + std::to_string(e.frame) + ": " + bad.what());
+      }
+    }
+  return window.framebuffer_extent();
+}
+
 }  // namespace
 
 std::string solver_label(const sim::SolverChoice& s) {
@@ -37,7 +70,7 @@ DemoApp::DemoApp(const DemoOptions& options, scene::Scene scene, Script script)
       window_(options.width, options.height, "pond"),
       ctx_(gpu::ContextOptions{.device = options.device, .validation = options.validation}, window_surface(window_)),
       imgui_session_(window_.handle()),
-      swapchain_(ctx_, window_.framebuffer_extent(), options.vsync),
+      swapchain_(ctx_, checked_extent(ctx_, window_, options, script_), options.vsync),
       imgui_(ctx_, swapchain_.format()),
       shots_(ctx_),
       gpu_solvers_(ctx_),
@@ -105,7 +138,7 @@ void DemoApp::draw_ui() {
   if (bodies.add_ball) add_ball(middle_of_pond());
 }
 
-bool DemoApp::draw_frame(const std::string* screenshot_path) {
+bool DemoApp::draw_frame(const std::vector<std::string>& shots) {
   // The frame's wait for the last compute, its early passes and LOD first, then the swapchain
   // image: acquiring waits for the window system to have taken the last frame, which this way
   // overlaps with them. A frame prepared before a failed acquire is drawn after the swapchain's
@@ -119,7 +152,7 @@ bool DemoApp::draw_frame(const std::string* screenshot_path) {
   acquire_ms_ = ms_between(t0, Clock::now());
   if (!image) return false;
   const vk::Extent2D extent = swapchain_.extent();
-  const bool shot = screenshot_path != nullptr;
+  const bool shot = !shots.empty();
   const render::FrameTarget target{.image = image->image, .view = image->view, .format = swapchain_.format(),
                                    .extent = extent, .old_layout = vk::ImageLayout::eUndefined,
                                    .final_layout = shot ? vk::ImageLayout::eTransferSrcOptimal : vk::ImageLayout::ePresentSrcKHR,
@@ -128,8 +161,9 @@ bool DemoApp::draw_frame(const std::string* screenshot_path) {
   stats_.last = loop_->draw(target);
   stats_.steps_done = session_->steps_done();
   if (shot) {
-    shots_.save(image->image, swapchain_.format(), extent, image->rendered, *screenshot_path);
-    settings_.message = "saved " + escaped(*screenshot_path);
+    shots_.save(image->image, swapchain_.format(), extent, image->rendered, shots);
+    settings_.message = "saved";
+    for (const std::string& path : shots) settings_.message += " " + escaped(path), written_.insert(path);
   }
   const Clock::time_point t1 = Clock::now();
   const bool current = swapchain_.present(*image);
@@ -212,14 +246,13 @@ int DemoApp::run() {
     session_->advance_wind(stats_.frame_ms / 1000.0);
     draw_ui();
     const bool last_frame = options_.frames > 0 && frame + 1 == options_.frames;
-    std::optional<std::string> shot = std::move(pending_shot_);
-    pending_shot_.reset();
-    if (last_frame && !options_.screenshot.empty()) shot = options_.screenshot;
-    if (!draw_frame(shot ? &*shot : nullptr)) {
+    std::vector<std::string> shots = pending_shots_;  // kept for a retry of this frame
+    if (last_frame && !options_.screenshot.empty()) shots.push_back(options_.screenshot);
+    if (!draw_frame(shots)) {
       swapchain_.recreate(window_.framebuffer_extent(), settings_.vsync);
-      if (shot) pending_shot_ = std::move(shot);
       continue;
     }
+    pending_shots_.clear();
     step();
     const Clock::time_point t = Clock::now();
     const double ms = ms_between(last, t);
@@ -234,7 +267,8 @@ int DemoApp::run() {
     std::printf("pond demo: %lld of %lld frames minimized (nothing drawn)\n", static_cast<long long>(minimized_frames),
                 static_cast<long long>(frame));
   if (!options_.screenshot.empty() && window_.minimized() && options_.frames > 0)
-    throw RuntimeError("the window was minimized at the last frame: no screenshot for " + options_.screenshot);
+    throw RuntimeError("the window was minimized at the last frame: no screenshot for " + quote(options_.screenshot));
+  check_screenshots_written(frame);
   if (!options_.quiet)
     totals.print(swapchain_.extent().width, swapchain_.extent().height, ctx_.device_name(), stats_.solver,
                  stats_.present_mode, stats_.last.full_triangles);
@@ -243,10 +277,28 @@ int DemoApp::run() {
   return 0;
 }
 
+void DemoApp::check_screenshots_written(std::int64_t frames_run) const {
+  const std::string ended = "the demo ended after " + std::to_string(frames_run) + " frame" + (frames_run == 1 ? "" : "s");
+  for (const ScriptEvent& e : script_.events)
+    if (e.event.kind == InputEvent::Kind::screenshot) {
+      const auto k = static_cast<std::size_t>(e.event.screenshot);
+      if (!written_.contains(script_.screenshots[k]))
+        throw RuntimeError("no screenshot " + quote(script_.screenshots[k]) + " (--script line " +
+                           std::to_string(script_.screenshot_lines[k]) + ", frame " + std::to_string(e.frame) + "): " + ended);
+    }
+  if (!options_.screenshot.empty() && !written_.contains(options_.screenshot))
+    throw RuntimeError("no screenshot " + quote(options_.screenshot) + " (--screenshot, frame " +
+                       std::to_string(options_.frames - 1) + "): " + ended);
+}
+
 int run_demo(const DemoOptions& options) {
   // Bad input first, before any window: exit 2 even on a machine without a display.
   scene::Scene scene = scene::load_scene(options.scene);
   Script script = load_script(options.script);
+  check_requested_shots(options, script);
+  if (options.width > kMaxWindowSide || options.height > kMaxWindowSide)
+    throw InputError("--size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
+                     ": a window takes at most " + std::to_string(kMaxWindowSide) + " pixels a side (X11's coordinates)");
   if (!options.screenshot.empty()) check_output_path(options.screenshot);
   std::vector<std::pair<std::string, std::filesystem::path>> shots{{"--screenshot", options.screenshot}};
   for (std::size_t k = 0; k < script.screenshots.size(); ++k)
