@@ -92,6 +92,8 @@ DemoApp::DemoApp(const DemoOptions& options, scene::Scene scene, Script script)
   build_loop();
   const vk::Extent2D e = swapchain_.extent();
   camera_.set_home(loop_->default_camera(static_cast<int>(e.width), static_cast<int>(e.height)));
+  // Half a spacing above the land, itself above the rest plane: the view stays out of the water.
+  camera_.set_lowest_eye(base_scene_.basin.land_height + 0.5 * base_scene_.grid.spacing);
 }
 
 scene::Scene DemoApp::scene_with_settings() const {
