@@ -40,7 +40,7 @@ class OpenLevels {
   void element() {  // a value, object or array begins inside the innermost level
     if (!levels_.empty() && !levels_.back().object) ++levels_.back().index;
   }
-  void open(bool object) { levels_.push_back(Level{object}); }
+  void open(bool object) { levels_.emplace_back().object = object; }
   void close() { levels_.pop_back(); }
 
  private:
