@@ -108,11 +108,16 @@ std::optional<Problem> motion_problem(const sim::BodySpec& b, const sim::WaterSp
   if (const std::optional<std::string> what = off_grid(b.position, w.grid)) return Problem{"position", *what};
   if (const std::optional<std::string> solid = sim::sphere_in_solid(kinds, w.grid, w.basin, b.position, b.radius))
     return Problem{"position", "puts the ball into " + *solid};
-  const double top = w.physics.gravity > 0.0 ? fastest * fastest / (2.0 * w.physics.gravity) : 1e6 * h;
+  // Where a fall from rest reaches the fastest motion; at most a million spacings up (a tiny gravity).
+  const double top = std::min(w.physics.gravity > 0.0 ? fastest * fastest / (2.0 * w.physics.gravity) : kMaxSpacings * h,
+                              kMaxSpacings * h);
   if (b.position[1] > w.basin.land_height + top)
-    return Problem{"position", "has y " + number_text(b.position[1]) + ": from higher than " +
-                                   number_text(w.basin.land_height + top) + " a fall passes " +
-                                   number_text(POND_MAX_SPACINGS_PER_STEP) + " spacings a step"};
+    return Problem{"position", "has y " + number_text(b.position[1]) +
+                                   (top < kMaxSpacings * h ? ": from higher than " + number_text(w.basin.land_height + top) +
+                                                                 " a fall passes " + number_text(POND_MAX_SPACINGS_PER_STEP) +
+                                                                 " spacings a step"
+                                                           : ": higher than " + number_text(w.basin.land_height + top) +
+                                                                 ", a million grid spacings above the land")};
   if (length(b.velocity) > fastest)
     return Problem{"velocity", "is " + number_text(length(b.velocity) / h * w.physics.dt) +
                                    " spacings a step; at most " + number_text(POND_MAX_SPACINGS_PER_STEP)};

@@ -83,6 +83,10 @@ TEST(SceneLimits, LengthsStayWithinAMillionGridSpacings) {
                       "tree.height is 1e+300 (1e+300 grid spacings)"));
   EXPECT_TRUE(refused(R"({"bodies": [{"motion": "kinematic", "radius": 2, "path": [[0, 10, 0, 10], [10, 10, 1e300, 10]]}]})",
                       "bodies[0].path[1] has y 1e+300 (1e+300 grid spacings), outside [-1e+06, 1e+06]"));
+  // A floating ball's height: under a tiny gravity no fall is fast, yet 1e300 is no height.
+  EXPECT_TRUE(refused(R"({"physics": {"gravity": 1e-300},
+                          "bodies": [{"motion": "floating", "radius": 2, "density": 0.5, "position": [10, 1e300, 10]}]})",
+                      "bodies[0].position has y 1e+300: higher than 1e+06, a million grid spacings above the land"));
 }
 
 TEST(SceneLimits, AnglesCamerasAndPixelsStayRepresentable) {
