@@ -147,7 +147,8 @@ CameraSpec parse_camera(JsonFields f) {
         f.fail(key, "has a coordinate that " + *what + " (float view matrices)");
   if (c.eye == c.target) f.fail("target", "must differ from camera.eye");
   c.fovy_degrees = f.number("fovy", c.fovy_degrees);
-  if (!(c.fovy_degrees > 0.0 && c.fovy_degrees < 180.0)) f.fail("fovy", "must be in (0, 180) degrees");
+  // As render's and lod's --fovy: past these, 1 / tan(fovy / 2) leaves float's range or the view folds.
+  if (!(c.fovy_degrees >= 0.01 && c.fovy_degrees <= 179.99)) f.fail("fovy", "must be in [0.01, 179.99] degrees");
   f.finish();
   return c;
 }

@@ -95,6 +95,8 @@ TEST(SceneLimits, AnglesCamerasAndPixelsStayRepresentable) {
   EXPECT_TRUE(refused(R"({"camera": {"eye": [1e160, 1, 1], "target": [0, 0, 0]}})",
                       "camera.eye has a coordinate that is 1e+160, outside [-1e+15, 1e+15]"));
   EXPECT_TRUE(refused(R"({"camera": {"eye": [1, 1, 1], "target": [0, -2e15, 0]}})", "camera.target has a coordinate"));
+  EXPECT_TRUE(refused(R"({"camera": {"eye": [1, 1, 1], "target": [0, 0, 0], "fovy": 1e-300}})",
+                      "camera.fovy must be in [0.01, 179.99] degrees"));
   EXPECT_TRUE(refused(R"({"view": {"lod_tolerance": 1e300}})", "view.lod_tolerance is 1e+300, outside [0, 1e+06] pixels"));
 }
 
