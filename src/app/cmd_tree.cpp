@@ -58,12 +58,15 @@ std::uint64_t parse_seed(const std::string& text) {
 // Writes both files or neither: each goes to a temporary name first (atomically), and only when both
 // are complete are they renamed into place. If the second rename fails, the first file is removed
 // again, so a run never leaves one new file beside an old or missing partner.
+fs::path partial(const fs::path& path) {
+  fs::path tmp = path;
+  tmp += ".partial." + std::to_string(::getpid());
+  return tmp;
+}
+
 void write_pair(const fs::path& first, std::span<const std::byte> first_bytes, const fs::path& second,
                 std::span<const std::byte> second_bytes) {
-  const std::string suffix = ".partial." + std::to_string(::getpid());
-  fs::path first_tmp = first, second_tmp = second;
-  first_tmp += suffix;
-  second_tmp += suffix;
+  const fs::path first_tmp = partial(first), second_tmp = partial(second);
   std::error_code ec;
   write_file_atomic(first_tmp, first_bytes);
   try {
@@ -96,8 +99,9 @@ int run_tree(const TreeOptions& o) {
     throw InputError("--out " + quote(o.out) + " must be a file name prefix such as out/tree, not a folder");
   const fs::path vertices_path = o.out + ".vertices.npy";
   const fs::path parents_path = o.out + ".parents.npy";
-  check_output_path(vertices_path);  // before any work: a missing folder writes nothing
-  check_output_path(parents_path);
+  // Before any work: a missing folder, a name too long for it (the partial names are the longest
+  // that are written) write nothing.
+  for (const fs::path& p : {vertices_path, parents_path, partial(vertices_path), partial(parents_path)}) check_output_path(p);
   check_distinct_outputs({{"--out's vertices", vertices_path}, {"--out's parents", parents_path}});  // a symlink
 
   const tree::Tree t = tree::grow_tree(params);

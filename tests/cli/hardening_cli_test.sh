@@ -132,6 +132,7 @@ expect_bad "output file name '${long}.npy' has 254 bytes; its folder takes at mo
 expect_bad "has 256 bytes" lod --state "$work/state.npy" --eye 1,1,1 --target 0,0,0 --fovy 45 --size 8x8 --tolerance 1 \
   --out "$work/${long}ab.npy"
 expect_bad "has 243 bytes" tree --depth 3 --seed 1 --out "$work/$(printf '%0230d' 0)"
+expect_bad ".vertices.npy.partial." tree --depth 3 --seed 1 --out "$work/$(printf '%0210d' 0)"  # its partial name
 expect_bad "has 254 bytes" render --steps 1 --size 8x8 --out "$work/$long.png"
 # A folder that exists, but with the name the whole path passes PATH_MAX (4096).
 deep=$(cd "$work" && i=0 && while [ $i -lt 80 ]; do mkdir -p "d$(printf '%048d' $i)" && cd "d$(printf '%048d' $i)" || exit 1; i=$((i + 1)); done && pwd)
