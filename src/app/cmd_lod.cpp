@@ -104,7 +104,7 @@ Command add_lod_command(CLI::App& app) {
   sub->add_option("--state", o->state, "Input STATE.npy: float32 (rows, cols, 6)")->required();
   sub->add_option("--eye", o->eye, "Camera position X,Y,Z (world units)")->required();
   sub->add_option("--target", o->target, "Point the camera looks at X,Y,Z")->required();
-  sub->add_option("--fovy", o->fovy, "Vertical field of view in degrees")->required()->transform(real_number(0.01, 179.99, kFovyRange));
+  sub->add_option("--fovy", o->fovy, "Vertical field of view in degrees")->required()->transform(real_number(view::kMinFovyDegrees, view::kMaxFovyDegrees, kFovyRange));
   sub->add_option("--size", o->size, "Viewport WIDTHxHEIGHT in pixels")->required();
   sub->add_option("--tolerance", o->tolerance,
                   "Screen-space error bound tau in pixels (> 0)")

@@ -22,7 +22,7 @@ Command add_render_command(CLI::App& app) {
   sub->add_option("--out", o->out, "Output PNG (the last frame)")->required();
   sub->add_option("--eye", (*raw)[1], "Camera position X,Y,Z (world; default: the scene's camera)");
   sub->add_option("--target", (*raw)[2], "Point looked at X,Y,Z");
-  sub->add_option("--fovy", o->fovy, "Vertical field of view in degrees")->transform(real_number(0.01, 179.99, kFovyRange));
+  sub->add_option("--fovy", o->fovy, "Vertical field of view in degrees")->transform(real_number(view::kMinFovyDegrees, view::kMaxFovyDegrees, kFovyRange));
   sub->add_option("--lod-tolerance", o->lod_tolerance, "LOD screen-space error in pixels; 0 = the full mesh")
       ->transform(real_number(0.0, 1e6, "a number of pixels >= 0 (0 = the full mesh), at most 1e6"));
   sub->add_option("--solver", o->solver, "Solver: gpu (default) or a CPU backend")

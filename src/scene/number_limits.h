@@ -4,8 +4,9 @@
 // digits, at most 3.4e38), in grid units (world / spacing):
 //  - a physics value lies within [1e-6, 1e6] of its unit (or is 0 where 0 means none), so that
 //    the products the solver's constants are (c dt / m, g dt / h, ...) stay normal floats;
-//  - a length or a coordinate lies within 1e6 grid spacings (a perturbation's radius at least
-//    1e-3), so positions and their squares stay far inside float's range;
+//  - a length or a coordinate lies within 1e6 grid spacings (a positive length, such as a
+//    perturbation's radius, at least 1e-3), so positions and their squares stay far inside
+//    float's range;
 //  - an angle lies within one turn either way, while a degree is still far above its rounding.
 #include <optional>
 #include <string>
@@ -14,7 +15,7 @@ namespace pond::scene {
 
 inline constexpr double kMinScale = 1e-6, kMaxScale = 1e6;
 inline constexpr double kMaxSpacings = 1e6;
-inline constexpr double kMinRadiusSpacings = 1e-3;
+inline constexpr double kMinLengthSpacings = 1e-3;
 inline constexpr double kMaxDegrees = 360.0;
 // A body's float constants (shared::BodyConstants: mass ratios, drag rate) at most this large, so
 // that a product of two stays finite.

@@ -49,7 +49,7 @@ NodeKind parse_kind(JsonFields& f, const char* key, bool allow_free) {
 }
 
 // A length (world units) that must lie within [lo, hi] grid spacings (scene/number_limits.h).
-void check_spacings(JsonFields& f, const char* key, double length, const GridSpec& g, double lo = kMinRadiusSpacings,
+void check_spacings(JsonFields& f, const char* key, double length, const GridSpec& g, double lo = kMinLengthSpacings,
                     double hi = kMaxSpacings) {
   if (outside(std::fabs(length) / g.spacing, lo, hi))
     f.fail(key, "is " + number_text(length) + " (" + number_outside(std::fabs(length) / g.spacing, lo, hi) +
@@ -141,14 +141,14 @@ CameraSpec parse_camera(JsonFields f) {
     if (!f.has(key)) f.fail(key, "is missing");
   c.eye = f.vec3("eye", c.eye);
   c.target = f.vec3("target", c.target);
-  for (const char* key : {"eye", "target"})
-    for (double x : key[0] == 'e' ? c.eye : c.target)
+  for (const auto& [key, point] : {std::pair{"eye", c.eye}, std::pair{"target", c.target}})
+    for (double x : point)
       if (std::optional<std::string> what = outside(x, -view::kMaxCameraCoordinate, view::kMaxCameraCoordinate))
         f.fail(key, "has a coordinate that " + *what + " (float view matrices)");
   if (c.eye == c.target) f.fail("target", "must differ from camera.eye");
   c.fovy_degrees = f.number("fovy", c.fovy_degrees);
-  // As render's and lod's --fovy: past these, 1 / tan(fovy / 2) leaves float's range or the view folds.
-  if (!(c.fovy_degrees >= 0.01 && c.fovy_degrees <= 179.99)) f.fail("fovy", "must be in [0.01, 179.99] degrees");
+  if (!(c.fovy_degrees >= view::kMinFovyDegrees && c.fovy_degrees <= view::kMaxFovyDegrees))
+    f.fail("fovy", "must be in [" + number_text(view::kMinFovyDegrees) + ", " + number_text(view::kMaxFovyDegrees) + "] degrees");
   f.finish();
   return c;
 }
