@@ -85,10 +85,11 @@ nlohmann::json parse_json(std::string_view text, const std::string& source) {
     return nlohmann::json::parse(text, callback);
   } catch (const nlohmann::json::exception& e) {
     // nlohmann's message is "[json.exception.parse_error.101] parse error at line 3, column 5: ...";
-    // a number too large for a double ("1e999") is its out_of_range.406, also bad input.
+    // a number too large for a double ("1e999") is its out_of_range.406, also bad input. It quotes
+    // the text last read, where it writes only bytes below 0x20 out: the rest is made printable here.
     std::string what = e.what();
     const auto p = what.find("] ");
-    throw InputError(source + ": invalid JSON: " + (p == std::string::npos ? what : what.substr(p + 2)));
+    throw InputError(source + ": invalid JSON: " + printable_line(p == std::string::npos ? what : what.substr(p + 2)));
   }
 }
 
