@@ -137,10 +137,6 @@ expect_bad "has 254 bytes" render --steps 1 --size 8x8 --out "$work/$long.png"
 # A folder that exists, but with the name the whole path passes PATH_MAX (4096).
 deep=$(cd "$work" && i=0 && while [ $i -lt 80 ]; do mkdir -p "d$(printf '%048d' $i)" && cd "d$(printf '%048d' $i)" || exit 1; i=$((i + 1)); done && pwd)
 expect_bad "bytes is longer than the" simulate --steps 1 --out "$deep/$(printf '%0100d' 0).npy"
-printf 'frame 1 screenshot %s\nframe 2 screenshot %s\n' "$work/s.png" "$work/./s.png" > "$work/shots.script"
-expect_bad "--script line 2: screenshot '$work/./s.png' names the same file as --script line 1" demo --frames 3 --script "$work/shots.script"
-printf 'frame 1 screenshot %s\n' "$work/s.png" > "$work/shot.script"
-expect_bad "names the same file as --screenshot" demo --frames 3 --script "$work/shot.script" --screenshot "$work/real_dir/../s.png"
 
 # The demo's bad input, refused before any window (so without a display): script numbers finite and
 # bounded, control bytes, frame numbers, screenshots that could never be taken, window sizes.
@@ -167,6 +163,12 @@ if "$pond" --version | grep -q "Vulkan headers"; then
   expect_bad "--screenshot must name a file" --frames 3 --screenshot ""
   expect_bad "--screenshot saves the last frame of --frames N: give --frames" demo --screenshot "$work/s.png"
   expect_bad "--size 65536x1: a window takes at most 32767 pixels a side" demo --frames 3 --size 65536x1
+  # The demo's outputs by what they name: two script screenshots, a script's and --screenshot.
+  printf 'frame 1 screenshot %s\nframe 2 screenshot %s\n' "$work/s.png" "$work/./s.png" > "$work/shots.script"
+  expect_bad "--script line 2: screenshot '$work/./s.png' names the same file as --script line 1" \
+    demo --frames 3 --script "$work/shots.script"
+  printf 'frame 1 screenshot %s\n' "$work/s.png" > "$work/shot.script"
+  expect_bad "names the same file as --screenshot" demo --frames 3 --script "$work/shot.script" --screenshot "$work/real_dir/../s.png"
   # A trailing comment is no bad input: the run goes on to need a display (exit 1), not exit 2.
   script comment 'frame 1 scroll 2   # zoom in\nframe 2 key H # help\n# a whole line\n'
   env -u DISPLAY -u WAYLAND_DISPLAY "$pond" demo --frames 3 --script "$work/comment.script" > /dev/null 2> "$work/stderr"
