@@ -2,6 +2,7 @@
 // float32 denormals. Every query asks the next layer and rewrites the answer; nothing is cached.
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <cstdlib>
 #include <cstring>
 
@@ -37,9 +38,12 @@ bool denorm_preserve() {
 std::uint32_t max_texel_buffer_elements(std::uint32_t lavapipe) {
   const char* value = std::getenv("POND_DISCRETE_GPU_MAX_TEXEL_BUFFER_ELEMENTS");
   if (!value || !*value) return lavapipe;
+  // Digits only: strtoul alone takes a sign (negating "-18446744073709486080" to 65536) and
+  // saturates on overflow.
   char* end = nullptr;
-  const unsigned long n = std::strtoul(value, &end, 10);
-  if (*end || n < 65536) {
+  errno = 0;
+  const unsigned long n = value[0] >= '0' && value[0] <= '9' ? std::strtoul(value, &end, 10) : 0;
+  if (!end || *end || errno == ERANGE || n < 65536) {
     static std::atomic<bool> warned{false};
     if (!warned.exchange(true))
       report("POND_DISCRETE_GPU_MAX_TEXEL_BUFFER_ELEMENTS=%s is not a number >= 65536; ignored", value);

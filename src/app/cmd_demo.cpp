@@ -5,10 +5,12 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/cli_parse.h"
 #include "app/commands.h"
 #include "app/demo/demo_app.h"
+#include "core/errors.h"
 
 namespace pond::app {
 namespace {
@@ -17,14 +19,16 @@ struct DemoCli {
   demo::DemoOptions options;
   std::string size = "1280x720";
   bool no_vsync = false;
+  std::vector<CLI::Option*> screenshot;  // on the app and on `demo`: given at all, even as ""
 };
 
 void add_demo_options(CLI::App& app, DemoCli& cli) {
   app.add_option("--scene", cli.options.scene, "Scene JSON file (default: the embedded scene)")->type_name("FILE");
   app.add_option("--frames", cli.options.frames, "Run N frames, then exit 0 (default: until closed)")
       ->type_name("N")
-      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1000000000}));
-  app.add_option("--screenshot", cli.options.screenshot, "Save the last frame as PNG")->type_name("FILE");
+      ->transform(whole_number(1, 1000000000));
+  cli.screenshot.push_back(
+      app.add_option("--screenshot", cli.options.screenshot, "Save the last frame (of --frames N) as PNG")->type_name("FILE"));
   app.add_option("--script", cli.options.script,
                  "Replay input events from a text file (lines like 'frame 10 click 640 360', see README)")
       ->type_name("FILE");
@@ -47,6 +51,8 @@ Command add_demo_command(CLI::App& app) {
   add_demo_options(*sub, *cli);
   return {sub, [cli] {
             demo::DemoOptions o = cli->options;
+            for (const CLI::Option* shot : cli->screenshot)
+              if (shot->count() > 0 && o.screenshot.empty()) throw InputError("--screenshot must name a file");
             const Size2 size = parse_size(cli->size, "--size");
             o.width = size.width, o.height = size.height;
             o.vsync = !cli->no_vsync;

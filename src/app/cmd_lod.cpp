@@ -4,6 +4,7 @@
 // caches are new), so anyone can time the builder on their own state.
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -15,7 +16,9 @@
 #include "core/errors.h"
 #include "core/npy.h"
 #include "core/output_file.h"
+#include "core/text.h"
 #include "lod/lod_builder.h"
+#include "view/view_projection.h"
 
 namespace pond::app {
 namespace {
@@ -41,18 +44,19 @@ int run_lod(const LodOptions& o) {
   const Size2 size = parse_size(o.size, "--size");
   camera.width = size.width, camera.height = size.height;
   camera.fovy_degrees = o.fovy;
+  camera = view::checked_camera(camera, "--eye", "--target");
   lod::validate(camera, o.tolerance);
   core::validate_cpu_features_mask();  // the builder reads it; an error below is the state's
   check_output_path(o.out);
 
   const NpyArray state = read_npy(o.state);
   if (state.type != NpyType::f32 || state.shape.size() != 3 || state.shape[2] != 6)
-    throw InputError(o.state + " must be a float32 (rows, cols, 6) STATE.npy, got " +
+    throw InputError(quote(o.state) + " must be a float32 (rows, cols, 6) STATE.npy, got " +
                      npy_type_name(state.type) + " with " + std::to_string(state.shape.size()) +
                      " dimensions" + (state.shape.size() == 3 ? " and last dimension " +
                      std::to_string(state.shape[2]) : std::string()));
   if (state.shape[0] < 2 || state.shape[1] < 2 || state.shape[0] > 65536 || state.shape[1] > 65536)
-    throw InputError(o.state + " grid must be between 2 x 2 and 65536 x 65536 nodes, got " +
+    throw InputError(quote(o.state) + " grid must be between 2 x 2 and 65536 x 65536 nodes, got " +
                      std::to_string(state.shape[0]) + " x " + std::to_string(state.shape[1]));
   const int rows = static_cast<int>(state.shape[0]), cols = static_cast<int>(state.shape[1]);
 
@@ -74,7 +78,7 @@ int run_lod(const LodOptions& o) {
       times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     }
   } catch (const InputError& e) {  // the camera was checked above: this is about the positions
-    throw InputError(o.state + ": " + e.what());
+    throw InputError(quote(o.state) + ": " + e.what());
   }
   const double ms = median_warm_ms(times);
   char timing[96] = "";
@@ -87,7 +91,7 @@ int run_lod(const LodOptions& o) {
   std::printf("lod: %zu triangles (%.2f%% of the full %zu) of a %d x %d grid at tolerance %g px, "
               "built in %.3f ms%s; wrote %s\n",
               count / 3, 100.0 * static_cast<double>(count / 3) / static_cast<double>(builder.full_triangles()),
-              builder.full_triangles(), rows, cols, o.tolerance, ms, timing, o.out.c_str());
+              builder.full_triangles(), rows, cols, o.tolerance, ms, timing, escaped(o.out).c_str());
   return 0;
 }
 
@@ -100,14 +104,16 @@ Command add_lod_command(CLI::App& app) {
   sub->add_option("--state", o->state, "Input STATE.npy: float32 (rows, cols, 6)")->required();
   sub->add_option("--eye", o->eye, "Camera position X,Y,Z (world units)")->required();
   sub->add_option("--target", o->target, "Point the camera looks at X,Y,Z")->required();
-  sub->add_option("--fovy", o->fovy, "Vertical field of view in degrees, in (0, 180)")->required();
+  sub->add_option("--fovy", o->fovy, "Vertical field of view in degrees")->required()->transform(real_number(view::kMinFovyDegrees, view::kMaxFovyDegrees, kFovyRange));
   sub->add_option("--size", o->size, "Viewport WIDTHxHEIGHT in pixels")->required();
   sub->add_option("--tolerance", o->tolerance,
-                  "Screen-space error bound tau in pixels (> 0)")->required();
+                  "Screen-space error bound tau in pixels (> 0)")
+      ->required()
+      ->transform(real_number(std::numeric_limits<double>::min(), 1e6, "a number of pixels > 0, at most 1e6"));
   sub->add_option("--out", o->out, "Output TRIS.npy: uint32 (T, 3)")->required();
   sub->add_option("--repeat", o->repeat,
                   "Build N times from the state and report the median warm build time (default 1)")
-      ->check(CLI::Range(1, 100000));
+      ->transform(whole_number(1, 100000));
   return {sub, [o] { return run_lod(*o); }};
 }
 

@@ -4,6 +4,7 @@
 #include "app/render_bridge.h"
 #include "core/errors.h"
 #include "core/output_file.h"
+#include "view/view_projection.h"
 
 namespace pond::app {
 
@@ -14,16 +15,16 @@ Command add_render_command(CLI::App& app) {
       "render", "Run N steps, then render F frames offscreen and write the last as a PNG; prints ms per frame");
   sub->add_option("--scene", o->scene, "Scene JSON file (default: the embedded scene)");
   sub->add_option("--steps", o->steps, "Steps before the first frame")->required()->check(
-      CLI::Range(std::int64_t{0}, std::int64_t{1} << 40));
+      whole_number(0, std::int64_t{1} << 40));
   sub->add_option("--frames", o->frames, "Frames to render, each advancing view.steps_per_frame steps (default 1)")
-      ->check(CLI::Range(1, 1000000));
+      ->transform(whole_number(1, 1000000));
   sub->add_option("--size", (*raw)[0], "Image size WxH, e.g. 1280x720")->required();
   sub->add_option("--out", o->out, "Output PNG (the last frame)")->required();
   sub->add_option("--eye", (*raw)[1], "Camera position X,Y,Z (world; default: the scene's camera)");
   sub->add_option("--target", (*raw)[2], "Point looked at X,Y,Z");
-  sub->add_option("--fovy", o->fovy, "Vertical field of view in degrees")->check(CLI::Range(0.01, 179.99));
+  sub->add_option("--fovy", o->fovy, "Vertical field of view in degrees")->transform(real_number(view::kMinFovyDegrees, view::kMaxFovyDegrees, kFovyRange));
   sub->add_option("--lod-tolerance", o->lod_tolerance, "LOD screen-space error in pixels; 0 = the full mesh")
-      ->check(CLI::Range(0.0, 1e6));
+      ->transform(real_number(0.0, 1e6, "a number of pixels >= 0 (0 = the full mesh), at most 1e6"));
   sub->add_option("--solver", o->solver, "Solver: gpu (default) or a CPU backend")
       ->check(CLI::IsMember({"gpu", "scalar", "sse", "avx2", "avx512", "neon"}));
   sub->add_flag("--wireframe", o->wireframe, "Overlay the LOD triangles");
@@ -35,8 +36,9 @@ Command add_render_command(CLI::App& app) {
             const Size2 size = parse_size((*raw)[0], "--size");
             o->width = size.width;
             o->height = size.height;
-            if (!(*raw)[1].empty()) o->eye = parse_vec3((*raw)[1], "--eye");
-            if (!(*raw)[2].empty()) o->target = parse_vec3((*raw)[2], "--target");
+            if (!(*raw)[1].empty()) view::check_camera_point(*(o->eye = parse_vec3((*raw)[1], "--eye")), "--eye");
+            if (!(*raw)[2].empty()) view::check_camera_point(*(o->target = parse_vec3((*raw)[2], "--target")), "--target");
+            if (o->eye && o->target && *o->eye == *o->target) throw InputError("--target must differ from --eye");
             check_output_path(o->out);
             return run_render(*o);
           }};

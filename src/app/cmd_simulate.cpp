@@ -15,6 +15,8 @@
 #include "core/errors.h"
 #include "core/npy.h"
 #include "core/output_file.h"
+#include "core/output_paths.h"
+#include "core/text.h"
 #include "scene/checkpoint.h"
 #include "scene/scene.h"
 #include "scene/session_spec.h"
@@ -82,10 +84,8 @@ void check_outputs(const SimulateOptions& o) {
     } catch (const InputError& e) {
       throw InputError(std::string(flag) + ": " + e.what());
     }
-    if (same_file(*path, o.out)) throw InputError(std::string(flag) + " must differ from --out (" + o.out + ")");
   }
-  if (!o.bodies_out.empty() && !o.checkpoint.empty() && same_file(o.bodies_out, o.checkpoint))
-    throw InputError("--checkpoint must differ from --bodies-out (" + o.bodies_out + ")");
+  check_distinct_outputs({{"--out", o.out}, {"--bodies-out", o.bodies_out}, {"--checkpoint", o.checkpoint}});
   if (o.checkpoint_every > 0 && o.checkpoint.empty()) throw InputError("--checkpoint-every needs --checkpoint FILE");
   if (!o.resume.empty() && !o.scene.empty())
     throw InputError("--scene cannot be given with --resume: the scene is in the checkpoint");
@@ -125,9 +125,9 @@ int run_simulate(const SimulateOptions& o) {
     save();
     const std::int64_t at = session->steps_done();
     throw Interrupted(e.signal, std::string("interrupted by ") + signal_name(e.signal) + " at step " +
-                                    std::to_string(at) + " of " + std::to_string(last) + "; wrote " + o.checkpoint +
+                                    std::to_string(at) + " of " + std::to_string(last) + "; wrote " + escaped(o.checkpoint) +
                                     " (step " + std::to_string(at) + "); go on with: pond simulate --resume " +
-                                    o.checkpoint + " --steps " + std::to_string(last - at) + " --out " + o.out);
+                                    escaped(o.checkpoint) + " --steps " + std::to_string(last - at) + " --out " + escaped(o.out));
   }
   const sim::WaterState state = session->finite_state();
   if (const std::string clamped = session->clamp_notice(state.bodies); !clamped.empty())
@@ -154,16 +154,16 @@ int run_simulate(const SimulateOptions& o) {
               o.steps, model.substeps, model.substeps == 1 ? "" : "s", model.rows, model.cols,
               engine.c_str(), o.math.c_str());
   if (!o.resume.empty())
-    std::printf("resumed at step %" PRId64 " from %s, now at step %" PRId64 "\n", first, o.resume.c_str(), last);
+    std::printf("resumed at step %" PRId64 " from %s, now at step %" PRId64 "\n", first, escaped(o.resume).c_str(), last);
   std::printf("time %.3f s, %.1f M node-steps/s\n", seconds,
               seconds > 0 ? node_steps / seconds * 1e-6 : 0.0);
   std::printf("energy %.6g (kinetic %.6g, spring %.6g), max displacement %.6g\n", d.total(),
               d.kinetic, d.spring, d.max_displacement);
   std::printf("state hash %016" PRIx64 "\n", sim::state_hash(world));
   if (const std::string identity = session->solver().identity(); !identity.empty()) std::printf("%s\n", identity.c_str());
-  if (!o.checkpoint.empty()) std::printf("wrote %s (checkpoint at step %" PRId64 ")\n", o.checkpoint.c_str(), last);
-  std::printf("wrote %s\n", o.out.c_str());
-  if (!o.bodies_out.empty()) std::printf("wrote %s (%zu bodies)\n", o.bodies_out.c_str(), state.bodies.size());
+  if (!o.checkpoint.empty()) std::printf("wrote %s (checkpoint at step %" PRId64 ")\n", escaped(o.checkpoint).c_str(), last);
+  std::printf("wrote %s\n", escaped(o.out).c_str());
+  if (!o.bodies_out.empty()) std::printf("wrote %s (%zu bodies)\n", escaped(o.bodies_out).c_str(), state.bodies.size());
   return 0;
 }
 
@@ -173,14 +173,15 @@ Command add_simulate_command(CLI::App& app) {
   auto o = std::make_shared<SimulateOptions>();
   CLI::App* sub = app.add_subcommand("simulate", "Run the water model headless and write STATE.npy");
   sub->add_option("--scene", o->scene, "Scene JSON file (default: the embedded scene)");
-  sub->add_option("--steps", o->steps, "Number of time steps (with --resume: more steps)")->required()->check(CLI::Range(
-      std::int64_t{0}, std::int64_t{1} << 40));
+  sub->add_option("--steps", o->steps, "Number of time steps (with --resume: more steps)")
+      ->required()
+      ->transform(whole_number(0, std::int64_t{1} << 40));
   sub->add_option("--solver", o->solver, "Solver backend (default: the widest the CPU has)")
       ->check(CLI::IsMember({"auto", "scalar", "sse", "avx2", "avx512", "neon", "gpu"}));
   sub->add_option("--math", o->math, "Float math: exact (bit-reproducible, the default) or fast (approximations allowed)")
       ->check(CLI::IsMember({"exact", "fast"}));
   sub->add_option("--threads", o->threads, "CPU threads (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+      ->transform(whole_number(1, 1024));
   sub->add_option("--device", o->device, "Vulkan device name (substring) for --solver gpu");
   sub->add_option("--out", o->out, "Output STATE.npy: float32 (rows, cols, 6)")->required();
   sub->add_option("--bodies-out", o->bodies_out,
@@ -188,7 +189,7 @@ Command add_simulate_command(CLI::App& app) {
   sub->add_option("--checkpoint", o->checkpoint,
                   "Save the run to FILE at the end, when interrupted, and with --checkpoint-every on the way");
   sub->add_option("--checkpoint-every", o->checkpoint_every, "Save the checkpoint every N steps too")
-      ->check(CLI::Range(std::int64_t{1}, std::int64_t{1} << 40));
+      ->transform(whole_number(1, std::int64_t{1} << 40));
   sub->add_option("--resume", o->resume, "Go on from a checkpoint FILE for --steps more steps (its scene: no --scene)");
   return {sub, [o] { return run_simulate(*o); }};
 }

@@ -12,6 +12,8 @@
 #include "core/errors.h"
 #include "core/npy.h"
 #include "core/output_file.h"
+#include "core/output_paths.h"
+#include "core/text.h"
 #include "tree/tree.h"
 
 namespace pond::app {
@@ -40,7 +42,7 @@ int parse_depth(const std::string& text) {
   if (!parse_unsigned(text, std::numeric_limits<std::uint32_t>::max(), d) ||
       d < static_cast<std::uint64_t>(tree::kMinTreeDepth) ||
       d > static_cast<std::uint64_t>(tree::kMaxTreeDepth))
-    throw InputError("--depth '" + text + "' must be an integer from " +
+    throw InputError("--depth " + quote(text) + " must be an integer from " +
                      std::to_string(tree::kMinTreeDepth) + " to " +
                      std::to_string(tree::kMaxTreeDepth));
   return static_cast<int>(d);
@@ -49,19 +51,22 @@ int parse_depth(const std::string& text) {
 std::uint64_t parse_seed(const std::string& text) {
   std::uint64_t s = 0;
   if (!parse_unsigned(text, std::numeric_limits<std::uint64_t>::max(), s))
-    throw InputError("--seed '" + text + "' must be a non-negative integer below 2^64");
+    throw InputError("--seed " + quote(text) + " must be a non-negative integer below 2^64");
   return s;
 }
 
 // Writes both files or neither: each goes to a temporary name first (atomically), and only when both
 // are complete are they renamed into place. If the second rename fails, the first file is removed
 // again, so a run never leaves one new file beside an old or missing partner.
+fs::path partial(const fs::path& path) {
+  fs::path tmp = path;
+  tmp += ".partial." + std::to_string(::getpid());
+  return tmp;
+}
+
 void write_pair(const fs::path& first, std::span<const std::byte> first_bytes, const fs::path& second,
                 std::span<const std::byte> second_bytes) {
-  const std::string suffix = ".partial." + std::to_string(::getpid());
-  fs::path first_tmp = first, second_tmp = second;
-  first_tmp += suffix;
-  second_tmp += suffix;
+  const fs::path first_tmp = partial(first), second_tmp = partial(second);
   std::error_code ec;
   write_file_atomic(first_tmp, first_bytes);
   try {
@@ -74,14 +79,14 @@ void write_pair(const fs::path& first, std::span<const std::byte> first_bytes, c
   if (ec) {
     fs::remove(first_tmp, ec);
     fs::remove(second_tmp, ec);
-    throw RuntimeError("cannot write '" + first.string() + "': " + ec.message());
+    throw RuntimeError("cannot write " + quote(first.string()) + ": " + ec.message());
   }
   fs::rename(second_tmp, second, ec);
   if (ec) {
     const std::string why = ec.message();
     fs::remove(second_tmp, ec);
     fs::remove(first, ec);
-    throw RuntimeError("cannot write '" + second.string() + "': " + why);
+    throw RuntimeError("cannot write " + quote(second.string()) + ": " + why);
   }
 }
 
@@ -91,11 +96,13 @@ int run_tree(const TreeOptions& o) {
   params.seed = parse_seed(o.seed);
   const fs::path prefix = o.out;
   if (prefix.empty() || !prefix.has_filename())
-    throw InputError("--out '" + o.out + "' must be a file name prefix such as out/tree, not a folder");
+    throw InputError("--out " + quote(o.out) + " must be a file name prefix such as out/tree, not a folder");
   const fs::path vertices_path = o.out + ".vertices.npy";
   const fs::path parents_path = o.out + ".parents.npy";
-  check_output_path(vertices_path);  // before any work: a missing folder writes nothing
-  check_output_path(parents_path);
+  // Before any work: a missing folder, a name too long for it (the partial names are the longest
+  // that are written) write nothing.
+  for (const fs::path& p : {vertices_path, parents_path, partial(vertices_path), partial(parents_path)}) check_output_path(p);
+  check_distinct_outputs({{"--out's vertices", vertices_path}, {"--out's parents", parents_path}});  // a symlink
 
   const tree::Tree t = tree::grow_tree(params);
   const std::size_t vertex_shape[2] = {t.size(), static_cast<std::size_t>(
@@ -108,8 +115,8 @@ int run_tree(const TreeOptions& o) {
   write_pair(vertices_path, vertices, parents_path, parents);
 
   std::printf("tree: %zu vertices, depth %d, seed %" PRIu64 " -> %s (float32 %zu x 12), %s (int32 %zu)\n",
-              t.size(), params.depth, params.seed, vertices_path.c_str(), t.size(),
-              parents_path.c_str(), t.size());
+              t.size(), params.depth, params.seed, escaped(vertices_path.string()).c_str(), t.size(),
+              escaped(parents_path.string()).c_str(), t.size());
   return 0;
 }
 

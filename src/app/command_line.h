@@ -9,6 +9,7 @@
 
 #include "app/commands.h"
 #include "app/version.h"
+#include "core/text.h"
 
 namespace pond::app {
 
@@ -40,7 +41,7 @@ class CommandLine {
         if (quiet) return {nullptr, 0};
         return {nullptr, app_.exit(e)};
       }
-      if (!quiet) std::fprintf(stderr, "pond: %s\n", e.what());
+      if (!quiet) std::fprintf(stderr, "pond: %s\n", printable_line(e.what()).c_str());  // quotes argv as typed
       return {nullptr, 2};
     }
     for (const Command& c : commands_)

@@ -1,7 +1,8 @@
 // pond: parses the command line and dispatches to one subcommand. Errors are exceptions caught here
 // once: bad input (InputError, CLI11 parse errors) exits 2, run-time failures and internal errors
 // (core/errors.h) exit 1, each with one line on stderr; a command stopped by a signal exits 128 +
-// the signal (core/interrupt.h).
+// the signal (core/interrupt.h). Messages escape the user's text where they quote it (core/text.h);
+// report() makes sure of one line.
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -10,6 +11,13 @@
 #include "app/command_line.h"
 #include "core/interrupt.h"
 #include "core/errors.h"
+#include "core/text.h"
+
+namespace {
+void report(const char* prefix, const char* what) {
+  std::fprintf(stderr, "pond: %s%s\n", prefix, pond::printable_line(what).c_str());
+}
+}  // namespace
 
 int main(int argc, char** argv) {
   pond::install_signal_handling();
@@ -18,23 +26,23 @@ int main(int argc, char** argv) {
     const pond::app::CommandLine::Parsed parsed = command_line.parse(argc, argv);
     if (!parsed.command) return parsed.exit_code;
     return parsed.command->run();
-  } catch (const pond::Interrupted& e) {  // SIGINT/SIGTERM: 128 + the signal, as a shell reports it
-    std::fprintf(stderr, "pond: %s\n", e.what());
+  } catch (const pond::Interrupted& e) {  // a signal: 128 + the signal, as a shell reports it
+    report("", e.what());
     return 128 + e.signal;
   } catch (const pond::InputError& e) {
-    std::fprintf(stderr, "pond: %s\n", e.what());
+    report("", e.what());
     return 2;
   } catch (const pond::InternalError& e) {  // a broken invariant: pond's fault, not the user's
-    std::fprintf(stderr, "pond: internal error: %s\n", e.what());
+    report("internal error: ", e.what());
     return 1;
   } catch (const pond::RuntimeError& e) {
-    std::fprintf(stderr, "pond: %s\n", e.what());
+    report("", e.what());
     return 1;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "pond: out of memory\n");
     return 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "pond: %s\n", e.what());
+    report("", e.what());
     return 1;
   }
 }

@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "core/output_file.h"
+#include "core/text.h"
 
 namespace pond {
 namespace {
@@ -109,7 +110,7 @@ NpyArray npy_decode(std::string_view bytes, const std::string& what) {
   else if (d.starts_with("'<i4'")) a.type = NpyType::i32;
   else {
     const std::size_t end = d.find(',');
-    throw InputError(what + ": unsupported dtype " + std::string(d.substr(0, end)) +
+    throw InputError(what + ": unsupported dtype " + escaped(d.substr(0, end)) +
                      " (expected float32, uint32 or int32)");
   }
   if (!after_key(header, "fortran_order", what).starts_with("False"))
@@ -145,7 +146,7 @@ NpyArray npy_decode(std::string_view bytes, const std::string& what) {
 
 NpyArray read_npy(const std::filesystem::path& path) {
   const std::string bytes = read_file(path);
-  return npy_decode(bytes, "'" + path.string() + "'");
+  return npy_decode(bytes, quote(path.string()));
 }
 
 }  // namespace pond

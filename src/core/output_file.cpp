@@ -9,6 +9,8 @@
 
 #include "core/errors.h"
 #include "core/interrupt.h"
+#include "core/output_paths.h"
+#include "core/text.h"
 
 namespace pond {
 namespace fs = std::filesystem;
@@ -22,11 +24,12 @@ void check_output_path(const fs::path& path) {
   if (folder.empty()) folder = ".";
   std::error_code ec;
   if (!fs::is_directory(folder, ec))
-    throw InputError("output folder '" + folder.string() + "' does not exist");
+    throw InputError("output folder " + quote(folder.string()) + " does not exist");
+  check_name_length(path, folder);
   if (fs::is_directory(path, ec))
-    throw InputError("output path '" + path.string() + "' is a folder");
+    throw InputError("output path " + quote(path.string()) + " is a folder");
   if (::access(folder.c_str(), W_OK) != 0)
-    throw InputError("output folder '" + folder.string() + "' is not writable");
+    throw InputError("output folder " + quote(folder.string()) + " is not writable");
   // access() says yes to root everywhere but on read-only mounts, and procfs or sysfs refuse new
   // files whatever it says: so try to create one (unless the target is an existing device or pipe,
   // written in place), so that an unwritable folder fails now and as bad input, not after the run.
@@ -34,7 +37,7 @@ void check_output_path(const fs::path& path) {
   const fs::path probe = folder / (".pond-probe." + std::to_string(::getpid()));
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
   if (const int err = fd < 0 ? errno : 0; err && err != EEXIST)
-    throw InputError("output folder '" + folder.string() + "' is not writable: " + std::strerror(err));
+    throw InputError("output folder " + quote(folder.string()) + " is not writable: " + std::strerror(err));
   if (fd >= 0) {
     ::close(fd);
     ::unlink(probe.c_str());
@@ -61,7 +64,7 @@ void write_file_atomic(const fs::path& path, std::span<const std::byte> bytes) {
     // A device or pipe (/dev/stdout, /dev/full): there is nothing to clobber and renaming over it
     // would replace the device node, so write straight into it.
     if (int err = write_all(path, bytes))
-      throw RuntimeError("cannot write '" + path.string() + "': " + std::strerror(err));
+      throw RuntimeError("cannot write " + quote(path.string()) + ": " + std::strerror(err));
     return;
   }
   // The temporary name carries the pid so that two pond processes never share one.
@@ -71,35 +74,25 @@ void write_file_atomic(const fs::path& path, std::span<const std::byte> bytes) {
   if (int err = write_all(tmp, bytes)) {
     std::remove(tmp.c_str());
     set_temporary_file(nullptr);
-    throw RuntimeError("cannot write '" + path.string() + "': " + std::strerror(err));
+    throw RuntimeError("cannot write " + quote(path.string()) + ": " + std::strerror(err));
   }
   fs::rename(tmp, path, ec);
   if (ec) std::remove(tmp.c_str());
   set_temporary_file(nullptr);
-  if (ec) throw RuntimeError("cannot write '" + path.string() + "': " + ec.message());
+  if (ec) throw RuntimeError("cannot write " + quote(path.string()) + ": " + ec.message());
   count_file_written();
-}
-
-bool same_file(const fs::path& a, const fs::path& b) {
-  std::error_code ec;
-  if (fs::exists(a, ec) && fs::exists(b, ec)) return fs::equivalent(a, b, ec);
-  auto where = [&](const fs::path& p) {
-    const fs::path folder = p.parent_path().empty() ? fs::path(".") : p.parent_path();
-    return fs::weakly_canonical(folder, ec) / p.filename();
-  };
-  return where(a) == where(b);
 }
 
 std::string read_file(const fs::path& path) {
   std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError("file '" + path.string() + "' does not exist");
-  if (fs::is_directory(path, ec)) throw InputError("'" + path.string() + "' is a folder, not a file");
+  if (!fs::exists(path, ec)) throw InputError("file " + quote(path.string()) + " does not exist");
+  if (fs::is_directory(path, ec)) throw InputError(quote(path.string()) + " is a folder, not a file");
   // open() and read() by hand: a FIFO without a writer blocks in open(), and a signal while a
   // command polls (core/interrupt.h) interrupts either; a device that never ends is cut off.
   int fd = -1;
   while ((fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC)) < 0 && errno == EINTR)
-    throw_if_interrupted("while opening '" + path.string() + "'");
-  if (fd < 0) throw InputError("cannot read '" + path.string() + "': " + std::strerror(errno));
+    throw_if_interrupted("while opening " + quote(path.string()));
+  if (fd < 0) throw InputError("cannot read " + quote(path.string()) + ": " + std::strerror(errno));
   struct stat st {};
   const bool regular = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
   std::string out;
@@ -109,7 +102,7 @@ std::string read_file(const fs::path& path) {
     const ssize_t n = ::read(fd, chunk, sizeof chunk);
     if (n < 0 && errno == EINTR) {
       try {
-        throw_if_interrupted("while reading '" + path.string() + "'");
+        throw_if_interrupted("while reading " + quote(path.string()));
       } catch (...) {
         ::close(fd);
         throw;
@@ -119,13 +112,13 @@ std::string read_file(const fs::path& path) {
     if (n < 0) {
       const int err = errno;
       ::close(fd);
-      throw InputError("cannot read '" + path.string() + "': " + std::strerror(err));
+      throw InputError("cannot read " + quote(path.string()) + ": " + std::strerror(err));
     }
     if (n == 0) break;
     out.append(chunk, static_cast<std::size_t>(n));
     if (!regular && out.size() > kMaxStreamBytes) {
       ::close(fd);
-      throw InputError("'" + path.string() + "' is not a regular file and gave more than " +
+      throw InputError(quote(path.string()) + " is not a regular file and gave more than " +
                        std::to_string(kMaxStreamBytes >> 20) + " MiB without ending");
     }
   }

@@ -10,17 +10,14 @@
 
 namespace pond {
 
-// Throws InputError when the folder of `path` does not exist or is not a folder (checked before any
-// work, so bad paths fail fast), RuntimeError when writing fails.
+// Throws InputError when the folder of `path` does not exist or is not a folder, or the name is too
+// long for it (core/output_paths.h) (checked before any work, so bad paths fail fast), RuntimeError
+// when writing fails.
 void check_output_path(const std::filesystem::path& path);
 
 // Atomically replaces `path` with `bytes`. Throws RuntimeError on failure; the target is untouched.
 void write_file_atomic(const std::filesystem::path& path, std::span<const std::byte> bytes);
 
 std::string read_file(const std::filesystem::path& path);  // InputError when missing or unreadable
-
-// Whether two output paths name one file: the same file where both exist, else the same name in
-// the same folder ("./a.npy" and "a.npy", a link to the folder and the folder).
-bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
 
 }  // namespace pond

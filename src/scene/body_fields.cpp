@@ -6,6 +6,8 @@
 #include <string>
 
 #include "sim/basin.h"
+#include "core/text.h"
+#include "scene/number_limits.h"
 #include "sim/bodies.h"
 
 namespace pond::scene {
@@ -15,11 +17,6 @@ namespace {
 constexpr double kMaxDensity = 100.0;
 constexpr double kMinDensity = 0.01;
 
-std::string number_text(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.4g", v);
-  return text;
-}
 
 // A world position [x, y, z] must lie over the grid: x in [0, (cols-1) h], z in [0, (rows-1) h].
 std::optional<std::string> off_grid(const std::array<double, 3>& p, const sim::GridSpec& g) {
@@ -78,8 +75,9 @@ std::optional<Problem> density_problem(const sim::BodySpec& b, const sim::Physic
   const double density = sim::body_density(b, p);
   const DensityRange range = stable_densities(b.radius, p);
   if (density >= range.min && density <= range.max) return std::nullopt;
-  std::string what = "gives a density of " + number_text(density) + " (relative to water);";
-  if (b.density > 0.0) what = "is " + number_text(density) + ";";
+  const std::string shown = number_outside(density, range.min, range.max);
+  std::string what = "gives a density of " + shown + " (relative to water);";
+  if (b.density > 0.0) what = "is " + shown + ";";
   const double volume = sim::sphere_volume(b.radius) * p.water_density;
   return Problem{key, what + " a floating ball of radius " + number_text(b.radius) + " is stable for densities in [" +
                           number_text(range.min) + ", " + number_text(range.max) + "] (masses [" +
@@ -94,6 +92,9 @@ std::optional<Problem> motion_problem(const sim::BodySpec& b, const sim::WaterSp
     for (std::size_t k = 0; k < b.path.size(); ++k) {
       const std::string key = "path[" + std::to_string(k) + "]";
       if (const std::optional<std::string> what = off_grid(b.path[k].position, w.grid)) return Problem{key, *what};
+      if (const double y = b.path[k].position[1] / h; outside(y, -kMaxSpacings, kMaxSpacings))
+        return Problem{key, "has y " + number_text(b.path[k].position[1]) + " (" + number_outside(y, -kMaxSpacings, kMaxSpacings) +
+                                " grid spacings), outside [-" + number_text(kMaxSpacings) + ", " + number_text(kMaxSpacings) + "]"};
       if (k == 0) continue;
       const auto &a = b.path[k - 1].position, &c = b.path[k].position;
       const double per_step = length({c[0] - a[0], c[1] - a[1], c[2] - a[2]}) /
@@ -107,14 +108,39 @@ std::optional<Problem> motion_problem(const sim::BodySpec& b, const sim::WaterSp
   if (const std::optional<std::string> what = off_grid(b.position, w.grid)) return Problem{"position", *what};
   if (const std::optional<std::string> solid = sim::sphere_in_solid(kinds, w.grid, w.basin, b.position, b.radius))
     return Problem{"position", "puts the ball into " + *solid};
-  const double top = w.physics.gravity > 0.0 ? fastest * fastest / (2.0 * w.physics.gravity) : 1e6 * h;
+  // Where a fall from rest reaches the fastest motion; at most a million spacings up (a tiny gravity).
+  const double top = std::min(w.physics.gravity > 0.0 ? fastest * fastest / (2.0 * w.physics.gravity) : kMaxSpacings * h,
+                              kMaxSpacings * h);
   if (b.position[1] > w.basin.land_height + top)
-    return Problem{"position", "has y " + number_text(b.position[1]) + ": from higher than " +
-                                   number_text(w.basin.land_height + top) + " a fall passes " +
-                                   number_text(POND_MAX_SPACINGS_PER_STEP) + " spacings a step"};
+    return Problem{"position", "has y " + number_text(b.position[1]) +
+                                   (top < kMaxSpacings * h ? ": from higher than " + number_text(w.basin.land_height + top) +
+                                                                 " a fall passes " + number_text(POND_MAX_SPACINGS_PER_STEP) +
+                                                                 " spacings a step"
+                                                           : ": higher than " + number_text(w.basin.land_height + top) +
+                                                                 ", a million grid spacings above the land")};
   if (length(b.velocity) > fastest)
     return Problem{"velocity", "is " + number_text(length(b.velocity) / h * w.physics.dt) +
                                    " spacings a step; at most " + number_text(POND_MAX_SPACINGS_PER_STEP)};
+  return std::nullopt;
+}
+
+// The body's float constants as the solver gets them (shared::BodyConstants), each finite and at most
+// kMaxBodyConstant: the ratios of the body's and a node's masses, its drag and buoyancy a substep.
+std::optional<Problem> constants_problem(const sim::BodySpec& b, const sim::WaterSpec& w) {
+  const shared::BodyConstants c = sim::build_bodies({b}, w.physics, w.grid.spacing).front().constants;
+  const char* mass_key = b.density > 0.0 ? "density" : "mass";
+  const struct {
+    float value;
+    const char* what;
+  } constants[] = {{c.body_over_node, "a body-to-node mass ratio (with physics.mass, water_density)"},
+                   {c.node_over_body, "a node-to-body mass ratio (with physics.mass, water_density)"},
+                   {c.inv_mass, "an inverse mass (with physics.water_density)"},
+                   {c.buoyancy_dt, "a buoyancy a substep (with physics.gravity)"},
+                   {c.drag_dt, "a drag rate a substep (with physics.body_drag)"}};
+  for (const auto& k : constants)
+    if (!(std::fabs(k.value) <= kMaxBodyConstant))
+      return Problem{mass_key, "gives " + std::string(k.what) + " of " + number_text(k.value) + ", more than " +
+                                   number_text(kMaxBodyConstant)};
   return std::nullopt;
 }
 
@@ -164,7 +190,8 @@ std::optional<Problem> body_problem(const sim::BodySpec& b, const sim::WaterSpec
   if (std::optional<Problem> p = size_problem(b, w)) return p;
   if (b.motion == sim::BodyMotion::floating)
     if (std::optional<Problem> p = density_problem(b, w.physics)) return p;
-  return motion_problem(b, w, kinds);
+  if (std::optional<Problem> p = motion_problem(b, w, kinds)) return p;
+  return b.motion == sim::BodyMotion::floating ? constants_problem(b, w) : std::nullopt;
 }
 
 std::array<double, 3> start_position(const sim::BodySpec& b) {

@@ -1,9 +1,13 @@
 #include "scene/json_fields.h"
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
+#include <vector>
 
 #include "core/errors.h"
+#include "core/text.h"
 
 namespace pond::scene {
 namespace {
@@ -17,7 +21,77 @@ const char* type_name(const nlohmann::json& j) {
 }
 const nlohmann::json kEmptyArray = nlohmann::json::array();
 const nlohmann::json kEmptyObject = nlohmann::json::object();
+
+// The objects and arrays open while parsing, for the path of a repeated key: an object's keys so
+// far (a set once there are many), an array's index.
+class OpenLevels {
+ public:
+  // Returns the repeated key's path, or "" when `key` is new in the innermost object.
+  std::string add_key(const std::string& key) {
+    Level& top = levels_.back();
+    const bool seen = top.many ? top.many->contains(key)
+                               : std::find(top.keys.begin(), top.keys.end(), key) != top.keys.end();
+    if (seen) return path() + (levels_.size() > 1 ? "." : "") + escaped(key);
+    top.keys.push_back(key);
+    if (top.many) top.many->insert(key);
+    else if (top.keys.size() > 16) top.many = std::make_unique<std::set<std::string>>(top.keys.begin(), top.keys.end());
+    return {};
+  }
+  void element() {  // a value, object or array begins inside the innermost level
+    if (!levels_.empty() && !levels_.back().object) ++levels_.back().index;
+  }
+  void open(bool object) { levels_.emplace_back().object = object; }
+  void close() { levels_.pop_back(); }
+
+ private:
+  struct Level {
+    bool object = true;
+    std::size_t index = static_cast<std::size_t>(-1);
+    std::vector<std::string> keys;
+    std::unique_ptr<std::set<std::string>> many;
+  };
+  // The path to the innermost level: "bodies[2]", "grid".
+  std::string path() const {
+    std::string p;
+    for (std::size_t k = 0; k + 1 < levels_.size(); ++k) {
+      const Level& l = levels_[k];
+      if (l.object) p += (p.empty() ? "" : ".") + escaped(l.keys.back());
+      else p += "[" + std::to_string(l.index) + "]";
+    }
+    return p;
+  }
+  std::vector<Level> levels_;
+};
 }  // namespace
+
+nlohmann::json parse_json(std::string_view text, const std::string& source) {
+  using Event = nlohmann::json::parse_event_t;
+  OpenLevels open;
+  const auto callback = [&](int /*depth*/, Event event, nlohmann::json& parsed) {
+    switch (event) {
+      case Event::object_start: open.element(), open.open(true); break;
+      case Event::array_start: open.element(), open.open(false); break;
+      case Event::object_end:
+      case Event::array_end: open.close(); break;
+      case Event::value: open.element(); break;
+      case Event::key:
+        if (const std::string repeated = open.add_key(parsed.get<std::string>()); !repeated.empty())
+          throw InputError(source + ": " + repeated + " is given twice");
+        break;
+    }
+    return true;
+  };
+  try {
+    return nlohmann::json::parse(text, callback);
+  } catch (const nlohmann::json::exception& e) {
+    // nlohmann's message is "[json.exception.parse_error.101] parse error at line 3, column 5: ...";
+    // a number too large for a double ("1e999") is its out_of_range.406, also bad input. It quotes
+    // the text last read, where it writes only bytes below 0x20 out: the rest is made printable here.
+    std::string what = e.what();
+    const auto p = what.find("] ");
+    throw InputError(source + ": invalid JSON: " + printable_line(p == std::string::npos ? what : what.substr(p + 2)));
+  }
+}
 
 const nlohmann::json& require_object(const nlohmann::json& json, const std::string& path,
                                      const std::string& source) {
@@ -93,7 +167,7 @@ std::string JsonFields::text(const char* key, const std::string& fallback,
     if (s == a) return s;
     list += std::string(list.empty() ? "" : " | ") + a;
   }
-  fail(key, "is '" + s + "', expected " + list);
+  fail(key, "is " + quote(s) + ", expected " + list);
 }
 
 bool JsonFields::boolean(const char* key, bool fallback) {
@@ -147,7 +221,7 @@ void JsonFields::index_range(const char* key, int max_index, int& lo, int& hi) {
 
 void JsonFields::finish() const {
   for (const auto& [key, value] : object_.items())
-    if (!read_.contains(key)) fail(key.c_str(), "is not a known key");
+    if (!read_.contains(key)) fail(escaped(key).c_str(), "is not a known key");
 }
 
 }  // namespace pond::scene

@@ -8,11 +8,13 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
+#include <string_view>
 
 namespace pond::scene {
 
 class JsonFields {
  public:
+  // `source` names the file in messages, already escaped (core/text.h).
   JsonFields(const nlohmann::json& object, std::string path, std::string source);
 
   bool has(const char* key) const;
@@ -42,6 +44,11 @@ class JsonFields {
   std::string path_, source_;
   std::set<std::string> read_;
 };
+
+// Parses a scene file's text. Throws InputError "SOURCE: invalid JSON: ..." for malformed text and
+// "SOURCE: KEY.PATH is given twice" for a key repeated in one object (nlohmann would keep the last
+// silently). `source` is already escaped.
+nlohmann::json parse_json(std::string_view text, const std::string& source);
 
 // The object at `path` of `json`, type-checked. Throws InputError naming `path`.
 const nlohmann::json& require_object(const nlohmann::json& json, const std::string& path,

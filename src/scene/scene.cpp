@@ -1,13 +1,16 @@
 #include "scene/scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <unistd.h>
 
 #include "core/errors.h"
 #include "core/output_file.h"
+#include "core/text.h"
 #include "scene/body_fields.h"
 #include "scene/json_fields.h"
+#include "scene/number_limits.h"
 #include "sim/model.h"
 #include "sim/stability.h"
 
@@ -45,6 +48,14 @@ NodeKind parse_kind(JsonFields& f, const char* key, bool allow_free) {
   return NodeKind::fixed;
 }
 
+// A length (world units) that must lie within [lo, hi] grid spacings (scene/number_limits.h).
+void check_spacings(JsonFields& f, const char* key, double length, const GridSpec& g, double lo = kMinLengthSpacings,
+                    double hi = kMaxSpacings) {
+  if (outside(std::fabs(length) / g.spacing, lo, hi))
+    f.fail(key, "is " + number_text(length) + " (" + number_outside(std::fabs(length) / g.spacing, lo, hi) +
+                    " grid spacings), outside [" + number_text(lo) + ", " + number_text(hi) + "] spacings");
+}
+
 double physical_memory_bytes() {
   const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
   return pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 1e18;
@@ -55,6 +66,7 @@ void parse_grid(JsonFields f, GridSpec& g) {
   g.cols = static_cast<int>(f.integer("cols", g.cols, 2, kMaxGridSide));
   g.spacing = f.number("spacing", g.spacing);
   if (!(g.spacing > 0.0)) f.fail("spacing", "must be positive");
+  if (std::optional<std::string> what = outside(g.spacing, kMinScale, kMaxScale)) f.fail("spacing", *what);
   f.finish();
   const double bytes = static_cast<double>(g.rows) * g.cols * kBytesPerNode;
   if (bytes > 0.75 * physical_memory_bytes())
@@ -87,7 +99,7 @@ ConstraintRect parse_constraint(JsonFields f, const GridSpec& g) {
   return c;
 }
 
-Perturbation parse_perturbation(JsonFields f, const GridSpec& g) {
+Perturbation parse_perturbation(JsonFields f, const GridSpec& g, const Physics& physics) {
   Perturbation p;
   for (const char* key : {"row", "col", "radius", "amplitude"})
     if (!f.has(key)) f.fail(key, "is missing");
@@ -100,9 +112,17 @@ Perturbation parse_perturbation(JsonFields f, const GridSpec& g) {
     f.fail("col", "is outside the grid's columns [0, " + std::to_string(g.cols - 1) + "]");
   p.radius = f.number("radius", p.radius);
   if (!(p.radius > 0.0)) f.fail("radius", "must be positive");
+  check_spacings(f, "radius", p.radius, g);
   p.amplitude = f.number("amplitude", p.amplitude);
   p.target = f.text("target", "velocity", {"velocity", "position"}) == "position"
                  ? PerturbTarget::position : PerturbTarget::velocity;
+  // A position in spacings; a velocity in the spacings it moves a node a step.
+  const bool position = p.target == PerturbTarget::position;
+  const double spacings = std::fabs(p.amplitude) * (position ? 1.0 : physics.dt) / g.spacing;
+  if (outside(spacings, 0.0, kMaxSpacings))
+    f.fail("amplitude", "is " + number_text(p.amplitude) + " (" + number_outside(spacings, 0.0, kMaxSpacings) +
+                            (position ? " grid spacings" : " grid spacings a step") + "), outside [0, " +
+                            number_text(kMaxSpacings) + "]");
   p.mode = f.text("mode", "add", {"add", "set"}) == "set" ? PerturbMode::set : PerturbMode::add;
   f.finish();
   return p;
@@ -121,9 +141,14 @@ CameraSpec parse_camera(JsonFields f) {
     if (!f.has(key)) f.fail(key, "is missing");
   c.eye = f.vec3("eye", c.eye);
   c.target = f.vec3("target", c.target);
+  for (const auto& [key, point] : {std::pair{"eye", c.eye}, std::pair{"target", c.target}})
+    for (double x : point)
+      if (std::optional<std::string> what = outside(x, -view::kMaxCameraCoordinate, view::kMaxCameraCoordinate))
+        f.fail(key, "has a coordinate that " + *what + " (float view matrices)");
   if (c.eye == c.target) f.fail("target", "must differ from camera.eye");
   c.fovy_degrees = f.number("fovy", c.fovy_degrees);
-  if (!(c.fovy_degrees > 0.0 && c.fovy_degrees < 180.0)) f.fail("fovy", "must be in (0, 180) degrees");
+  if (!(c.fovy_degrees >= view::kMinFovyDegrees && c.fovy_degrees <= view::kMaxFovyDegrees))
+    f.fail("fovy", "must be in [" + number_text(view::kMinFovyDegrees) + ", " + number_text(view::kMaxFovyDegrees) + "] degrees");
   f.finish();
   return c;
 }
@@ -135,22 +160,25 @@ constexpr const char* kBasinKeys[2] = {"floor_depth", "land_height"};
 
 double& basin_value(sim::BasinSpec& b, int k) { return k == 0 ? b.floor_depth : b.land_height; }
 
-int parse_basin(JsonFields f, sim::BasinSpec& b) {
+int parse_basin(JsonFields f, sim::BasinSpec& b, const GridSpec& g) {
   int given = 0;
   for (int k = 0; k < 2; ++k) {
     if (!f.has(kBasinKeys[k])) continue;
     basin_value(b, k) = f.number(kBasinKeys[k], basin_value(b, k));
     if (!(basin_value(b, k) > 0.0)) f.fail(kBasinKeys[k], "must be positive");
+    check_spacings(f, kBasinKeys[k], basin_value(b, k), g);
     given |= 1 << k;
   }
   f.finish();
   return given;
 }
 
-void parse_view(JsonFields f, ViewSpec& v, sim::BasinSpec& basin, int basin_given) {
+void parse_view(JsonFields f, ViewSpec& v, sim::BasinSpec& basin, int basin_given, const GridSpec& g) {
   v.steps_per_frame = f.integer("steps_per_frame", v.steps_per_frame, 0, 1000000);
   v.lod_tolerance_px = f.number("lod_tolerance", v.lod_tolerance_px);
   if (v.lod_tolerance_px < 0.0) f.fail("lod_tolerance", "must not be negative (0 = the full mesh)");
+  if (std::optional<std::string> what = outside(v.lod_tolerance_px, 0.0, kMaxScale, " pixels"))
+    f.fail("lod_tolerance", *what);
   for (int k = 0; k < 2; ++k) {
     const char* key = kBasinKeys[k];
     if (!f.has(key)) continue;
@@ -158,6 +186,7 @@ void parse_view(JsonFields f, ViewSpec& v, sim::BasinSpec& basin, int basin_give
       f.fail(key, std::string("is given twice: it is basin.") + key + " now; remove view." + key);
     basin_value(basin, k) = f.number(key, basin_value(basin, k));
     if (!(basin_value(basin, k) > 0.0)) f.fail(key, std::string("must be positive (it is basin.") + key + " now)");
+    check_spacings(f, key, basin_value(basin, k), g);
   }
   v.effects.reflections = f.boolean("reflections", v.effects.reflections);
   v.effects.caustics = f.boolean("caustics", v.effects.caustics);
@@ -169,6 +198,7 @@ void parse_view(JsonFields f, ViewSpec& v, sim::BasinSpec& basin, int basin_give
 void parse_lighting(JsonFields f, LightingSpec& l) {
   l.sun = f.vec3("sun", l.sun);
   if (const std::optional<Problem> problem = sun_problem(l.sun)) f.fail(problem->key.c_str(), problem->what);
+  l.sun = sun_direction(l.sun);
   l.water = color(f, "water", l.water);
   l.absorption = f.vec3("absorption", l.absorption);
   for (double a : l.absorption)
@@ -185,6 +215,7 @@ TreeSpec parse_tree(JsonFields f, const Scene& scene) {
   t.seed = static_cast<std::uint64_t>(f.integer("seed", static_cast<std::int64_t>(t.seed), 0, INT64_MAX));
   t.height = f.number("height", t.height);
   if (!(t.height > 0.0)) f.fail("height", "must be positive");
+  check_spacings(f, "height", t.height, scene.grid);
   const auto& ps = f.array("positions");
   if (ps.size() > kMaxTrees) f.fail("positions", "holds more than " + std::to_string(kMaxTrees) + " trees");
   const GridSpec& g = scene.grid;
@@ -218,6 +249,8 @@ void parse_wind(JsonFields f, WindSpec& w) {
   w.strength = f.number("strength", w.strength);
   if (!(w.strength >= 0.0 && w.strength <= 9.0)) f.fail("strength", "must be in [0, 9]");
   w.direction_deg = f.number("direction_deg", w.direction_deg);
+  if (std::optional<std::string> what = outside(w.direction_deg, -kMaxDegrees, kMaxDegrees, " degrees"))
+    f.fail("direction_deg", *what);
   w.seed = static_cast<std::uint64_t>(f.integer("seed", static_cast<std::int64_t>(w.seed), 0, INT64_MAX));
   w.ripples = f.boolean("ripples", w.ripples);
   f.finish();
@@ -258,6 +291,15 @@ std::optional<Problem> physics_problem(const Physics& p) {
   if (!(p.water_density > 0.0 && std::isfinite(p.water_density))) return Problem{"water_density", "must be positive"};
   if (!(p.body_drag >= 0.0 && std::isfinite(p.body_drag)))
     return Problem{"body_drag", "must be finite and not negative"};
+  // Each within the scale the solver's float constants are made of (scene/number_limits.h).
+  const std::pair<const char*, double> scaled[] = {{"mass", p.mass}, {"dt", p.dt}, {"rest_ratio", p.rest_ratio},
+                                                   {"water_density", p.water_density}};
+  for (const auto& [key, value] : scaled)
+    if (std::optional<std::string> what = outside(value, kMinScale, kMaxScale)) return Problem{key, *what};
+  const std::pair<const char*, double> zero_or_scaled[] = {
+      {"stiffness", p.stiffness}, {"damping", p.damping}, {"gravity", p.gravity}, {"body_drag", p.body_drag}};
+  for (const auto& [key, value] : zero_or_scaled)
+    if (std::optional<std::string> what = outside(value, 0.0, kMaxScale)) return Problem{key, *what};
   const double bound = sim::stability_bound(p.mass, p.stiffness, p.damping);
   const double sub_dt = p.dt / p.substeps;
   if (!(sub_dt < bound)) {
@@ -281,6 +323,14 @@ std::optional<Problem> sun_problem(const std::array<double, 3>& s) {
   return std::nullopt;
 }
 
+std::array<double, 3> sun_direction(const std::array<double, 3>& s) {
+  const double largest = std::max({std::fabs(s[0]), std::fabs(s[1]), std::fabs(s[2])});
+  if (largest >= 0x1p-500 && largest <= 0x1p500) return s;  // its squares are normal doubles
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  return {std::ldexp(s[0], -exponent), std::ldexp(s[1], -exponent), std::ldexp(s[2], -exponent)};
+}
+
 void check_physics(const Physics& physics) {
   if (const std::optional<Problem> p = physics_problem(physics)) throw InputError("physics." + p->key + " " + p->what);
 }
@@ -291,17 +341,9 @@ void check_sun(const std::array<double, 3>& toward_sun) {
 
 std::string_view default_scene_json() { return kDefaultSceneJson; }
 
-Scene parse_scene(std::string_view json_text, const std::string& source, ParseOptions options) {
-  nlohmann::json root;
-  try {
-    root = nlohmann::json::parse(json_text);
-  } catch (const nlohmann::json::exception& e) {
-    // nlohmann's message is "[json.exception.parse_error.101] parse error at line 3, column 5: ...";
-    // a number too large for a double ("1e999") is its out_of_range.406, also bad input.
-    std::string what = e.what();
-    const auto p = what.find("] ");
-    throw InputError(source + ": invalid JSON: " + (p == std::string::npos ? what : what.substr(p + 2)));
-  }
+Scene parse_scene(std::string_view json_text, const std::string& file, ParseOptions options) {
+  const std::string source = escaped(file);  // as messages show it
+  const nlohmann::json root = parse_json(json_text, source);
   JsonFields f(root, "", source);
   Scene s;
   s.name = f.text("name", "", {});
@@ -315,9 +357,9 @@ Scene parse_scene(std::string_view json_text, const std::string& source, ParseOp
   const auto& ps = f.array("perturbations");
   for (std::size_t i = 0; i < ps.size(); ++i)
     s.perturbations.push_back(parse_perturbation(
-        JsonFields(ps[i], "perturbations[" + std::to_string(i) + "]", source), s.grid));
-  const int basin_given = parse_basin(JsonFields(f.object("basin"), "basin", source), s.basin);
-  parse_view(JsonFields(f.object("view"), "view", source), s.view, s.basin, basin_given);
+        JsonFields(ps[i], "perturbations[" + std::to_string(i) + "]", source), s.grid, s.physics));
+  const int basin_given = parse_basin(JsonFields(f.object("basin"), "basin", source), s.basin, s.grid);
+  parse_view(JsonFields(f.object("view"), "view", source), s.view, s.basin, basin_given, s.grid);
   parse_bodies(f, s, source, options.body_overlaps);
   if (f.has("camera")) s.camera = parse_camera(JsonFields(f.object("camera"), "camera", source));
   parse_lighting(JsonFields(f.object("lighting"), "lighting", source), s.lighting);

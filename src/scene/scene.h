@@ -43,6 +43,10 @@ struct Problem {
 std::optional<Problem> physics_problem(const sim::Physics& physics);
 // lighting.sun: a direction, finite and not zero.
 std::optional<Problem> sun_problem(const std::array<double, 3>& toward_sun);
+// The same direction, normalizable in double: a vector whose squares would overflow or vanish is
+// scaled by a power of two to a largest component in [0.5, 1) ([1e200, 1e200, 0] and
+// [1e-200, 1e-200, 0] both become [0.5, 0.5, 0]); any other is returned as it is.
+std::array<double, 3> sun_direction(const std::array<double, 3>& toward_sun);
 // Throws InputError("physics.<key> <what>") / ("lighting.sun ...") for a run-time edit.
 void check_physics(const sim::Physics& physics);
 void check_sun(const std::array<double, 3>& toward_sun);

@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include "core/errors.h"
+#include "core/text.h"
 
 #define GLM_FORCE_DEPTH_ZERO_TO_ONE
 #include <glm/glm.hpp>
@@ -34,6 +38,35 @@ std::array<float, 16> view_projection(const lod::Camera& camera, const sim::Wate
   std::array<float, 16> out{};
   std::copy_n(glm::value_ptr(vp), 16, out.begin());
   return out;
+}
+
+void check_camera_point(const std::array<double, 3>& point, const char* name) {
+  for (double x : point)
+    if (!(std::fabs(x) <= kMaxCameraCoordinate))
+      throw InputError(std::string(name) + " has a coordinate " + number_text(x) + ", outside [-" +
+                       number_text(kMaxCameraCoordinate) + ", " + number_text(kMaxCameraCoordinate) +
+                       "] (float view matrices)");
+}
+
+lod::Camera checked_camera(lod::Camera c, const char* eye_name, const char* target_name) {
+  check_camera_point(c.eye, eye_name);
+  check_camera_point(c.target, target_name);
+  std::array<double, 3> d{};
+  double largest = 0, eye_largest = 1;
+  for (int k = 0; k < 3; ++k) {
+    d[k] = c.target[k] - c.eye[k];
+    largest = std::max(largest, std::fabs(d[k]));
+    eye_largest = std::max(eye_largest, std::fabs(c.eye[k]));
+  }
+  if (largest == 0) throw InputError(std::string(target_name) + " must differ from " + eye_name);
+  if (largest >= 0x1p-500) return c;  // the squares of the difference are normal doubles
+  // The unit direction, found from the difference scaled to a largest component of 1 (exact for
+  // the component that is largest), placed as far from the eye as its coordinates are large.
+  double length2 = 0;
+  for (double& x : d) x /= largest, length2 += x * x;
+  const double reach = eye_largest / std::sqrt(length2);
+  for (int k = 0; k < 3; ++k) c.target[k] = c.eye[k] + d[k] * reach;
+  return c;
 }
 
 lod::Camera scene_camera(const std::optional<CameraSpec>& camera, const sim::WaterModel& model, int width, int height) {

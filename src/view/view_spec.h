@@ -6,6 +6,13 @@
 
 namespace pond::view {
 
+// A camera's coordinates lie within +-kMaxCameraCoordinate (world units): the squares of the
+// distances float32 shaders and view matrices form stay finite (3 * 1e30 < 3.4e38).
+inline constexpr double kMaxCameraCoordinate = 1e15;
+// The vertical field of view (degrees) of every camera (the scene's, --fovy): past these,
+// 1 / tan(fovy / 2) leaves float's range or the view folds over.
+inline constexpr double kMinFovyDegrees = 0.01, kMaxFovyDegrees = 179.99;
+
 // "camera": {"eye": [x, y, z], "target": [x, y, z], "fovy": degrees}; absent = a view of the whole
 // pond chosen from the grid size.
 struct CameraSpec {

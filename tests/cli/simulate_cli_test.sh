@@ -68,7 +68,7 @@ expect_bad "border" --steps 5 --scene "$work/border.json" $out
 expect_bad "constraints\[0\].rows" --steps 5 --scene "$work/range.json" $out
 expect_bad "radius" --steps 5 --scene "$work/radius.json" $out
 expect_bad "mode" --steps 5 --scene "$work/mode.json" $out
-expect_bad "blew up" --steps 50 --scene "$work/blowup.json" $out
+expect_bad "perturbations\[0\].amplitude is 1e+38" --steps 50 --scene "$work/blowup.json" $out
 expect_bad "output folder" --steps 5 --scene "$work/ok.json" --out "$work/no/such/dir/state.npy"
 # A backend this CPU lacks, on any CPU: AVX2 masked out (src/sim/backends.h), or absent (IA-32,
 # aarch64); NEON masked out (aarch64) or absent (x86).

@@ -116,5 +116,22 @@ TEST(BodyGrab, FollowsRemovedBodies) {
   EXPECT_FALSE(grab.active());
 }
 
+TEST(BodyGrab, TheWheelLiftsAHeldBallNoHigherThanAPondAboveTheLand) {
+  sim::Session session(scene::session_spec(scene::parse_scene(kBall, "test")), sim::SolverChoice{.gpu = false});
+  const lod::Camera camera = above();
+  BodyGrab grab;
+  ASSERT_TRUE(grab.grab(session, pixel_ray(camera, 200, 200)).has_value());
+  const double land = session.model().basin.land_height, pond = 41.0, floor = session.model().basin.floor_depth;
+  grab.lift(1e30);
+  for (int f = 0; f < 200; ++f) grab.drag(session, camera, 1), session.advance(1);
+  const double top = session.bodies()[0].y;  // spacing 1: world units
+  EXPECT_TRUE(std::isfinite(top));
+  EXPECT_LE(top, land + pond + 1e-3);
+  EXPECT_GT(top, land + pond - 1.0);  // it got there
+  grab.lift(-1e30);
+  for (int f = 0; f < 200; ++f) grab.drag(session, camera, 1), session.advance(1);
+  EXPECT_GE(session.bodies()[0].y, -floor - 1e-3);
+}
+
 }  // namespace
 }  // namespace pond::app::demo

@@ -1,28 +1,34 @@
 // Fuzz target: the scene parser and validator (parse_scene), then, for small grids, the model built
-// from it (build_model in both math modes) and a few steps of the scalar CPU solver. Every rejection
-// must be an InputError naming what is wrong; a model that builds must be the scene's and keep the
-// spec's rules through its steps, each checked here from the scene, not from the model's code:
+// from it (build_model in both math modes) and a few steps of the scalar CPU solver, then of the
+// whole session, bodies and all. Every rejection must be one printable line naming the file first;
+// a model that builds must be the scene's and keep the spec's rules through its steps, each checked
+// here from the scene, not from the model's code:
 //  - the node kinds: the border kind on every border node, then the rectangles, fixed winning;
 //  - each perturbation's table: exactly the nodes that are not fixed within 3 radii of its centre,
 //    with the weight amplitude * exp(-d^2 / (2 r^2)) (grid units: over the spacing);
 //  - after the steps: every value finite, fixed nodes at rest, vertical-only nodes without
 //    horizontal displacement or velocity; and a scene with nothing to move it (no perturbation
-//    before the last step, no pre-tension, no bodies) exactly at rest.
+//    before the last step, no pre-tension, no bodies) exactly at rest;
+//  - the session runs finite: an accepted scene that blows up within a few steps means a number
+//    passed validation outside the range where its arithmetic stays finite (issue 60).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include "core/errors.h"
-#include "sim/cpu_solver.h"
-#include "sim/model.h"
 #include "scene/scene.h"
+#include "scene/session_spec.h"
+#include "sim/model.h"
+#include "sim/session.h"
 #include "targets.h"
 
 namespace pond::fuzz {
 namespace {
 
-constexpr std::int64_t kSteps = 3;
+constexpr std::int64_t kSteps = 4;
 
 std::uint8_t kind(sim::NodeKind k) { return static_cast<std::uint8_t>(k); }
 
@@ -79,6 +85,14 @@ void check_state(const scene::Scene& s, const sim::WaterModel& m, const sim::Wat
   }
 }
 
+// One line naming the file first, nothing a terminal would act on (core/text.h escapes user text).
+void check_refusal(const InputError& e) {
+  const std::string_view m = e.what();
+  if (m.rfind("fuzz.json: ", 0) != 0 || m.size() == 11) property_failed("a refusal that does not name the file first");
+  for (char c : m)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) property_failed("a refusal with a control byte");
+}
+
 }  // namespace
 
 int scene(const std::uint8_t* data, std::size_t size) {
@@ -87,7 +101,7 @@ int scene(const std::uint8_t* data, std::size_t size) {
   try {
     s = scene::parse_scene(text, "fuzz.json");
   } catch (const InputError& e) {
-    if (std::string_view(e.what()).empty()) property_failed("InputError without a message");
+    check_refusal(e);
     return 0;
   }
   // Keep each input fast: the grid and the perturbation tables bound the work.
@@ -109,9 +123,18 @@ int scene(const std::uint8_t* data, std::size_t size) {
       sim::CpuSolver solver(std::move(model), sim::Backend::scalar, 1);
       solver.advance(kSteps);
       check_state(s, kept, solver.state());
-    } catch (const InputError& e) {
+    } catch (const InputError& e) {  // refused when built: no session to run
       if (std::string_view(e.what()).empty()) property_failed("InputError without a message");
+      return 0;
     }
+  }
+  try {
+    sim::Session session(scene::session_spec(s), sim::SolverChoice{.gpu = false, .backend = sim::Backend::scalar, .threads = 1});
+    session.advance(kSteps);
+    session.finite_state();  // throws "... blew up" naming no key: the property's failure below
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    property_failed("an accepted scene did not run finite for a few steps");
   }
   return 0;
 }

@@ -199,7 +199,7 @@ TEST(Scene, RenderKeyErrorsNameThePath) {
   EXPECT_TRUE(has(R"({"camera": {"eye": 3, "target": [0, 0, 0]}})", "camera.eye must be an array, not a number"));
   EXPECT_TRUE(has(R"({"camera": {"target": [0, 0, 0]}})", "camera.eye is missing"));
   EXPECT_TRUE(has(R"({"camera": {"eye": [0, 0, 0], "target": [0, 0, 0]}})", "camera.target must differ"));
-  EXPECT_TRUE(has(R"({"camera": {"eye": [0, 1, 0], "target": [0, 0, 0], "fovy": 180}})", "camera.fovy must be in (0, 180)"));
+  EXPECT_TRUE(has(R"({"camera": {"eye": [0, 1, 0], "target": [0, 0, 0], "fovy": 180}})", "camera.fovy must be in [0.01, 179.99]"));
   EXPECT_TRUE(has(R"({"camera": {"eye": [0, 1, 0], "target": [0, 0, 0], "fov": 60}})", "camera.fov is not a known key"));
   EXPECT_TRUE(has(R"({"camera": [1, 2, 3]})", "camera must be an object, not an array"));
   EXPECT_TRUE(has(R"({"view": {"steps_per_frame": -1}})", "view.steps_per_frame must be at least 0"));
@@ -327,7 +327,8 @@ TEST(Scene, BodyErrorsNameThePath) {
   EXPECT_TRUE(has(R"({"motion": "floating", "mass": 3, "position": [5, 1, -0.5], "radius": 2})",
                   "bodies[0].position is outside the grid"));
   EXPECT_TRUE(has(ball + R"("radius": 2, "shape": "cube"})", "bodies[0].shape is 'cube', expected sphere"));
-  EXPECT_TRUE(has(ball + R"("radius": 2, "motion": "sinking"})", "bodies[0].motion is 'sinking', expected kinematic | floating"));
+  EXPECT_TRUE(has(R"({"motion": "sinking", "mass": 3, "position": [5, 1, 5], "radius": 2})",
+                  "bodies[0].motion is 'sinking', expected kinematic | floating"));
   EXPECT_TRUE(has(R"({"radius": 2, "mass": 3, "position": [5, 1, 5]})", "bodies[0].motion is missing"));
   EXPECT_TRUE(has(ball + R"("radius": 2, "colour": "red"})", "bodies[0].colour is not a known key"));
   EXPECT_TRUE(has(ball + R"("radius": 2}, {"motion": "kinematic", "radius": 2, "path": [[0, 1, 0, 1], [10, 2, 0, 2], [5, 3, 0, 3]]})",

@@ -34,6 +34,9 @@ std::optional<std::size_t> BodyGrab::grab(const sim::Session& session, const Ray
 
 void BodyGrab::drag(sim::Session& session, const lod::Camera& camera, std::int64_t steps) {
   if (!index_) return;
+  // The wheel's plane stays between the pool's floor and a pond's extent above the land.
+  const sim::WaterModel& m = session.model();
+  height_ = std::clamp(height_, -m.basin.floor_depth, m.basin.land_height + double(std::max(m.rows, m.cols)) * m.spacing);
   const std::optional<std::array<double, 3>> under = intersect_height(pixel_ray(camera, cursor_[0], cursor_[1]), height_);
   const std::array<double, 3> target =
       under ? std::array<double, 3>{(*under)[0] + offset_[0], height_, (*under)[2] + offset_[2]}

@@ -23,7 +23,8 @@ class BodyGrab {
   bool active() const { return index_.has_value(); }
   std::size_t index() const { return *index_; }
   void move_cursor(double x, double y) { cursor_ = {x, y}; }
-  // Raises (dy > 0) or lowers the plane the held body moves in by dy (world units): the wheel.
+  // Raises (dy > 0) or lowers the plane the held body moves in by dy (world units): the wheel. The
+  // plane stays between the pool's floor and a pond's extent above the land.
   void lift(double dy) { height_ += dy; }
   // Once a frame, before the frame's steps: the held body toward the point under the cursor, over
   // `steps` steps (0 = paused: it waits there, and the drag's velocity is kept).

@@ -9,7 +9,10 @@
 #include "app/demo/scene_modes.h"
 #include "core/errors.h"
 #include "core/output_file.h"
+#include "core/output_paths.h"
+#include "core/text.h"
 #include "gpu/gpu_failure.h"
+#include "render/render_target.h"
 #include "scene/session_spec.h"
 #include "sim/backends.h"
 
@@ -23,6 +26,38 @@ using Clock = std::chrono::steady_clock;
 
 double ms_between(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
 
+// X11 takes window coordinates as 16-bit signed numbers; larger sizes end in an X error.
+constexpr int kMaxWindowSide = 32767;
+
+// Every requested screenshot has a frame the run draws: --screenshot is the last of --frames N, a
+// script's screenshot must come before it.
+void check_requested_shots(const DemoOptions& options, const Script& script) {
+  if (!options.screenshot.empty() && options.frames == 0)
+    throw InputError("--screenshot saves the last frame of --frames N: give --frames");
+  if (options.frames == 0) return;
+  for (const ScriptEvent& e : script.events)
+    if (e.event.kind == InputEvent::Kind::screenshot && e.frame >= options.frames)
+      throw InputError("--script " + escaped(options.script) + " line " +
+                       std::to_string(script.screenshot_lines[static_cast<std::size_t>(e.event.screenshot)]) +
+                       ": screenshot at frame " + std::to_string(e.frame) + " is past the last frame (--frames " +
+                       std::to_string(options.frames) + " ends after frame " + std::to_string(options.frames - 1) + ")");
+}
+
+// The window's size as the swapchain will get it, refused (InputError, as `pond render` refuses a
+// --size) beyond what the device can draw; the script's resizes too.
+vk::Extent2D checked_extent(const gpu::Context& ctx, const Window& window, const DemoOptions& options, const Script& script) {
+  render::check_target_size(ctx, options.width, options.height, render::RenderTarget::kFormat);
+  for (const ScriptEvent& e : script.events)
+    if (e.event.kind == InputEvent::Kind::resize) {
+      try {
+        render::check_target_size(ctx, static_cast<int>(e.event.x), static_cast<int>(e.event.y), render::RenderTarget::kFormat);
+      } catch (const InputError& bad) {
+        throw InputError("--script resize at frame " + std::to_string(e.frame) + ": " + bad.what());
+      }
+    }
+  return window.framebuffer_extent();
+}
+
 }  // namespace
 
 std::string solver_label(const sim::SolverChoice& s) {
@@ -35,7 +70,9 @@ DemoApp::DemoApp(const DemoOptions& options, scene::Scene scene, Script script)
       script_(std::move(script)),
       window_(options.width, options.height, "pond"),
       imgui_session_(window_.handle()),
-      gpu_(make_gpu_stack(options, window_, options.vsync)) {
+      gpu_(make_gpu_stack(options, window_, options.vsync, [&](const gpu::Context& ctx) {
+        return checked_extent(ctx, window_, options, script_);
+      })) {
   settings_.physics = base_scene_.physics;
   settings_.modes = modes_of(base_scene_);
   settings_.steps_per_frame = base_scene_.view.steps_per_frame;
@@ -54,6 +91,8 @@ DemoApp::DemoApp(const DemoOptions& options, scene::Scene scene, Script script)
   }
   const vk::Extent2D e = gpu_->swapchain.extent();
   camera_.set_home(loop_->default_camera(static_cast<int>(e.width), static_cast<int>(e.height)));
+  // Half a spacing above the land, itself above the rest plane: the view stays out of the water.
+  camera_.set_lowest_eye(base_scene_.basin.land_height + 0.5 * base_scene_.grid.spacing);
 }
 
 DemoApp::~DemoApp() {
@@ -118,7 +157,7 @@ void DemoApp::draw_ui() {
   if (bodies.add_ball) add_ball(middle_of_pond());
 }
 
-bool DemoApp::draw_frame(const std::string* screenshot_path) {
+bool DemoApp::draw_frame(const std::vector<std::string>& shots) {
   Swapchain& swapchain = gpu_->swapchain;
   // The frame's wait for the last compute, its early passes and LOD first, then the swapchain
   // image: acquiring waits for the window system to have taken the last frame, which this way
@@ -133,7 +172,7 @@ bool DemoApp::draw_frame(const std::string* screenshot_path) {
   acquire_ms_ = ms_between(t0, Clock::now());
   if (!image) return false;
   const vk::Extent2D extent = swapchain.extent();
-  const bool shot = screenshot_path != nullptr;
+  const bool shot = !shots.empty();
   const render::FrameTarget target{.image = image->image, .view = image->view, .format = swapchain.format(),
                                    .extent = extent, .old_layout = vk::ImageLayout::eUndefined,
                                    .final_layout = shot ? vk::ImageLayout::eTransferSrcOptimal : vk::ImageLayout::ePresentSrcKHR,
@@ -142,8 +181,9 @@ bool DemoApp::draw_frame(const std::string* screenshot_path) {
   stats_.last = loop_->draw(target);
   stats_.steps_done = session_->steps_done();
   if (shot) {
-    gpu_->shots.save(image->image, swapchain.format(), extent, image->rendered, *screenshot_path);
-    settings_.message = "saved " + *screenshot_path;
+    gpu_->shots.save(image->image, swapchain.format(), extent, image->rendered, shots);
+    settings_.message = "saved";
+    for (const std::string& path : shots) settings_.message += " " + escaped(path), written_.insert(path);
   }
   const Clock::time_point t1 = Clock::now();
   const bool current = swapchain.present(*image);
@@ -228,7 +268,8 @@ int DemoApp::run() {
     std::printf("pond demo: %lld of %lld frames minimized (nothing drawn)\n", static_cast<long long>(minimized_frames),
                 static_cast<long long>(frame));
   if (!options_.screenshot.empty() && window_.minimized() && options_.frames > 0)
-    throw RuntimeError("the window was minimized at the last frame: no screenshot for " + options_.screenshot);
+    throw RuntimeError("the window was minimized at the last frame: no screenshot for " + quote(options_.screenshot));
+  check_screenshots_written(frame);
   if (!options_.quiet)
     totals.print(gpu_->swapchain.extent().width, gpu_->swapchain.extent().height, gpu_->ctx.device_name(), stats_.solver,
                  stats_.present_mode, stats_.last.full_triangles);
@@ -262,13 +303,13 @@ bool DemoApp::frame_on_device(std::int64_t frame, std::int64_t& minimized_frames
   session_->advance_wind(stats_.frame_ms / 1000.0);
   draw_ui();
   const bool last_frame = options_.frames > 0 && frame + 1 == options_.frames;
-  std::optional<std::string> shot = pending_shot_;  // taken when the frame is drawn: a failed one keeps it
-  if (last_frame && !options_.screenshot.empty()) shot = options_.screenshot;
-  if (!draw_frame(shot ? &*shot : nullptr)) {
+  std::vector<std::string> shots = pending_shots_;  // kept for a retry of this frame
+  if (last_frame && !options_.screenshot.empty()) shots.push_back(options_.screenshot);
+  if (!draw_frame(shots)) {
     swapchain.recreate(window_.framebuffer_extent(), settings_.vsync);
     return false;
   }
-  pending_shot_.reset();
+  pending_shots_.clear();
   step();
   const Clock::time_point t = Clock::now();
   const double ms = ms_between(last, t);
@@ -279,11 +320,33 @@ bool DemoApp::frame_on_device(std::int64_t frame, std::int64_t& minimized_frames
   return true;
 }
 
+void DemoApp::check_screenshots_written(std::int64_t frames_run) const {
+  const std::string ended = "the demo ended after " + std::to_string(frames_run) + " frame" + (frames_run == 1 ? "" : "s");
+  for (const ScriptEvent& e : script_.events)
+    if (e.event.kind == InputEvent::Kind::screenshot) {
+      const auto k = static_cast<std::size_t>(e.event.screenshot);
+      if (!written_.contains(script_.screenshots[k]))
+        throw RuntimeError("no screenshot " + quote(script_.screenshots[k]) + " (--script line " +
+                           std::to_string(script_.screenshot_lines[k]) + ", frame " + std::to_string(e.frame) + "): " + ended);
+    }
+  if (!options_.screenshot.empty() && !written_.contains(options_.screenshot))
+    throw RuntimeError("no screenshot " + quote(options_.screenshot) + " (--screenshot, frame " +
+                       std::to_string(options_.frames - 1) + "): " + ended);
+}
+
 int run_demo(const DemoOptions& options) {
   // Bad input first, before any window: exit 2 even on a machine without a display.
   scene::Scene scene = scene::load_scene(options.scene);
   Script script = load_script(options.script);
+  check_requested_shots(options, script);
+  if (options.width > kMaxWindowSide || options.height > kMaxWindowSide)
+    throw InputError("--size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
+                     ": a window takes at most " + std::to_string(kMaxWindowSide) + " pixels a side (X11's coordinates)");
   if (!options.screenshot.empty()) check_output_path(options.screenshot);
+  std::vector<std::pair<std::string, std::filesystem::path>> shots{{"--screenshot", options.screenshot}};
+  for (std::size_t k = 0; k < script.screenshots.size(); ++k)
+    shots.emplace_back("--script line " + std::to_string(script.screenshot_lines[k]) + ": screenshot", script.screenshots[k]);
+  check_distinct_outputs(shots);  // one would overwrite the other
   DemoApp app(options, std::move(scene), std::move(script));
   return app.run();
 }

@@ -5,7 +5,9 @@
 #include <chrono>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
+#include <vector>
 
 #include "app/demo/app_lifetime.h"
 #include "app/demo/body_grab.h"
@@ -35,7 +37,8 @@ std::string solver_label(const sim::SolverChoice& s);
 
 // The demo's device and what lives on it (gpu_stack.h); an allocation that fails while making it
 // is tried once more (a real shortage fails again and ends the demo with its line).
-std::unique_ptr<GpuStack> make_gpu_stack(const DemoOptions& options, const Window& window, bool vsync);
+std::unique_ptr<GpuStack> make_gpu_stack(const DemoOptions& options, const Window& window, bool vsync,
+                                         const FirstExtent& extent);
 
 class DemoApp final : public ControlTarget {
  public:
@@ -76,7 +79,7 @@ class DemoApp final : public ControlTarget {
   void notice(const std::string& text);  // the panel's message, and stdout unless --quiet
   void handle_script_events(std::int64_t frame, std::size_t& next_event);
   void draw_ui();
-  bool draw_frame(const std::string* screenshot_path);  // false: swapchain out of date, retry
+  bool draw_frame(const std::vector<std::string>& shots);  // false: swapchain out of date, retry
   void step();  // the session by this frame's steps (after presenting)
   // One frame's work on the device (what run() loops over); false: the swapchain was out of date.
   bool frame_on_device(std::int64_t frame, std::int64_t& minimized_frames, RunTotals& totals,
@@ -91,7 +94,10 @@ class DemoApp final : public ControlTarget {
     const vk::Extent2D e = gpu_->swapchain.extent();
     return camera_.camera(static_cast<int>(e.width), static_cast<int>(e.height));
   }
-  void take_screenshot_next(std::string path) { pending_shot_ = std::move(path); }
+  void take_screenshot_next(std::string path) { pending_shots_.push_back(std::move(path)); }
+  // Throws RuntimeError naming the first requested screenshot (--screenshot, a script's) never
+  // written: the demo ended (ESCAPE, the window closed, minimized) before its frame was drawn.
+  void check_screenshots_written(std::int64_t frames_run) const;
 
   DemoOptions options_;
   scene::Scene base_scene_;
@@ -113,7 +119,8 @@ class DemoApp final : public ControlTarget {
   OrbitCamera camera_;
   InputDispatch input_;
   BodyGrab grab_;
-  std::optional<std::string> pending_shot_;
+  std::vector<std::string> pending_shots_;  // the next drawn frame's (F12, the script's)
+  std::set<std::string> written_;            // every screenshot saved
   int shot_counter_ = 0;
   bool quit_ = false;
   std::int64_t frame_ = 0;  // the frame being prepared (notices name it)

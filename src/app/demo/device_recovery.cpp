@@ -17,11 +17,12 @@ constexpr int kMaxRecoveries = 3;
 
 }  // namespace
 
-std::unique_ptr<GpuStack> make_gpu_stack(const DemoOptions& options, const Window& window, bool vsync) {
+std::unique_ptr<GpuStack> make_gpu_stack(const DemoOptions& options, const Window& window, bool vsync,
+                                         const FirstExtent& extent) {
   const std::string device = options.device.empty() ? std::string("(default)") : options.device;
   const auto make = [&] {
     return gpu::guard_gpu(device, "while setting up the window's device",
-                          [&] { return std::make_unique<GpuStack>(options, window, vsync); });
+                          [&] { return std::make_unique<GpuStack>(options, window, vsync, extent); });
   };
   try {
     return make();
@@ -54,7 +55,8 @@ void DemoApp::recover(const GpuFailure& first) {
     if (gpu_) earlier_validation_messages_ += gpu_->ctx.validation_log().count();
     gpu_.reset();
     try {
-      gpu_ = make_gpu_stack(options_, window_, settings_.vsync);
+      gpu_ = make_gpu_stack(options_, window_, settings_.vsync,
+                            [this](const gpu::Context&) { return window_.framebuffer_extent(); });
       stats_.device = gpu_->ctx.device_name();
       session_->set_gpu_factory(gpu_->solvers.factory());
       gpu::guard_gpu(gpu_->ctx, "while setting up the frame", [&] { build_loop(); });

@@ -3,6 +3,8 @@
 // context (instance, the window's surface, the device), the swapchain, the UI's and the
 // screenshots' resources, and where the session's GPU solvers come from. Made again, whole, when
 // the device is lost (device_recovery.cpp); the frame loop and its drawables are made on top of it.
+#include <functional>
+
 #include "app/demo/demo_app.h"
 #include "app/demo/imgui_renderer.h"
 #include "app/demo/screenshot.h"
@@ -13,10 +15,13 @@
 
 namespace pond::app::demo {
 
+// The swapchain's first extent, asked of the new context (the demo refuses sizes it cannot draw).
+using FirstExtent = std::function<vk::Extent2D(const gpu::Context&)>;
+
 struct GpuStack {
-  GpuStack(const DemoOptions& options, const Window& window, bool vsync)
+  GpuStack(const DemoOptions& options, const Window& window, bool vsync, const FirstExtent& extent)
       : ctx(gpu::ContextOptions{.device = options.device, .validation = options.validation}, surface_of(window)),
-        swapchain(ctx, window.framebuffer_extent(), vsync),
+        swapchain(ctx, extent(ctx), vsync),
         imgui(ctx, swapchain.format()),
         shots(ctx),
         solvers(ctx) {}

@@ -29,7 +29,7 @@ void OrbitCamera::reset() {
 
 std::array<double, 3> OrbitCamera::eye() const {
   const double c = std::cos(pitch_);
-  return {target_[0] + distance_ * c * std::sin(yaw_), target_[1] + distance_ * std::sin(pitch_),
+  return {target_[0] + distance_ * c * std::sin(yaw_), std::max(lowest_eye_, target_[1] + distance_ * std::sin(pitch_)),
           target_[2] + distance_ * c * std::cos(yaw_)};
 }
 

@@ -16,12 +16,16 @@ class OrbitCamera {
   void orbit(double dx_px, double dy_px);  // drag in pixels: left/right yaw, up/down pitch
   void pan(double dx_px, double dy_px, int viewport_height);  // the target follows the cursor
   void zoom(double wheel_steps);    // positive = closer
+  // The lowest the eye may go (world y): above the water and the land, so that zooming in or
+  // orbiting low never takes the view under the surface. The eye is raised to it, its x and z kept.
+  void set_lowest_eye(double y) { lowest_eye_ = y; }
   lod::Camera camera(int width, int height) const;
 
  private:
   std::array<double, 3> eye() const;
   std::array<double, 3> target_{0, 0, 0};
   double yaw_ = 0, pitch_ = 0.5, distance_ = 10, fovy_ = 45;
+  double lowest_eye_ = -1e300;
   lod::Camera home_;
 };
 

@@ -22,7 +22,7 @@ ScreenshotWriter::ScreenshotWriter(const gpu::Context& ctx) : ctx_(ctx) {
 }
 
 void ScreenshotWriter::save(vk::Image image, vk::Format format, vk::Extent2D extent, vk::Semaphore present_ready,
-                            const std::filesystem::path& path) {
+                            const std::vector<std::string>& paths) {
   const bool bgra = format == vk::Format::eB8G8R8A8Srgb || format == vk::Format::eB8G8R8A8Unorm;
   if (!bgra && format != vk::Format::eR8G8B8A8Srgb && format != vk::Format::eR8G8B8A8Unorm)
     throw RuntimeError("screenshots of swapchain format " + vk::to_string(format) + " are not supported");
@@ -69,7 +69,8 @@ void ScreenshotWriter::save(vk::Image image, vk::Format format, vk::Extent2D ext
   if (bgra)
     for (std::size_t p = 0; p < rgba.size(); p += 4) std::swap(rgba[p], rgba[p + 2]);
   for (std::size_t p = 3; p < rgba.size(); p += 4) rgba[p] = 255;  // the window is opaque
-  pond::write_png(path, static_cast<int>(extent.width), static_cast<int>(extent.height), rgba);
+  for (const std::string& path : paths)
+    pond::write_png(path, static_cast<int>(extent.width), static_cast<int>(extent.height), rgba);
 }
 
 }  // namespace pond::app::demo

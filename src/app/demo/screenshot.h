@@ -4,7 +4,8 @@
 // (ePresentSrcKHR, signalling the present semaphore) and writes the PNG atomically (core/png.h).
 // Rare (F12, script, --screenshot): it waits for its copy, and the readback buffer is kept for the
 // next shot of the same size.
-#include <filesystem>
+#include <string>
+#include <vector>
 
 #include "gpu/buffer.h"
 #include "gpu/context.h"
@@ -18,9 +19,9 @@ class ScreenshotWriter {
   // Semaphore the frame loop signals for a screenshot frame (FrameTarget::signal_semaphore).
   vk::Semaphore drawn() const { return *drawn_; }
   // Copies `image` (format B8G8R8A8 or R8G8B8A8, in eTransferSrcOptimal after `drawn`), moves it to
-  // ePresentSrcKHR signalling `present_ready`, and writes `path`.
+  // ePresentSrcKHR signalling `present_ready`, and writes the picture to each of `paths`.
   void save(vk::Image image, vk::Format format, vk::Extent2D extent, vk::Semaphore present_ready,
-            const std::filesystem::path& path);
+            const std::vector<std::string>& paths);
 
  private:
   const gpu::Context& ctx_;

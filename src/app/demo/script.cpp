@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <sstream>
 
 #include "core/errors.h"
 #include "core/output_file.h"
+#include "core/text.h"
 
 namespace pond::app::demo {
 namespace {
@@ -19,10 +21,14 @@ std::string upper(std::string s) {
   return s;
 }
 
+// Cursor positions within the largest window (--size) and beyond it by as much; wheel steps an
+// event, a mouse's wheel giving 1 a notch.
+constexpr double kMaxPixel = 65536, kMaxScroll = 100;
+
 class LineParser {
  public:
   LineParser(const std::string& source, int line, std::vector<std::string> words)
-      : where_(source + " line " + std::to_string(line)), words_(std::move(words)) {}
+      : where_(escaped(source) + " line " + std::to_string(line)), words_(std::move(words)) {}
 
   [[noreturn]] void fail(const std::string& what) const { throw InputError("--script " + where_ + ": " + what); }
 
@@ -31,19 +37,26 @@ class LineParser {
     if (done()) fail(std::string("missing ") + what);
     return words_[next_++];
   }
-  double number(const char* what) {
+  // A finite number within [-limit, limit]: nan, inf and 1e30 never reach the camera or a held body.
+  double number(const char* what, double limit) {
     const std::string w = word(what);
     double v = 0;
     const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
-    if (ec != std::errc() || end != w.data() + w.size()) fail(std::string(what) + " '" + w + "' is not a number");
+    if (end != w.data() + w.size() || (ec != std::errc() && ec != std::errc::result_out_of_range))
+      fail(std::string(what) + " " + quote(w) + " is not a number");
+    if (ec != std::errc() || !(std::fabs(v) <= limit))
+      fail(std::string(what) + " " + quote(w) + " is outside [-" + number_text(limit) + ", " + number_text(limit) + "]");
     return v;
   }
+  double pixel(const char* what) { return number(what, kMaxPixel); }
   std::int64_t integer(const char* what, std::int64_t lo, std::int64_t hi) {
     const std::string w = word(what);
     std::int64_t v = 0;
     const auto [end, ec] = std::from_chars(w.data(), w.data() + w.size(), v);
-    if (ec != std::errc() || end != w.data() + w.size()) fail(std::string(what) + " '" + w + "' is not an integer");
-    if (v < lo || v > hi) fail(std::string(what) + " " + w + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    if (end != w.data() + w.size() || (ec != std::errc() && ec != std::errc::result_out_of_range))
+      fail(std::string(what) + " " + quote(w) + " is not an integer");
+    if (ec != std::errc() || v < lo || v > hi)
+      fail(std::string(what) + " " + quote(w) + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
     return v;
   }
   int modifiers() {
@@ -53,12 +66,12 @@ class LineParser {
       if (m == "shift") mods |= GLFW_MOD_SHIFT;
       else if (m == "ctrl") mods |= GLFW_MOD_CONTROL;
       else if (m == "alt") mods |= GLFW_MOD_ALT;
-      else fail("unknown modifier '" + m + "' (shift, ctrl, alt)");
+      else fail("unknown modifier " + quote(m) + " (shift, ctrl, alt)");
     }
     return mods;
   }
   void end() const {
-    if (!done()) fail("unexpected '" + words_[next_] + "'");
+    if (!done()) fail("unexpected " + quote(words_[next_]));
   }
 
  private:
@@ -68,6 +81,19 @@ class LineParser {
 };
 
 using Kind = InputEvent::Kind;
+
+// The words of `line`, up to a word starting with # (a comment); InputError for a control byte
+// (a NUL, an escape), which no script word holds.
+std::vector<std::string> words_of(const std::string& line, const std::string& source, int number) {
+  for (std::size_t k = 0; k < line.size(); ++k)
+    if (const auto c = static_cast<unsigned char>(line[k]); (c < 0x20 && c != '\t' && c != '\r') || c == 0x7f)
+      throw InputError("--script " + escaped(source) + " line " + std::to_string(number) + ": control byte " +
+                       escaped(line.substr(k, 1)) + " at column " + std::to_string(k + 1));
+  std::istringstream split(line);
+  std::vector<std::string> words;
+  for (std::string w; split >> w && w[0] != '#';) words.push_back(w);
+  return words;
+}
 
 constexpr const char* kEvents =
     "key, click, drag, press, move, release, drop, remove-body, add-ball, scroll, resize, screenshot, save, load, "
@@ -103,10 +129,8 @@ Script parse_script(const std::string& text, const std::string& source) {
   int number = 0;
   while (std::getline(lines, line)) {
     ++number;
-    std::istringstream split(line);
-    std::vector<std::string> words;
-    for (std::string w; split >> w;) words.push_back(w);
-    if (words.empty() || words[0][0] == '#') continue;
+    std::vector<std::string> words = words_of(line, source, number);
+    if (words.empty()) continue;
     LineParser p(source, number, std::move(words));
     if (p.word("'frame'") != "frame") p.fail("a line must start with 'frame N'");
     const std::int64_t frame = p.integer("frame number", 0, INT64_MAX / 2);
@@ -118,12 +142,12 @@ Script parse_script(const std::string& text, const std::string& source) {
     if (verb == "key") {
       const std::string name = p.word("key name");
       const int key = key_from_name(name);
-      if (key < 0) p.fail("unknown key '" + name + "'");
+      if (key < 0) p.fail("unknown key " + quote(name));
       const int mods = p.modifiers();
       add({.kind = Kind::key, .code = key, .action = GLFW_PRESS, .mods = mods});
       add({.kind = Kind::key, .code = key, .action = GLFW_RELEASE, .mods = mods});
     } else if (verb == "click") {
-      const double x = p.number("x"), y = p.number("y");
+      const double x = p.pixel("x"), y = p.pixel("y");
       const int mods = p.modifiers();
       add({.kind = Kind::cursor, .x = x, .y = y});
       add({.kind = Kind::button, .code = GLFW_MOUSE_BUTTON_LEFT, .action = GLFW_PRESS, .mods = mods, .x = x, .y = y});
@@ -133,8 +157,8 @@ Script parse_script(const std::string& text, const std::string& source) {
       const int button = b == "left" ? GLFW_MOUSE_BUTTON_LEFT
                          : b == "middle" ? GLFW_MOUSE_BUTTON_MIDDLE
                          : b == "right" ? GLFW_MOUSE_BUTTON_RIGHT : -1;
-      if (button < 0) p.fail("unknown button '" + b + "' (left, middle, right)");
-      const double x0 = p.number("x0"), y0 = p.number("y0"), x1 = p.number("x1"), y1 = p.number("y1");
+      if (button < 0) p.fail("unknown button " + quote(b) + " (left, middle, right)");
+      const double x0 = p.pixel("x0"), y0 = p.pixel("y0"), x1 = p.pixel("x1"), y1 = p.pixel("y1");
       const int mods = p.modifiers();
       add({.kind = Kind::cursor, .x = x0, .y = y0});
       add({.kind = Kind::button, .code = button, .action = GLFW_PRESS, .mods = mods, .x = x0, .y = y0});
@@ -146,17 +170,17 @@ Script parse_script(const std::string& text, const std::string& source) {
       const int button = b == "left" ? GLFW_MOUSE_BUTTON_LEFT
                          : b == "middle" ? GLFW_MOUSE_BUTTON_MIDDLE
                          : b == "right" ? GLFW_MOUSE_BUTTON_RIGHT : -1;
-      if (button < 0) p.fail("unknown button '" + b + "' (left, middle, right)");
-      const double x = p.number("x"), y = p.number("y");
+      if (button < 0) p.fail("unknown button " + quote(b) + " (left, middle, right)");
+      const double x = p.pixel("x"), y = p.pixel("y");
       const int mods = p.modifiers();
       add({.kind = Kind::cursor, .x = x, .y = y});
       add({.kind = Kind::button, .code = button, .action = verb == "press" ? GLFW_PRESS : GLFW_RELEASE, .mods = mods,
            .x = x, .y = y});
     } else if (verb == "move") {
-      const double x = p.number("x"), y = p.number("y");
+      const double x = p.pixel("x"), y = p.pixel("y");
       add({.kind = Kind::cursor, .x = x, .y = y});
     } else if (verb == "drop") {  // the cursor to (x, y), then the drop-a-ball key
-      const double x = p.number("x"), y = p.number("y");
+      const double x = p.pixel("x"), y = p.pixel("y");
       add({.kind = Kind::cursor, .x = x, .y = y});
       add({.kind = Kind::key, .code = GLFW_KEY_O, .action = GLFW_PRESS});
       add({.kind = Kind::key, .code = GLFW_KEY_O, .action = GLFW_RELEASE});
@@ -165,7 +189,7 @@ Script parse_script(const std::string& text, const std::string& source) {
     } else if (verb == "add-ball") {
       add({.kind = Kind::add_ball});
     } else if (verb == "scroll") {
-      add({.kind = Kind::scroll, .x = 0, .y = p.number("scroll amount")});
+      add({.kind = Kind::scroll, .x = 0, .y = p.number("scroll amount", kMaxScroll)});
     } else if (verb == "resize") {
       const auto w = p.integer("width", 1, 16384), h = p.integer("height", 1, 16384);
       add({.kind = Kind::resize, .x = static_cast<double>(w), .y = static_cast<double>(h)});
@@ -177,6 +201,7 @@ Script parse_script(const std::string& text, const std::string& source) {
       const std::string file = p.word("file name");
       check_output_path(file);
       script.screenshots.push_back(file);
+      script.screenshot_lines.push_back(number);
       add({.kind = Kind::screenshot, .screenshot = static_cast<int>(script.screenshots.size() - 1)});
     } else if (verb == "save" || verb == "load") {
       const std::string file = p.word("file name");
@@ -185,7 +210,7 @@ Script parse_script(const std::string& text, const std::string& source) {
       add({.kind = verb == "save" ? Kind::save : Kind::load,
            .screenshot = static_cast<int>(script.checkpoints.size() - 1)});
     } else {
-      p.fail("unknown event '" + verb + "' (" + kEvents + ")");
+      p.fail("unknown event " + quote(verb) + " (" + kEvents + ")");
     }
     p.end();
   }

@@ -1,6 +1,7 @@
 #pragma once
 // Replayed input for tests and recordings (`pond demo --script FILE`). A text file, one event a
-// line; blank lines and lines starting with # are ignored; words are separated by spaces:
+// line; blank lines are ignored, and a word starting with # begins a comment to the end of the
+// line; words are separated by spaces:
 //
 //   frame N key NAME [shift] [ctrl] [alt]     press and release a key before frame N is drawn
 //   frame N click X Y [shift] [ctrl] [alt]    left click at pixel (X, Y) (top-left origin):
@@ -25,7 +26,9 @@
 // Frames count from 0; events of one frame run in file order, after the window's own events.
 // NAME is a letter, a digit, F1..F12, or one of SPACE ESCAPE ENTER TAB HOME LEFT RIGHT UP DOWN
 // [ ] - = . , (also as LEFT_BRACKET RIGHT_BRACKET MINUS EQUAL PERIOD COMMA).
-// Anything else is an InputError naming the file, the line and the word (pond exits 2).
+// X and Y are finite pixels within +-65536, DY within +-100 wheel steps, N within [0, 2^62).
+// Anything else (a control byte in a line too) is an InputError naming the file, the line and the
+// word (pond exits 2).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -42,6 +45,7 @@ struct ScriptEvent {
 struct Script {
   std::vector<ScriptEvent> events;        // sorted by frame, file order within a frame
   std::vector<std::string> screenshots;  // InputEvent::screenshot indexes these (screenshot events)
+  std::vector<int> screenshot_lines;     // the line of each
   std::vector<std::string> checkpoints;  // and these (save and load events)
 };
 
