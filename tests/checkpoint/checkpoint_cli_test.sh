@@ -141,8 +141,8 @@ expect_bad "byte order" --resume "$work/order.ckpt" --steps 5 $out
 expect_bad "does not exist" --resume "$work/missing.ckpt" --steps 5 $out
 expect_bad "scene" --resume "$ck" --scene "$scene" --steps 5 $out
 expect_bad "checkpoint-every" --scene "$scene" --steps 5 --checkpoint-every 2 $out
-expect_bad "differ" --scene "$scene" --steps 5 --checkpoint "$work/out.npy" $out
-expect_bad "differ" --scene "$scene" --steps 5 --checkpoint "$work/./out.npy" $out
+expect_bad "names the same file as --out" --scene "$scene" --steps 5 --checkpoint "$work/out.npy" $out
+expect_bad "names the same file as --out" --scene "$scene" --steps 5 --checkpoint "$work/./out.npy" $out
 expect_bad "does not exist" --scene "$scene" --steps 5 --checkpoint "$work/no/such/folder.ckpt" $out
 }
 cmp -s "$ck" "$work/$first.ckpt" || fail "a bad run changed the checkpoint it read"

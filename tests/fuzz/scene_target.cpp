@@ -21,6 +21,7 @@
 #include "core/errors.h"
 #include "scene/scene.h"
 #include "scene/session_spec.h"
+#include "sim/cpu_solver.h"
 #include "sim/model.h"
 #include "sim/session.h"
 #include "targets.h"
