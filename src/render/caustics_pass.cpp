@@ -68,16 +68,24 @@ CausticsPass::CausticsPass(const gpu::Context& ctx, const sim::WaterModel& model
   });
 }
 
-vk::BufferView CausticsPass::view_of(const gpu::Buffer& buffer, vk::Format format) {
-  for (const auto& [b, view] : views_)
+vk::BufferView CausticsPass::view_of(Slot& slot, const gpu::Buffer& buffer, vk::Format format) {
+  for (const auto& [b, view] : slot.views)
     if (b == *buffer.buffer) return *view;
-  views_.emplace_back(*buffer.buffer, gpu::create_texel_view(ctx_, buffer, format, "the caustics pass"));
-  return *views_.back().second;
+  slot.views.emplace_back(*buffer.buffer, gpu::create_texel_view(ctx_, buffer, format, "the caustics pass"));
+  return *slot.views.back().second;
+}
+
+std::vector<vk::raii::BufferView> CausticsPass::take_views(std::uint32_t slot) {
+  std::vector<vk::raii::BufferView> out;
+  for (auto& [buffer, view] : slots_[slot].views) out.push_back(std::move(view));
+  slots_[slot].views.clear();
+  return out;
 }
 
 void CausticsPass::bind(std::uint32_t slot, const gpu::Buffer& state, const gpu::Buffer& normals) {
-  const Slot& s = slots_[slot];
-  const vk::BufferView views[] = {view_of(state, vk::Format::eR32Sfloat), view_of(normals, vk::Format::eR32G32B32A32Sfloat)};
+  Slot& s = slots_[slot];
+  const vk::BufferView views[] = {view_of(s, state, vk::Format::eR32Sfloat),
+                                  view_of(s, normals, vk::Format::eR32G32B32A32Sfloat)};
   const vk::DescriptorImageInfo map{.imageView = *s.map.view, .imageLayout = L::eGeneral};
   using DT = vk::DescriptorType;
   const vk::WriteDescriptorSet writes[] = {

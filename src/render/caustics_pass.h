@@ -37,9 +37,10 @@ class CausticsPass {
 
   // Points slot `slot`'s descriptor set at this frame's water buffers (the slot must be idle).
   void bind(std::uint32_t slot, const gpu::Buffer& state, const gpu::Buffer& normals);
-  // Drops the views of the water's buffers before they are destroyed (a new solver; the device must
-  // be idle): a later buffer may reuse a handle.
-  void forget_water_buffers() { views_.clear(); }
+  // Slot `slot`'s views of the water's buffers, handed over when those buffers are replaced (a new
+  // solver: a later buffer may reuse a handle): the slot's frame in flight may still read them, so
+  // the caller keeps them until the slot is finished (FrameRing::retire).
+  std::vector<vk::raii::BufferView> take_views(std::uint32_t slot);
   // Records the dispatch and the barriers around it: the map from fragment-shader reads to the
   // compute write and back. The state and normals must be visible to compute shader reads (the
   // caller's barrier).
@@ -60,13 +61,13 @@ class CausticsPass {
   struct Slot {
     Image map;
     vk::raii::DescriptorSet set = nullptr;
+    // Texel-buffer views of the water's buffers this slot's set was pointed at, made on first use
+    // of each (the GPU solver's two state buffers and its normals, or the CPU path's copies).
+    std::vector<std::pair<vk::Buffer, vk::raii::BufferView>> views;
   };
-  // Texel-buffer views of the water's buffers, made on first use of each (the GPU solver's two
-  // state buffers and its normals, or the CPU path's per-slot copies).
-  vk::BufferView view_of(const gpu::Buffer& buffer, vk::Format format);
+  vk::BufferView view_of(Slot& slot, const gpu::Buffer& buffer, vk::Format format);
 
   const gpu::Context& ctx_;
-  std::vector<std::pair<vk::Buffer, vk::raii::BufferView>> views_;
   gpu::ComputePipeline pipeline_;
   vk::raii::DescriptorPool pool_ = nullptr;
   std::vector<Slot> slots_;

@@ -65,15 +65,17 @@ void write_frame_set(const gpu::Context& ctx, const FrameData& f, const gpu::Buf
   ctx.device().updateDescriptorSets(writes, nullptr);
 }
 
-void FrameRing::finish(std::uint32_t slot) const {
-  const FrameData& f = frames_[slot];
-  if (f.early_done.getStatus() == vk::Result::eSuccess && f.done.getStatus() == vk::Result::eSuccess) return;
-  const vk::Fence fences[] = {*f.early_done, *f.done};
-  if (ctx_.device().waitForFences(fences, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
-    throw RuntimeError("waiting for a frame failed");
+void FrameRing::finish(std::uint32_t slot) {
+  FrameData& f = frames_[slot];
+  if (f.early_done.getStatus() != vk::Result::eSuccess || f.done.getStatus() != vk::Result::eSuccess) {
+    const vk::Fence fences[] = {*f.early_done, *f.done};
+    if (ctx_.device().waitForFences(fences, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
+      throw RuntimeError("waiting for a frame failed");
+  }
+  f.retired.flush();
 }
 
-void FrameRing::finish_all() const {
+void FrameRing::finish_all() {
   for (std::uint32_t k = 0; k < kFramesInFlight; ++k) finish(k);
 }
 

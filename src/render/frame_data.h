@@ -5,6 +5,10 @@
 // writing frame N+1's uniforms and indices never waits for frame N's draw.
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <type_traits>
+#include <utility>
+#include <vector>
 
 #include "gpu/buffer.h"
 #include "gpu/context.h"
@@ -14,6 +18,22 @@
 #include "render/render_target.h"
 
 namespace pond::render {
+
+// What a frame slot's last submissions may still use and nothing needs any more (a view of a
+// replaced solver's buffer, a target of the old size): kept until the slot is finished, then
+// destroyed (vkguide's deletion queue). Any movable owner (vk::raii objects, gpu::Buffer) goes in.
+class DeletionQueue {
+ public:
+  template <class T>
+  void retire(T&& owner) {
+    held_.push_back(std::make_shared<std::decay_t<T>>(std::forward<T>(owner)));
+  }
+  void flush() { held_.clear(); }
+  std::size_t size() const { return held_.size(); }
+
+ private:
+  std::vector<std::shared_ptr<void>> held_;
+};
 
 struct FrameData {
   vk::raii::CommandBuffer early = nullptr;  // the passes before the main one
@@ -26,6 +46,7 @@ struct FrameData {
   LayerTarget reflection;
   LayerTarget submerged;  // render/submerged_pass.h
   Image shadow;  // the sun's shadow map (render/shadow_pass.h)
+  DeletionQueue retired;  // emptied when the slot is finished
 };
 
 // Points `frame`'s descriptor set (shared/water_render.h bindings) at its uniforms, the water's
@@ -43,9 +64,15 @@ class FrameRing {
   FrameData& operator[](std::uint32_t slot) { return frames_[slot]; }
   const FrameData& operator[](std::uint32_t slot) const { return frames_[slot]; }
   // Until slot's last submissions finished: polls its fences and waits only while they run (in the
-  // steady state the frame's one wait, for an earlier frame's compute, has finished them already).
-  void finish(std::uint32_t slot) const;
-  void finish_all() const;
+  // steady state the frame's one wait, for an earlier frame's compute, has finished them already);
+  // then destroys what was retired into the slot.
+  void finish(std::uint32_t slot);
+  void finish_all();
+  // `owner` kept until slot `slot` is next finished (it may be in use by the slot's submissions).
+  template <class T>
+  void retire(std::uint32_t slot, T&& owner) {
+    frames_[slot].retired.retire(std::forward<T>(owner));
+  }
   // Makes slot's depth buffer `extent` (the slot must be finished).
   void ensure_depth(std::uint32_t slot, vk::Extent2D extent);
   // Slot's early (main) command buffer reset and begun; submitted with its fence, the main one

@@ -138,8 +138,8 @@ struct FrameLoop::Impl {
     f.stats.wait_ms = ms_since(t);
     frames.finish(f.slot);
     timestamps.collect(f.slot);  // finished: its last frame's pass times are there to read
-    if (generation != session.solver_generation()) {  // the old solver's buffers are gone
-      caustics.forget_water_buffers();
+    if (generation != session.solver_generation()) {  // new water buffers: the old views retire
+      for (std::uint32_t k = 0; k < kFramesInFlight; ++k) frames.retire(k, caustics.take_views(k));
       generation = session.solver_generation();
     }
     f.water = water.prepare(f.slot);

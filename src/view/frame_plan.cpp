@@ -40,6 +40,10 @@ std::optional<PixelRect> submerged_pixels(const ShadowCaster& box, const std::ar
   return padded_pixels(x0, y0, x1, y1, width, height);
 }
 
+ShadowReceivers shadow_receivers(const PlanInput& in) {
+  return {-in.floor_depth, -kShadowWaveMargin, in.land_height + kShadowWaveMargin};
+}
+
 FramePlan plan_frame(const PlanInput& in) {
   FramePlan plan;
   plan.caustics = in.effects.caustics;
@@ -65,8 +69,7 @@ FramePlan plan_frame(const PlanInput& in) {
                          : std::nullopt;
   if (fitted)
     for (const ShadowCaster& c : in.casters)
-      if (auto r = shadow_pixels(*fitted, c, in.view_proj, in.width, in.height, -in.floor_depth,
-                                 in.land_height + kShadowWaveMargin)) {
+      if (auto r = shadow_pixels(*fitted, c, in.view_proj, in.width, in.height, shadow_receivers(in))) {
         r->shadowed = true;
         shadowed.push_back(*r);
       }

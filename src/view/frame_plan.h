@@ -52,6 +52,10 @@ struct PlanInput {
 
 FramePlan plan_frame(const PlanInput& in);
 
+// Where the frame's shadows are received: the floor, the lowest trough, the land's top plus the
+// highest crest.
+ShadowReceivers shadow_receivers(const PlanInput& in);
+
 // The pixels of the water's surface through which `box` (below y = 0) can be seen: the rays that
 // reach it enter the water within depth * tan(48.8 degrees) (the critical angle, 1 / 1.33) of it
 // horizontally, the depth of its bottom (or the floor's), so its box widened by that much, between

@@ -88,31 +88,46 @@ std::optional<SunShadowView> fit_sun_shadow(const std::array<double, 3>& toward_
 }
 
 std::optional<PixelRect> shadow_pixels(const SunShadowView& view, const ShadowCaster& caster,
-                                       const std::array<float, 16>& view_proj, int width, int height, double y_low,
-                                       double y_high) {
+                                       const std::array<float, 16>& view_proj, int width, int height,
+                                       const ShadowReceivers& receivers) {
   const PixelRect all{0, 0, width, height};
   if (view.along[1] > -1e-3) return all;  // sunlight along the ground: shadows reach anywhere
   const std::array<float, 16>& m = view_proj;
+  const std::array<float, 3> in_water = sunlight_in_water({-view.along[0], -view.along[1], -view.along[2]});
   double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
-  // Each corner's line away from the sun, p(t) = a + t along, t >= 0, between the two planes.
+  bool behind = false;
+  // A receiver point and the point straight above it at the top (a floor point seen through the
+  // water shows between itself and the surface point above it).
+  auto add = [&](const V3& p) {
+    for (double y : {p[1], receivers.top}) {
+      const double cx = m[0] * p[0] + m[4] * y + m[8] * p[2] + m[12];
+      const double cy = m[1] * p[0] + m[5] * y + m[9] * p[2] + m[13];
+      const double cw = m[3] * p[0] + m[7] * y + m[11] * p[2] + m[15];
+      if (cw <= 1e-6) behind = true;
+      const double px = (cx / cw * 0.5 + 0.5) * width, py = (cy / cw * 0.5 + 0.5) * height;
+      x0 = std::min(x0, px), x1 = std::max(x1, px), y0 = std::min(y0, py), y1 = std::max(y1, py);
+    }
+  };
+  auto along = [&](const V3& a, const V3& d, double t) { return V3{a[0] + t * d[0], a[1] + t * d[1], a[2] + t * d[2]}; };
+  const V3 light{view.along[0], view.along[1], view.along[2]};
+  const V3 water{in_water[0], in_water[1], in_water[2]};
   for (const V3& a : corners(caster)) {
-    const double t_high = std::max((y_high - a[1]) / view.along[1], 0.0);
-    const double t_low = (y_low - a[1]) / view.along[1];
-    if (t_low < 0.0) continue;  // the corner is below the receivers
-    for (double t : {t_high, t_low}) {
-      V3 p;
-      for (int k = 0; k < 3; ++k) p[k] = a[k] + t * view.along[k];
-      for (double y : {p[1], y_high}) {  // and straight above it
-        const double cx = m[0] * p[0] + m[4] * y + m[8] * p[2] + m[12];
-        const double cy = m[1] * p[0] + m[5] * y + m[9] * p[2] + m[13];
-        const double cw = m[3] * p[0] + m[7] * y + m[11] * p[2] + m[15];
-        if (cw <= 1e-6) return all;
-        const double px = (cx / cw * 0.5 + 0.5) * width, py = (cy / cw * 0.5 + 0.5) * height;
-        x0 = std::min(x0, px), x1 = std::max(x1, px), y0 = std::min(y0, py), y1 = std::max(y1, py);
-      }
+    if (a[1] < receivers.floor) continue;  // the corner is below every receiver
+    // In the air: each corner's line away from the sun, p(t) = a + t along, t >= 0, between the
+    // top and the lowest wave.
+    const double t_top = std::max((receivers.top - a[1]) / light[1], 0.0);
+    const double t_low = std::max((receivers.air_low - a[1]) / light[1], 0.0);
+    add(along(a, light, t_top));
+    add(along(a, light, t_low));
+    // Under the water: from where that line meets the rest plane, down the refracted sunlight to
+    // the floor (as water.frag traces it back up to its entry).
+    if (receivers.floor < 0.0 && a[1] >= 0.0) {
+      const V3 entry = along(a, light, a[1] / -light[1]);
+      add(entry);
+      add(along(entry, water, receivers.floor / water[1]));
     }
   }
-  if (!(x0 <= x1)) return std::nullopt;  // the whole box below the receivers
+  if (behind) return all;
   return padded_pixels(x0, y0, x1, y1, width, height);
 }
 

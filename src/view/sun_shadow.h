@@ -49,15 +49,23 @@ std::optional<SunShadowView> fit_sun_shadow(const std::array<double, 3>& toward_
                                             std::span<const ShadowCaster> casters, double texels_per_unit,
                                             std::uint32_t max_size);
 
+// The heights a shadow is received between (world y): in the air, along the sunlight, from the
+// lowest wave trough `air_low` to `top` (the land's top and the highest crest); under the water,
+// from the rest plane y = 0 down the refracted sunlight to the pool's `floor` (the floor and the
+// walls seen through the water, lit where their sunlight entered: water.frag).
+struct ShadowReceivers {
+  double floor = 0, air_low = 0, top = 0;
+};
+
 // The pixels of a width x height view (`view_proj`: column-major, Vulkan clip space) where
-// `caster`'s shadow can show on receivers between heights y_low and y_high: the bounding box of
-// what its box sweeps along the sunlight (away from the sun only) within those heights, and of
-// those points lifted to y_high (a floor point seen through the water shows between itself and
-// the surface point above it); the whole view when that reaches behind the eye; nothing when it is
-// off screen.
+// `caster`'s shadow can show on `receivers`: the bounding box of what its box's corners sweep along
+// the sunlight (away from the sun only) in the air and, from where that meets y = 0, along the
+// refracted sunlight under the water, each point also lifted to the top (a floor point seen
+// through the water shows between itself and the surface point above it); the whole view when
+// that reaches behind the eye; nothing when it is off screen or the box lies below the floor.
 std::optional<PixelRect> shadow_pixels(const SunShadowView& view, const ShadowCaster& caster,
-                                       const std::array<float, 16>& view_proj, int width, int height, double y_low,
-                                       double y_high);
+                                       const std::array<float, 16>& view_proj, int width, int height,
+                                       const ShadowReceivers& receivers);
 
 // The rectangles, with every two that overlap replaced by their bounding box (and the union of
 // what they are for) until none overlap (fewer draws).

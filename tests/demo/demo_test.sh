@@ -50,12 +50,12 @@ rc=$?
 # The scripted run, validation on. Run in the work dir: F12 writes pond-0000.png there, and the
 # script's screenshots too.
 cp "$src/every_mode.script" "$work/every_mode.script"
-(cd "$work" && POND_VALIDATION=1 xvfb-run -a -s "-screen 0 1024x768x24" "$pond" demo --frames 146 \
+(cd "$work" && POND_VALIDATION=1 xvfb-run -a -s "-screen 0 1024x768x24" "$pond" demo --frames 148 \
    --scene "$src/keys_scene.json" --size 640x400 --no-vsync --script every_mode.script > stdout 2> stderr)
 rc=$?
 [ $rc -eq 0 ] || fail "scripted run: exit $rc: $(head -c 2000 "$work/stderr")"
 grep -qi "validation\|VUID" "$work/stderr" && fail "validation messages: $(head -c 2000 "$work/stderr")"
-grep -q "146 frames" "$work/stdout" || fail "no summary line: $(cat "$work/stdout")"
+grep -q "148 frames" "$work/stdout" || fail "no summary line: $(cat "$work/stdout")"
 [ -z "$(ls "$work" | grep '\.tmp')" ] || fail "temporary file left behind"
 
 # share A B LEVELS: the share of pixels of two screenshots more than LEVELS apart.
@@ -108,9 +108,10 @@ same shore_fixed.png shore_fixed2.png "B a third time does not fix the shore aga
 same reset.png calm.png "a calm pond moved"
 differs calm.png rain.png "D brings no rain"
 differs before_cpu.png cpu_step.png "after G the water does not step"
+same rest.png cpu_reset.png "R on the CPU solver does not bring the water back to rest"
 same after_f12.png pond-0000.png "F12 did not save the frame"
 [ "$("$probe" size "$work/resized.png")" = "800 500" ] || fail "resized.png is not 800 x 500: $("$probe" size "$work/resized.png")"
-grep -q "146 frames at 800x500 on .*, CPU solver ([a-z0-9]*), Fifo:" "$work/stdout" ||
+grep -q "148 frames at 800x500 on .*, CPU solver ([a-z0-9]*), Fifo:" "$work/stdout" ||
   fail "G or F3 did not switch the solver or the present mode: $(cat "$work/stdout")"
 
 # Esc quits: the run ends at the frame it is pressed.

@@ -13,6 +13,7 @@
 #include "gpu_fixture.h"
 #include "image_compare.h"
 #include "pixel_probe.h"
+#include "shadow_law.h"
 #include "scene_frame.h"
 #include "scene/scene.h"
 #include "sim/model.h"
@@ -65,24 +66,6 @@ class ShadowTest : public GpuTest {
     return view::view_projection(view::scene_camera(scene.camera, model, kWidth, kHeight), model);
   }
 };
-
-// The horizontal step along the ground, per unit of height, from a point to its shadow.
-std::array<double, 2> shadow_step(const std::array<double, 3>& sun) { return {-sun[0] / sun[1], -sun[2] / sun[1]}; }
-
-// Where, on calm water, the eye sees the floor point (fx, -depth, fz): the surface point whose view
-// ray refracts (air to water, 1.33) onto it, found by bisection along the line between the eye's
-// foot and the floor point.
-std::array<double, 2> surface_point_seeing(const std::array<double, 3>& eye, double fx, double fz, double depth) {
-  const double dx = fx - eye[0], dz = fz - eye[2], run = std::hypot(dx, dz), h = eye[1];
-  double lo = 0, hi = run;  // the surface point's distance from the eye's foot
-  for (int k = 0; k < 60; ++k) {
-    const double r = 0.5 * (lo + hi), rest = run - r;
-    const double sin_air = r / std::hypot(r, h), sin_water = rest / std::hypot(rest, depth);
-    (sin_air > 1.33 * sin_water ? hi : lo) = r;
-  }
-  const double f = run > 0 ? lo / run : 0;
-  return {eye[0] + dx * f, eye[2] + dz * f};
-}
 
 // The trunk's shadow on the island's top in a frame with shadows on and one with them off: trunk
 // points 0.15 .. 0.9 above its foot (at `foot`, [row, col]) cast their shadows on the land (which

@@ -64,8 +64,9 @@ TEST(FramePlan, ShadowRectanglesHoldTheCastersShadowAndDoNotOverlap) {
   ASSERT_FALSE(p.shadow_rects.empty());
   // Each caster's own rectangle lies inside a merged one.
   for (const ShadowCaster& c : casters) {
-    const auto r = shadow_pixels(*p.shadow, c, f.view_proj, f.camera.width, f.camera.height, -f.scene.basin.floor_depth,
-                                 f.scene.basin.land_height + kShadowWaveMargin);
+    const ShadowReceivers receivers{-f.scene.basin.floor_depth, -kShadowWaveMargin,
+                                    f.scene.basin.land_height + kShadowWaveMargin};
+    const auto r = shadow_pixels(*p.shadow, c, f.view_proj, f.camera.width, f.camera.height, receivers);
     ASSERT_TRUE(r.has_value());
     bool held = false;
     for (const PixelRect& m : p.shadow_rects)

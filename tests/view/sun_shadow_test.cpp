@@ -113,6 +113,9 @@ std::array<double, 2> pixel(const std::array<float, 16>& m, double x, double y, 
   return {(cx / cw * 0.5 + 0.5) * 640, (cy / cw * 0.5 + 0.5) * 360};
 }
 
+// The floor 3 below the rest plane, waves 1 deep, land and crests up to 2.
+constexpr ShadowReceivers kReceivers{-3.0, -1.0, 2.0};
+
 bool inside(const PixelRect& r, std::array<double, 2> p) { return p[0] >= r.x0 && p[0] < r.x1 && p[1] >= r.y0 && p[1] < r.y1; }
 
 TEST(SunShadow, ScreenRectangleHoldsTheShadowAndNotTheSunSide) {
@@ -120,20 +123,24 @@ TEST(SunShadow, ScreenRectangleHoldsTheShadowAndNotTheSunSide) {
   const ShadowCaster pole{{49.8f, 1.0f, 49.8f}, {50.2f, 9.0f, 50.2f}};  // a pole on an island 1 high
   const auto v = fit_sun_shadow(kSun, std::vector<ShadowCaster>{pole}, 4.0, 1024);
   ASSERT_TRUE(v.has_value());
-  const auto r = shadow_pixels(*v, pole, vp, 640, 360, -3.0, 2.0);
+  const auto r = shadow_pixels(*v, pole, vp, 640, 360, kReceivers);
   ASSERT_TRUE(r.has_value());
   const auto step = std::array<double, 2>{-kSun[0] / kSun[1], -kSun[2] / kSun[1]};
-  // Its shadow on the island (y = 1), on the water (y = 0) and the floor (y = -3).
+  // Its shadow on the island (y = 1), on the water (y = 0) and, down the refracted sunlight from
+  // there, the floor (y = -3).
+  const std::array<float, 3> t = sunlight_in_water(kSun);
+  const double run = 3.0 / -t[1];
   for (double h = 0.0; h <= 8.0; h += 1.0) {
     EXPECT_TRUE(inside(*r, pixel(vp, 50 + step[0] * h, 1.0, 50 + step[1] * h))) << h;
     EXPECT_TRUE(inside(*r, pixel(vp, 50 + step[0] * (h + 1), 0.0, 50 + step[1] * (h + 1)))) << h;
-    EXPECT_TRUE(inside(*r, pixel(vp, 50 + step[0] * (h + 4), -3.0, 50 + step[1] * (h + 4)))) << h;
+    EXPECT_TRUE(inside(*r, pixel(vp, 50 + step[0] * (h + 1) + t[0] * run, -3.0, 50 + step[1] * (h + 1) + t[2] * run)))
+        << h;
   }
   // Nothing toward the sun: a point 3 units that way is outside.
   EXPECT_FALSE(inside(*r, pixel(vp, 50 - step[0] * 3, 1.0, 50 - step[1] * 3)));
   // A box wholly below the floor casts nowhere; one behind the eye makes it the whole view.
-  EXPECT_FALSE(shadow_pixels(*v, {{40, -9, 40}, {41, -8, 41}}, vp, 640, 360, -3.0, 2.0).has_value());
-  const auto all = shadow_pixels(*v, {{49, 1, 108}, {51, 80, 112}}, vp, 640, 360, -3.0, 2.0);
+  EXPECT_FALSE(shadow_pixels(*v, {{40, -9, 40}, {41, -8, 41}}, vp, 640, 360, kReceivers).has_value());
+  const auto all = shadow_pixels(*v, {{49, 1, 108}, {51, 80, 112}}, vp, 640, 360, kReceivers);
   ASSERT_TRUE(all.has_value());
   EXPECT_EQ(all->x0, 0);
   EXPECT_EQ(all->x1, 640);
@@ -150,7 +157,7 @@ TEST(SunShadow, APointJustInFrontOfTheEyeStaysInTheView) {
     vp[0] = sx;
     vp[5] = 1.0f;
     vp[15] = 2e-6f;
-    const auto r = shadow_pixels(*v, box, vp, 640, 360, -3.0, 2.0);
+    const auto r = shadow_pixels(*v, box, vp, 640, 360, kReceivers);
     if (r) {
       EXPECT_GE(r->x0, 0);
       EXPECT_LE(r->x1, 640);
