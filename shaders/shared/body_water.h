@@ -18,10 +18,13 @@
 //    the velocity the body starts the substep with (before this substep's weight and buoyancy,
 //    which a contact may take away again: a ball resting on the floor drags nothing), solved implicitly with the nodes as the other mass (effective mass m (sum w)^2 / sum w^2), so
 //    the relative velocity only ever shrinks: v_b' = v_b - k dv / (1 + k (1 + M / m_eff)). The
-//    opposite impulse goes into the nodes in proportion to their weights, so momentum is kept:
-//    vertically into every node under the ball (a ball moving through the surface pushes the water
-//    it displaces: its rings), sideways only into the free nodes (a vertical-only node's wall
-//    takes it, as the bed takes buoyancy's).
+//    opposite impulse goes into the nodes in proportion to their weights: sideways all of it, into
+//    the free nodes only (a vertical-only node's wall takes it); vertically the share of the ball
+//    above the level, 1 - f, into every node under the ball (a ball moving through the surface
+//    pushes the water it displaces: its rings), and the rest to the bed, as buoyancy's. The
+//    surface here stands for the whole column, which hands a deep body's push on to the floor; the
+//    membrane has no restoring force to give back a level pushed down (a ball sinking under the
+//    water would dig a lasting pit).
 #ifndef POND_BODY_WATER_H
 #define POND_BODY_WATER_H
 
@@ -199,12 +202,15 @@ POND_BODY_FN WaterExchange water_exchange(WaterMoments m, BodyState b, BodyConst
       // The drag, against the water's mean velocity; the nodes take the opposite impulse.
       POND_PRECISE float k = c.drag_dt * f;
       POND_PRECISE float wvy = m.vy * inv_w;
-      POND_PRECISE float qy = c.body_over_node * m.w2;
-      qy = qy * inv_w;
+      // The surface takes the vertical reaction in the share of the ball above the level; the
+      // bed takes the rest, as it takes buoyancy's (a ball deep in the water moves no surface).
+      POND_PRECISE float share = 1.0f - f;
+      POND_PRECISE float per = c.body_over_node * inv_w;
+      per = per * share;
+      POND_PRECISE float qy = per * m.w2;
       qy = qy * inv_w;
       POND_PRECISE float rel = b.vy - wvy;
       POND_PRECISE float dvy = drag_change(rel, k, qy);
-      POND_PRECISE float per = c.body_over_node * inv_w;
       POND_PRECISE float t = -dvy;
       e.cy = t * per;
       POND_PRECISE float wvx = m.vx * inv_w;

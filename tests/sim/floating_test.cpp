@@ -156,6 +156,9 @@ TEST(Floating, AfterADropTheWaterOverASunkBallStopsSinking) {
       const std::size_t above = test::node(s, 32, 32);
       EXPECT_GT(later.uy[above] - settled.uy[above], -1e-3) << sim::backend_name(backend) << ", from y " << start_y;
       EXPECT_LT(std::fabs(mean_level(later) - mean_level(settled)), 1e-3) << sim::backend_name(backend);
+      // Only the entry pushed the surface (the bed takes the drag's reaction under it): the mean
+      // level stays within 1e-3 of calm.
+      EXPECT_LT(std::fabs(mean_level(later)), 1e-3) << sim::backend_name(backend) << ", from y " << start_y;
     }
   }
 }
@@ -356,11 +359,13 @@ std::array<double, 3> momentum(const WaterState& s, const WaterModel& m) {
 
 TEST(Floating, TheWaterAndABodyTradeEqualAndOppositeImpulses) {
   // Without gravity (so without buoyancy, which the bed takes) the drag alone acts between a ball
-  // and a moving free membrane: one contact pass keeps the total along x, y and z.
+  // and a moving free membrane: one contact pass keeps the total along x and z; along y the surface
+  // takes the share of the ball above the level, 1 - f, and the bed the rest (docs/bodies.md).
   Scene s = test::grid_scene(33, 33, NodeKind::free);
   s.physics.gravity = 0;
   s.basin.floor_depth = 10;  // the ball meets neither the floor nor the rim (external impulses)
-  s.bodies.push_back(ball({16.0, 0.5, 16.0}, 3.0, 0.6, {0.05, -0.3, -0.03}));
+  const double y = 0.5, r = 3.0;
+  s.bodies.push_back(ball({16.0, y, 16.0}, r, 0.6, {0.05, -0.3, -0.03}));
   const WaterModel m = sim::build_model(s);
   WaterState state = sim::rest_state(m);
   for (std::size_t n = 0; n < state.nodes(); ++n) {
@@ -373,10 +378,14 @@ TEST(Floating, TheWaterAndABodyTradeEqualAndOppositeImpulses) {
   sim::resolve_contacts(state, m, 0, 0, sim::horizontal_reach(state));
   EXPECT_GT(std::fabs(state.bodies[0].vy - body.vy), 1e-3) << "the drag must act";
   const std::array<double, 3> after = momentum(state, m);
-  for (int k = 0; k < 3; ++k) EXPECT_NEAR(after[k], before[k], 1e-5 * (1 + std::fabs(before[k]))) << "axis " << k;
+  for (int k : {0, 2}) EXPECT_NEAR(after[k], before[k], 1e-5 * (1 + std::fabs(before[k]))) << "axis " << k;
+  const double hs = 0.0 - (y - r), f = hs * hs * (3 * r - hs) / (4 * r * r * r);  // the level is 0 at rest
+  const double ball_gain = (state.bodies[0].vy - body.vy) * m.bodies[0].constants.body_over_node;
+  const double water_gain = (after[1] - before[1]) - ball_gain;
+  EXPECT_NEAR(water_gain, -(1 - f) * ball_gain, 1e-4 * std::fabs(ball_gain)) << "the surface's share of the reaction";
 
   // A whole run without damping, the ball gliding slowly through: the springs and the exchange
-  // both keep the total.
+  // both keep the total along x and z.
   Scene run = s;
   run.physics.damping = 0;
   run.bodies[0].velocity = {0.05, -0.01, -0.03};
@@ -385,7 +394,23 @@ TEST(Floating, TheWaterAndABodyTradeEqualAndOppositeImpulses) {
   const std::array<double, 3> start = momentum(solver.state(), rm);
   solver.advance(400);
   const std::array<double, 3> end = momentum(solver.state(), rm);
-  for (int k = 0; k < 3; ++k) EXPECT_NEAR(end[k], start[k], 1e-3 * (1 + std::fabs(start[k]))) << "axis " << k;
+  for (int k : {0, 2}) EXPECT_NEAR(end[k], start[k], 1e-3 * (1 + std::fabs(start[k]))) << "axis " << k;
+}
+
+TEST(Floating, ABallSinkingBelowTheSurfaceLeavesItCalm) {
+  // A dense ball wholly under the water sinks to the floor: the bed takes its drag's reaction, so
+  // the surface above it never moves, on every backend (the GPU in the parity suite).
+  for (const Backend backend : test::available_backends()) {
+    Scene s = test::grid_scene(65, 65);
+    s.basin.floor_depth = 5;
+    s.bodies.push_back(ball({32.0, -2.0, 32.0}, 1.5, 2.0, {0, 0, 0}));
+    const WaterModel m = sim::build_model(s);
+    CpuSolver solver(m, backend, 1);
+    solver.advance(600);
+    EXPECT_NEAR(solver.state().bodies[0].y, -3.5, 0.05) << "on the floor";
+    for (std::size_t n = 0; n < solver.state().nodes(); ++n)
+      ASSERT_EQ(solver.state().uy[n], 0.0f) << sim::backend_name(backend) << ": node " << n;
+  }
 }
 
 TEST(Floating, GravityAndBuoyancyAreExternalAndSummed) {
