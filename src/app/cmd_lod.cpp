@@ -16,6 +16,7 @@
 #include "core/errors.h"
 #include "core/npy.h"
 #include "core/output_file.h"
+#include "core/output_paths.h"
 #include "core/text.h"
 #include "lod/lod_builder.h"
 #include "view/view_projection.h"
@@ -48,6 +49,7 @@ int run_lod(const LodOptions& o) {
   lod::validate(camera, o.tolerance);
   core::validate_cpu_features_mask();  // the builder reads it; an error below is the state's
   check_output_path(o.out);
+  check_outputs_spare_inputs({{"--out", o.out}}, {{"--state", o.state}});
 
   const NpyArray state = read_npy(o.state);
   if (state.type != NpyType::f32 || state.shape.size() != 3 || state.shape[2] != 6)

@@ -4,6 +4,7 @@
 #include "app/render_bridge.h"
 #include "core/errors.h"
 #include "core/output_file.h"
+#include "core/output_paths.h"
 #include "view/view_projection.h"
 
 namespace pond::app {
@@ -40,6 +41,7 @@ Command add_render_command(CLI::App& app) {
             if (!(*raw)[2].empty()) view::check_camera_point(*(o->target = parse_vec3((*raw)[2], "--target")), "--target");
             if (o->eye && o->target && *o->eye == *o->target) throw InputError("--target must differ from --eye");
             check_output_path(o->out);
+            check_outputs_spare_inputs({{"--out", o->out}}, {{"--scene", o->scene}});
             return run_render(*o);
           }};
 }

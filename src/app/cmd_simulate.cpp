@@ -86,6 +86,9 @@ void check_outputs(const SimulateOptions& o) {
     }
   }
   check_distinct_outputs({{"--out", o.out}, {"--bodies-out", o.bodies_out}, {"--checkpoint", o.checkpoint}});
+  // --checkpoint may be --resume's file: the run saves over the checkpoint it went on from.
+  check_outputs_spare_inputs({{"--out", o.out}, {"--bodies-out", o.bodies_out}}, {{"--scene", o.scene}, {"--resume", o.resume}});
+  check_outputs_spare_inputs({{"--checkpoint", o.checkpoint}}, {{"--scene", o.scene}});
   if (o.checkpoint_every > 0 && o.checkpoint.empty()) throw InputError("--checkpoint-every needs --checkpoint FILE");
   if (!o.resume.empty() && !o.scene.empty())
     throw InputError("--scene cannot be given with --resume: the scene is in the checkpoint");

@@ -64,13 +64,26 @@ fs::path partial(const fs::path& path) {
   return tmp;
 }
 
+// Writes `bytes` to `path`'s partial name; a failure names `path`, the file the user asked for.
+void write_partial(const fs::path& path, std::span<const std::byte> bytes) {
+  const fs::path tmp = partial(path);
+  try {
+    write_file_atomic(tmp, bytes);
+  } catch (const RuntimeError& e) {
+    std::string what = e.what();
+    const std::string named = quote(tmp.string());
+    if (const auto at = what.find(named); at != std::string::npos) what.replace(at, named.size(), quote(path.string()));
+    throw RuntimeError(what);
+  }
+}
+
 void write_pair(const fs::path& first, std::span<const std::byte> first_bytes, const fs::path& second,
                 std::span<const std::byte> second_bytes) {
   const fs::path first_tmp = partial(first), second_tmp = partial(second);
   std::error_code ec;
-  write_file_atomic(first_tmp, first_bytes);
+  write_partial(first, first_bytes);
   try {
-    write_file_atomic(second_tmp, second_bytes);
+    write_partial(second, second_bytes);
   } catch (...) {
     fs::remove(first_tmp, ec);
     throw;

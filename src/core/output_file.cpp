@@ -93,36 +93,29 @@ std::string read_file(const fs::path& path) {
   while ((fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC)) < 0 && errno == EINTR)
     throw_if_interrupted("while opening " + quote(path.string()));
   if (fd < 0) throw InputError("cannot read " + quote(path.string()) + ": " + std::strerror(errno));
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
   struct stat st {};
   const bool regular = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
   std::string out;
   if (regular) out.reserve(static_cast<std::size_t>(st.st_size));
+  const std::string reading = "while reading " + quote(path.string());
   char chunk[1 << 16];
   for (;;) {
+    // A signal ends the read whether it interrupted read() or came between two chunks of a file
+    // that never ends (/dev/zero).
+    throw_if_interrupted(reading);
     const ssize_t n = ::read(fd, chunk, sizeof chunk);
-    if (n < 0 && errno == EINTR) {
-      try {
-        throw_if_interrupted("while reading " + quote(path.string()));
-      } catch (...) {
-        ::close(fd);
-        throw;
-      }
-      continue;
-    }
-    if (n < 0) {
-      const int err = errno;
-      ::close(fd);
-      throw InputError("cannot read " + quote(path.string()) + ": " + std::strerror(err));
-    }
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw InputError("cannot read " + quote(path.string()) + ": " + std::strerror(errno));
     if (n == 0) break;
     out.append(chunk, static_cast<std::size_t>(n));
-    if (!regular && out.size() > kMaxStreamBytes) {
-      ::close(fd);
+    if (!regular && out.size() > kMaxStreamBytes)
       throw InputError(quote(path.string()) + " is not a regular file and gave more than " +
                        std::to_string(kMaxStreamBytes >> 20) + " MiB without ending");
-    }
   }
-  ::close(fd);
   return out;
 }
 

@@ -36,6 +36,14 @@ void check_distinct_outputs(const std::vector<std::pair<std::string, fs::path>>&
   }
 }
 
+void check_outputs_spare_inputs(const NamedPaths& outputs, const NamedPaths& inputs) {
+  for (const auto& [output_flag, output] : outputs)
+    for (const auto& [input_flag, input] : inputs)
+      if (!output.empty() && !input.empty() && same_file(output, input))
+        throw InputError(output_flag + " " + quote(output.string()) + " names the same file as its input " + input_flag +
+                         " " + quote(input.string()));
+}
+
 void check_name_length(const fs::path& path, const fs::path& folder) {
   const long name_max = ::pathconf(folder.c_str(), _PC_NAME_MAX), path_max = ::pathconf(folder.c_str(), _PC_PATH_MAX);
   const std::size_t name = path.filename().string().size(), whole = path.string().size();

@@ -42,6 +42,16 @@ class OpenLevels {
   }
   void open(bool object) { levels_.emplace_back().object = object; }
   void close() { levels_.pop_back(); }
+  // The path of the value being read now (a number the parser could not hold): "physics.dt",
+  // "bodies[0].position[1]"; "" at the top.
+  std::string reading() const {
+    if (levels_.empty()) return {};
+    const Level& top = levels_.back();
+    const std::string outer = path();
+    if (!top.object) return outer + "[" + std::to_string(top.index + 1) + "]";
+    if (top.keys.empty()) return outer;
+    return outer + (outer.empty() ? "" : ".") + escaped(top.keys.back());
+  }
 
  private:
   struct Level {
@@ -85,11 +95,17 @@ nlohmann::json parse_json(std::string_view text, const std::string& source) {
     return nlohmann::json::parse(text, callback);
   } catch (const nlohmann::json::exception& e) {
     // nlohmann's message is "[json.exception.parse_error.101] parse error at line 3, column 5: ...";
-    // a number too large for a double ("1e999") is its out_of_range.406, also bad input. It quotes
-    // the text last read, where it writes only bytes below 0x20 out: the rest is made printable here.
+    // a number too large for a double ("1e999") is its out_of_range.406, also bad input, said with
+    // the key it was given for. It quotes the text last read, where it writes only bytes below
+    // 0x20 out: the rest is made printable here.
     std::string what = e.what();
     const auto p = what.find("] ");
-    throw InputError(source + ": invalid JSON: " + printable_line(p == std::string::npos ? what : what.substr(p + 2)));
+    what = printable_line(p == std::string::npos ? what : what.substr(p + 2));
+    if (e.id == 406) {
+      const std::string key = open.reading();
+      throw InputError(source + ": " + (key.empty() ? std::string("the scene") : key) + " is a number beyond a double's range (" + what + ")");
+    }
+    throw InputError(source + ": invalid JSON: " + what);
   }
 }
 

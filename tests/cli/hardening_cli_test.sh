@@ -138,6 +138,69 @@ expect_bad "has 254 bytes" render --steps 1 --size 8x8 --out "$work/$long.png"
 deep=$(cd "$work" && i=0 && while [ $i -lt 80 ]; do mkdir -p "d$(printf '%048d' $i)" && cd "d$(printf '%048d' $i)" || exit 1; i=$((i + 1)); done && pwd)
 expect_bad "bytes is longer than the" simulate --steps 1 --out "$deep/$(printf '%0100d' 0).npy"
 
+# A number the JSON parser cannot hold as a double names its key, as every other number does.
+scene overflow '{"grid": {"rows": 8, "cols": 8}, "physics": {"dt": 1e3080}}'
+expect_bad "physics.dt is a number beyond a double's range" simulate --steps 1 --scene "$work/overflow.json" $out
+scene overflow_array '{"bodies": [{"motion": "floating", "position": [1, -1e999, 2]}]}'
+expect_bad "bodies[0].position[1] is a number beyond" simulate --steps 1 --scene "$work/overflow_array.json" $out
+
+# An output that names the run's own input (however spelt) would overwrite what it reads.
+scene own_input '{"grid": {"rows": 8, "cols": 8}}'
+cp "$work/own_input.json" "$work/own_input.keep"
+expect_bad "--out '$work/./own_input.json' names the same file as its input --scene" \
+  simulate --steps 1 --scene "$work/own_input.json" --out "$work/./own_input.json"
+expect_bad "--bodies-out '$work/own_input.json' names the same file as its input --scene" \
+  simulate --steps 1 --scene "$work/own_input.json" $out --bodies-out "$work/own_input.json"
+cmp -s "$work/own_input.json" "$work/own_input.keep" || fail "the scene named as an output was changed"
+"$pond" simulate --steps 2 --scene "$work/own_input.json" $out --checkpoint "$work/own.ckpt" > /dev/null 2>&1 ||
+  fail "a checkpoint to resume from was not written"
+expect_bad "--out '$work/real_dir/../own.ckpt' names the same file as its input --resume" \
+  simulate --steps 1 --resume "$work/own.ckpt" --out "$work/real_dir/../own.ckpt"
+"$pond" simulate --steps 1 --resume "$work/own.ckpt" --checkpoint "$work/./own.ckpt" $out > /dev/null 2>&1 ||
+  fail "--checkpoint over the --resume file it went on from is refused"
+"$pond" simulate --steps 1 --scene "$work/own_input.json" $out > /dev/null 2>&1 && cp "$work/out.npy" "$work/state.npy"
+expect_bad "--out '$work/state.npy' names the same file as its input --state" \
+  lod --state "$work/state.npy" --eye 4,6,20 --target 4,0,4 --fovy 45 --size 64x64 --tolerance 1 --out "$work/state.npy"
+
+# A signal ends a read that would never end by itself: a file with no end, a FIFO without a writer.
+for input in /dev/zero fifo; do
+  [ "$input" = fifo ] && { rm -f "$work/fifo"; mkfifo "$work/fifo"; input=$work/fifo; }
+  printf 'sentinel\n' > "$work/out.npy"
+  "$pond" simulate --steps 1 --scene "$input" $out > /dev/null 2> "$work/stderr" &
+  pid=$!
+  # Until it blocks there: /dev/zero open (it reads on), or the FIFO's open waiting for a writer.
+  n=0
+  until ls -l /proc/$pid/fd 2> /dev/null | grep -q -- "-> /dev/zero" ||
+        [ "$(cat /proc/$pid/wchan 2> /dev/null)" = wait_for_partner ] || [ $n -ge 500 ]; do
+    n=$((n + 1)); sleep 0.01
+  done
+  kill -INT $pid
+  waited=0
+  while kill -0 $pid 2> /dev/null && [ $waited -lt 50 ]; do sleep 0.1; waited=$((waited + 1)); done
+  if kill -0 $pid 2> /dev/null; then kill -KILL $pid; fail "SIGINT did not end the read of $input within 5 s"; fi
+  wait $pid
+  code=$?
+  [ $code -eq 130 ] && grep -q "interrupted by SIGINT while" "$work/stderr" && [ "$(cat "$work/out.npy")" = sentinel ] ||
+    fail "SIGINT reading $input: exit $code, $(cat "$work/stderr")"
+done
+
+# A file size limit (ulimit -f: SIGXFSZ ignored, the write fails): exit 1, one line naming the
+# output the user asked for, no temporary file, an old output untouched.
+for cmd in simulate tree; do
+  rm -rf "$work/limit" && mkdir -p "$work/limit" && printf 'sentinel\n' > "$work/limit/out.npy"
+  if [ $cmd = simulate ]; then  # the default 50 x 50 pond: 60 kB against a limit of 8 blocks
+    name=new.npy
+    (ulimit -f 8 && "$pond" simulate --steps 1 --out "$work/limit/new.npy") > /dev/null 2> "$work/stderr"
+  else
+    name=t.vertices.npy
+    (ulimit -f 8 && "$pond" tree --depth 8 --seed 1 --out "$work/limit/t") > /dev/null 2> "$work/stderr"
+  fi
+  code=$?
+  [ $code -eq 1 ] && [ "$(wc -l < "$work/stderr")" -eq 1 ] && grep -q "cannot write '$work/limit/$name'" "$work/stderr" ||
+    fail "$cmd under ulimit -f: exit $code, $(cat "$work/stderr")"
+  [ "$(ls "$work/limit")" = out.npy ] || fail "$cmd under ulimit -f left: $(ls "$work/limit" | tr '\n' ' ')"
+done
+
 # The demo's bad input, refused before any window (so without a display): script numbers finite and
 # bounded, control bytes, frame numbers, screenshots that could never be taken, window sizes.
 if "$pond" --version | grep -q "Vulkan headers"; then

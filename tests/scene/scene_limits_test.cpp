@@ -22,6 +22,16 @@ std::string refusal(const std::string& json) {
   return "";
 }
 
+TEST(SceneLimits, ANumberBeyondADoubleIsRefusedWithItsPath) {
+  const auto starts = [](const std::string& text, const std::string& head) { return text.rfind(head, 0) == 0; };
+  EXPECT_TRUE(starts(refusal(R"({"physics": {"dt": 1e3080}})"), "test.json: physics.dt is a number beyond a double's range"));
+  EXPECT_TRUE(starts(refusal(R"({"bodies": [{"motion": "floating", "position": [1, -1e999, 2]}]})"),
+                     "test.json: bodies[0].position[1] is a number beyond"));
+  EXPECT_TRUE(starts(refusal(R"({"grid": {"rows": 10}, "perturbations": [{"row": 1}, {"amplitude": 2e400}]})"),
+                     "test.json: perturbations[1].amplitude is a number beyond"));
+  EXPECT_TRUE(starts(refusal("1e999"), "test.json: the scene is a number beyond"));
+}
+
 TEST(SceneLimits, AKeyGivenTwiceIsRefusedWithItsPath) {
   EXPECT_EQ(refusal(R"({"grid": {"rows": 10, "rows": 20}})"), "test.json: grid.rows is given twice");
   EXPECT_EQ(refusal(R"({"border": "fixed", "grid": {}, "border": "free"})"), "test.json: border is given twice");

@@ -347,6 +347,7 @@ int run_demo(const DemoOptions& options) {
   for (std::size_t k = 0; k < script.screenshots.size(); ++k)
     shots.emplace_back("--script line " + std::to_string(script.screenshot_lines[k]) + ": screenshot", script.screenshots[k]);
   check_distinct_outputs(shots);  // one would overwrite the other
+  check_outputs_spare_inputs(shots, {{"--scene", options.scene}, {"--script", options.script}});
   DemoApp app(options, std::move(scene), std::move(script));
   return app.run();
 }
