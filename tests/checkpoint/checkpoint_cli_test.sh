@@ -5,10 +5,16 @@
 # chain of resumed runs, --checkpoint-every, and a run stopped by SIGINT and resumed. Bad input
 # (a corrupt checkpoint, --scene beside --resume, ...) exits 2 with one line and writes nothing.
 #   checkpoint_cli_test.sh POND WORK SCENE SOLVER...   (SOLVER: scalar, sse, avx2, avx512, gpu, auto)
+# Every other CPU backend this pond has (`pond --version`) is tried too, saving for the first
+# solver given and resuming what that one saved.
 set -u
 pond=$1 work=$2 scene=$3
 shift 3
-solvers=$*
+solvers=$* extras=
+for b in $("$pond" --version | sed -n 's/.*CPU backends \([a-z0-9 ]*\).*/\1/p'); do
+  case " $solvers " in *" $b "*) ;; *) extras="$extras $b" ;; esac
+done
+echo "solvers: $solvers; backends beside them:$extras"
 rm -rf "$work" && mkdir -p "$work" || exit 1
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
@@ -38,8 +44,19 @@ for a in $solvers; do
   done
 done
 
-# A chain: 100, then 50 more saved over the same file, then 150 more.
+# The other backends: uninterrupted, saved and resumed on the first solver, and the other way.
 first=$(echo "$solvers" | cut -d' ' -f1)
+for x in $extras; do
+  run "full_$x" --scene "$scene" --steps 300 --solver "$x" --out "$work/full_$x.npy"
+  [ "$(hash_of "$work/full_$x.out")" = "$expected" ] || fail "uninterrupted on $x: $(hash_of "$work/full_$x.out") != $expected"
+  run "save_$x" --scene "$scene" --steps 120 --solver "$x" --out "$work/part.npy" --checkpoint "$work/$x.ckpt"
+  run "resume_${x}_$first" --resume "$work/$x.ckpt" --steps 180 --solver "$first" --out "$work/r.npy"
+  [ "$(hash_of "$work/resume_${x}_$first.out")" = "$expected" ] || fail "saved on $x, resumed on $first"
+  run "resume_${first}_$x" --resume "$work/$first.ckpt" --steps 180 --solver "$x" --out "$work/r.npy"
+  [ "$(hash_of "$work/resume_${first}_$x.out")" = "$expected" ] || fail "saved on $first, resumed on $x"
+done
+
+# A chain: 100, then 50 more saved over the same file, then 150 more.
 last=$(echo "$solvers" | tr ' ' '\n' | tail -n 1)
 run chain1 --scene "$scene" --steps 100 --solver "$first" --out "$work/c.npy" --checkpoint "$work/chain.ckpt"
 run chain2 --resume "$work/chain.ckpt" --steps 50 --solver "$last" --out "$work/c.npy" --checkpoint "$work/chain.ckpt"
