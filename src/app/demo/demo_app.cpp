@@ -73,12 +73,7 @@ DemoApp::DemoApp(const DemoOptions& options, scene::Scene scene, Script script)
       gpu_(make_gpu_stack(options, window_, options.vsync, [&](const gpu::Context& ctx) {
         return checked_extent(ctx, window_, options, script_);
       })) {
-  settings_.physics = base_scene_.physics;
-  settings_.modes = modes_of(base_scene_);
-  settings_.steps_per_frame = base_scene_.view.steps_per_frame;
-  settings_.lod_tolerance_px = base_scene_.view.lod_tolerance_px;
-  settings_.effects = base_scene_.view.effects;
-  settings_.sun = base_scene_.lighting.sun;
+  adopt_scene_settings();
   settings_.vsync = options.vsync;
   stats_.device = gpu_->ctx.device_name();
   if (!gpu_->swapchain.can_copy_images() && (!options.screenshot.empty() || !script_.screenshots.empty()))
@@ -93,6 +88,15 @@ DemoApp::DemoApp(const DemoOptions& options, scene::Scene scene, Script script)
   camera_.set_home(loop_->default_camera(static_cast<int>(e.width), static_cast<int>(e.height)));
   // Half a spacing above the land, itself above the rest plane: the view stays out of the water.
   camera_.set_lowest_eye(base_scene_.basin.land_height + 0.5 * base_scene_.grid.spacing);
+}
+
+void DemoApp::adopt_scene_settings() {
+  settings_.physics = base_scene_.physics;
+  settings_.modes = modes_of(base_scene_);
+  settings_.steps_per_frame = base_scene_.view.steps_per_frame;
+  settings_.lod_tolerance_px = base_scene_.view.lod_tolerance_px;
+  settings_.effects = base_scene_.view.effects;
+  settings_.sun = base_scene_.lighting.sun;
 }
 
 DemoApp::~DemoApp() {

@@ -70,6 +70,7 @@ class DemoApp final : public ControlTarget {
  private:
   scene::Scene scene_with_settings() const;  // the scene with the demo's modes and edits
   // A session for `scene` on the chosen solver, continuing `image` when given.
+  void adopt_scene_settings();  // the panel's physics, modes, view and sun from base_scene_
   void make_session(const scene::Scene& scene, const sim::SessionImage* image);
   void build_loop();
   void apply_requests(const PanelRequests& req);

@@ -3,7 +3,6 @@
 // "load" / `load FILE` take one back: the water, the bodies and the wind go on from it, on the
 // solver the demo uses now.
 #include "app/demo/demo_app_impl.h"
-#include "app/demo/scene_modes.h"
 #include "scene/checkpoint.h"
 
 namespace pond::app::demo {
@@ -33,12 +32,7 @@ void DemoApp::load_checkpoint(const std::string& path) {
     return;
   }
   base_scene_ = checkpoint.scene;
-  settings_.physics = base_scene_.physics;
-  settings_.modes = modes_of(base_scene_);
-  settings_.steps_per_frame = base_scene_.view.steps_per_frame;
-  settings_.lod_tolerance_px = base_scene_.view.lod_tolerance_px;
-  settings_.effects = base_scene_.view.effects;
-  settings_.sun = base_scene_.lighting.sun;
+  adopt_scene_settings();
   grab_ = BodyGrab{};
   if (loop_) loop_->wait_idle();
   bodies_.reset();
