@@ -112,7 +112,10 @@ struct ShapeTables {
   std::vector<ShapeTable> shapes;
 };
 constexpr int kPitches = 4;
-inline thread_local ShapeTables shape_tables[kPitches];
+// Internal to each file that includes this (each copy of the scan has its own, in its own ISA
+// namespace): an inline variable's thread_local is reached through a TLS wrapper call on every
+// lookup, in the scan's hot path.
+static thread_local ShapeTables shape_tables[kPitches];
 
 // shape_table()'s other cases: `pitch` not the most recent one, or the shape not yet tabled.
 // Out of line, so the common lookup stays a few instructions inlined into the scan.
