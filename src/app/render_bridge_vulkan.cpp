@@ -85,6 +85,12 @@ void print_pass_times(const render::PassTimestamps& timestamps, const std::vecto
     std::printf("GPU pass times: none, the device has no timestamps (%s)\n", timestamps.unsupported_reason().c_str());
     return;
   }
+  bool any = false;
+  for (const std::vector<double>& times : pass_ms) any = any || !times.empty();
+  if (!any) {  // the frames' queries are read when their slot comes round again: too few frames
+    std::printf("GPU pass times: none read back yet (give --frames 3 or more)\n");
+    return;
+  }
   std::printf("GPU pass times (timestamp queries, medians):");
   for (std::size_t p = 0; p < pass_ms.size(); ++p)
     if (!pass_ms[p].empty())

@@ -38,6 +38,11 @@ done
   fail "--profile: $(cat "$work/stderr")"
 [ "$(grep -c "^effect " "$work/stdout")" -eq 4 ] || fail "--profile: not four effects: $(cat "$work/stdout")"
 if grep "^effect " "$work/stdout" | grep -q ": -"; then fail "--profile printed a negative cost: $(cat "$work/stdout")"; fi
+# Two frames read no pass time back (each slot's queries are read when it comes round again): said,
+# not an empty heading.
+grep -q "^GPU pass times: none read back yet" "$work/stdout" ||
+  grep -q "^GPU pass times: none, the device has no timestamps" "$work/stdout" ||
+  fail "--profile --frames 2: the pass times line: $(grep "GPU pass" "$work/stdout")"
 
 if [ $failures -eq 0 ]; then echo "all hardening render cases passed"; exit 0; fi
 exit 1
