@@ -224,6 +224,10 @@ if "$pond" --version | grep -q "Vulkan headers"; then
     demo --frames 10 --script "$work/late.script"
   expect_bad "--screenshot must name a file" demo --frames 3 --screenshot ""
   expect_bad "--screenshot must name a file" --frames 3 --screenshot ""
+  script nodir "frame 1 screenshot $work/no_dir/s.png\n"
+  expect_bad "nodir.script line 1: screenshot: output folder '$work/no_dir' does not exist" demo --frames 3 --script "$work/nodir.script"
+  script nodir_save "frame 0 key H\nframe 1 save $work/no_dir/s.ckpt\n"
+  expect_bad "nodir_save.script line 2: save: output folder '$work/no_dir' does not exist" demo --frames 3 --script "$work/nodir_save.script"
   expect_bad "--screenshot saves the last frame of --frames N: give --frames" demo --screenshot "$work/s.png"
   expect_bad "--size 65536x1: a window takes at most 32767 pixels a side" demo --frames 3 --size 65536x1
   # The demo's outputs by what they name: two script screenshots, a script's and --screenshot.

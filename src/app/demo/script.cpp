@@ -82,6 +82,16 @@ class LineParser {
 
 using Kind = InputEvent::Kind;
 
+// An output a script line names, checked as every output is (a folder that is not there, a name
+// too long), the refusal naming the line.
+void checked_output(const LineParser& p, const char* verb, const std::string& file) {
+  try {
+    check_output_path(file);
+  } catch (const InputError& e) {
+    p.fail(std::string(verb) + ": " + e.what());
+  }
+}
+
 // The words of `line`, up to a word starting with # (a comment); InputError for a control byte
 // (a NUL, an escape), which no script word holds.
 std::vector<std::string> words_of(const std::string& line, const std::string& source, int number) {
@@ -199,13 +209,13 @@ Script parse_script(const std::string& text, const std::string& source) {
       add({.kind = Kind::restore});
     } else if (verb == "screenshot") {
       const std::string file = p.word("file name");
-      check_output_path(file);
+      checked_output(p, "screenshot", file);
       script.screenshots.push_back(file);
       script.screenshot_lines.push_back(number);
       add({.kind = Kind::screenshot, .screenshot = static_cast<int>(script.screenshots.size() - 1)});
     } else if (verb == "save" || verb == "load") {
       const std::string file = p.word("file name");
-      if (verb == "save") check_output_path(file);
+      if (verb == "save") checked_output(p, "save", file);
       script.checkpoints.push_back(file);
       add({.kind = verb == "save" ? Kind::save : Kind::load,
            .screenshot = static_cast<int>(script.checkpoints.size() - 1)});
