@@ -41,7 +41,7 @@ class CommandLine {
         if (quiet) return {nullptr, 0};
         return {nullptr, app_.exit(e)};
       }
-      if (!quiet) std::fprintf(stderr, "pond: %s\n", printable_line(e.what()).c_str());  // quotes argv as typed
+      if (!quiet) std::fprintf(stderr, "pond: %s\n", printable_line(in_our_words(e.what())).c_str());  // quotes argv as typed
       return {nullptr, 2};
     }
     for (const Command& c : commands_)
@@ -50,6 +50,15 @@ class CommandLine {
   }
 
  private:
+  // CLI11's message for an option given twice ("--size: At Most 1 required but received 2") in
+  // pond's words; every other message as it is.
+  static std::string in_our_words(std::string what) {
+    const std::string at_most = ": At Most 1 required but received ";
+    if (const auto k = what.find(at_most); k != std::string::npos)
+      return what.substr(0, k) + " is given " + what.substr(k + at_most.size()) + " times; give it once";
+    return what;
+  }
+
   CLI::App app_{"pond: a spring-mass water surface and a tree in the wind, on Vulkan compute", "pond"};
   std::vector<Command> commands_;
 };

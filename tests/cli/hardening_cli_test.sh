@@ -138,6 +138,9 @@ expect_bad "has 254 bytes" render --steps 1 --size 8x8 --out "$work/$long.png"
 deep=$(cd "$work" && i=0 && while [ $i -lt 80 ]; do mkdir -p "d$(printf '%048d' $i)" && cd "d$(printf '%048d' $i)" || exit 1; i=$((i + 1)); done && pwd)
 expect_bad "bytes is longer than the" simulate --steps 1 --out "$deep/$(printf '%0100d' 0).npy"
 
+# A flag given twice, in pond's words.
+expect_bad "--steps is given 2 times; give it once" simulate --steps 1 --steps 2 $out
+
 # A number the JSON parser cannot hold as a double names its key, as every other number does.
 scene overflow '{"grid": {"rows": 8, "cols": 8}, "physics": {"dt": 1e3080}}'
 expect_bad "physics.dt is a number beyond a double's range" simulate --steps 1 --scene "$work/overflow.json" $out
