@@ -15,7 +15,7 @@
 #include "gpu/context.h"
 #include "gpu/gpu_solver.h"
 #include "gpu/headless.h"
-#include "scene/scene.h"
+#include "app/bench/workloads.h"
 #include "sim/contact.h"
 #include "sim/cpu_solver.h"
 
@@ -23,36 +23,8 @@ namespace {
 
 using namespace pond;
 
-// The demo's grid: an island, a splash, and `count` bodies when count > 0: two spheres dragged
-// across, the rest floating balls of radius 2 to 3 and densities 0.3 to 0.9 in rows of 8 across
-// the pond, neighbours heading at each other (they collide within some 50 steps, then drift on the
-// waves). 64 is a scene's most.
-sim::WaterModel pond_257(int count) {
-  scene::Scene s;
-  s.grid.rows = s.grid.cols = 257;
-  s.physics.rest_ratio = 0.95;
-  s.constraints.push_back({sim::NodeKind::fixed, 60, 80, 150, 175});
-  s.perturbations.push_back({.step = 0, .row = 128, .col = 90, .radius = 4, .amplitude = 1,
-                             .target = sim::PerturbTarget::velocity, .mode = sim::PerturbMode::add});
-  if (count == 0) return sim::build_model(s);
-  for (int k = 0; k < 2; ++k) {
-    sim::BodySpec b;
-    b.motion = sim::BodyMotion::kinematic;
-    b.radius = 3.0;
-    b.path = {{0, {20.0, 0.5, 30.0 + 50 * k}}, {4000, {236.0, 0.5, 40.0 + 50 * k}}};
-    s.bodies.push_back(b);
-  }
-  for (int k = 0; k < count - 2; ++k) {
-    const int col = k % 8, row = k / 8;
-    sim::BodySpec b;
-    b.radius = 2.0 + 0.125 * (k % 9);
-    b.density = 0.3 + 0.075 * (k % 9);
-    b.position = {24.0 + 26 * col, col % 3 == 0 ? 3.5 : 0.0, 100.0 + 18 * row};
-    b.velocity = {col % 2 == 0 ? 0.5 : -0.5, 0.0, 0.05 * (row % 3 - 1)};
-    s.bodies.push_back(b);
-  }
-  return sim::build_model(s);
-}
+// The demo's grid with `count` bodies: pond bench's workload (app/bench/workloads.h).
+sim::WaterModel pond_257(int count) { return bench::bodies_model(257, count); }
 
 const gpu::Context& context() {
   static const std::unique_ptr<gpu::Context> ctx = [] {

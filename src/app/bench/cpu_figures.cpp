@@ -86,10 +86,11 @@ void measure_lod(const Plan& plan, Progress& progress, Report& report) {
     lod::LodBuilder builder(side, side);
     std::vector<std::uint32_t> out(builder.max_indices());
     const lod::Camera camera = rain_camera(side);
-    // Each sample: the mean of a batch of builds lasting about 20 ms (at least one).
+    // Each sample: the mean of a batch of builds of at least kBatchSeconds together (at least one).
+    constexpr double kBatchSeconds = 0.02;
     auto t0 = Clock::now();
     std::size_t indices = builder.build(positions, ranges, camera, 1.0, out);
-    const int batch = std::max(1, static_cast<int>(0.02 / std::max(seconds_since(t0), 1e-6)));
+    const int batch = std::max(1, static_cast<int>(kBatchSeconds / std::max(seconds_since(t0), 1e-6)));
     Figure f = make_figure("lod." + std::to_string(side), "LOD build, rain, " + grid_text(side) + ", 1280x720, 1 px, 1 thread", "ms", false);
     for (int r = 0; r < 2 * plan.repeats() - 1; ++r) {  // builds are short: more samples
       t0 = Clock::now();

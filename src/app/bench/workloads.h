@@ -23,7 +23,7 @@ std::vector<float> rain_state(int side);
 lod::Camera rain_camera(int side);
 
 // The demo's grid at `side` (257 in the full run): an island, a splash and `bodies` bodies (two
-// spheres dragged across, the rest floating balls), as bench/gpu's bench_bodies builds it.
+// spheres dragged across, the rest floating balls); bench/gpu's bench_bodies measures it too.
 sim::WaterModel bodies_model(int side, int bodies);
 
 }  // namespace pond::bench
