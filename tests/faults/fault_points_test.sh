@@ -73,20 +73,17 @@ judge() {  # judge NAME WHAT: the outcome of attempt NAME
 }
 
 # Every fault point must be reached: a run makes the same calls each time.
-n=1
-while [ $n -le "$submits" ]; do
-  attempt "lost$n" "device-lost@submit:$n"
-  judge "lost$n" "device lost at submit $n of $submits"
-  grep -q "fault injected" "$work/lost$n.err" || fail "device lost at submit $n of $submits: the fault never came"
-  n=$((n + 1))
-done
-n=1
-while [ $n -le "$allocations" ]; do
-  attempt "oodm$n" "out-of-device-memory@allocate:$n"
-  judge "oodm$n" "out of device memory at allocation $n of $allocations"
-  grep -q "fault injected" "$work/oodm$n.err" || fail "out of memory at allocation $n of $allocations: the fault never came"
-  n=$((n + 1))
-done
+every_point() {  # every_point NAME FAULT@POINT LAST WHAT: the fault at each point 1 .. LAST
+  n=1
+  while [ $n -le "$3" ]; do
+    attempt "$1$n" "$2:$n"
+    judge "$1$n" "$4 $n of $3"
+    grep -q "fault injected" "$work/$1$n.err" || fail "$4 $n of $3: the fault never came"
+    n=$((n + 1))
+  done
+}
+every_point lost device-lost@submit "$submits" "device lost at submit"
+every_point oodm out-of-device-memory@allocate "$allocations" "out of device memory at allocation"
 for n in 1 $(( (allocations + 1) / 2 )) "$allocations"; do
   attempt "oohm$n" "out-of-host-memory@allocate:$n"
   judge "oohm$n" "out of host memory at allocation $n of $allocations"
