@@ -66,15 +66,7 @@ fs::path partial(const fs::path& path) {
 
 // Writes `bytes` to `path`'s partial name; a failure names `path`, the file the user asked for.
 void write_partial(const fs::path& path, std::span<const std::byte> bytes) {
-  const fs::path tmp = partial(path);
-  try {
-    write_file_atomic(tmp, bytes);
-  } catch (const RuntimeError& e) {
-    std::string what = e.what();
-    const std::string named = quote(tmp.string());
-    if (const auto at = what.find(named); at != std::string::npos) what.replace(at, named.size(), quote(path.string()));
-    throw RuntimeError(what);
-  }
+  write_file_atomic(partial(path), bytes, path);
 }
 
 void write_pair(const fs::path& first, std::span<const std::byte> first_bytes, const fs::path& second,

@@ -57,14 +57,15 @@ int write_all(const fs::path& target, std::span<const std::byte> bytes) {
 }
 }  // namespace
 
-void write_file_atomic(const fs::path& path, std::span<const std::byte> bytes) {
+void write_file_atomic(const fs::path& path, std::span<const std::byte> bytes, const fs::path& shown_as) {
   check_output_path(path);
+  const std::string name = quote((shown_as.empty() ? path : shown_as).string());
   std::error_code ec;
   if (fs::exists(path, ec) && !fs::is_regular_file(path, ec)) {
     // A device or pipe (/dev/stdout, /dev/full): there is nothing to clobber and renaming over it
     // would replace the device node, so write straight into it.
     if (int err = write_all(path, bytes))
-      throw RuntimeError("cannot write " + quote(path.string()) + ": " + std::strerror(err));
+      throw RuntimeError("cannot write " + name + ": " + std::strerror(err));
     return;
   }
   // The temporary name carries the pid so that two pond processes never share one.
@@ -74,12 +75,12 @@ void write_file_atomic(const fs::path& path, std::span<const std::byte> bytes) {
   if (int err = write_all(tmp, bytes)) {
     std::remove(tmp.c_str());
     set_temporary_file(nullptr);
-    throw RuntimeError("cannot write " + quote(path.string()) + ": " + std::strerror(err));
+    throw RuntimeError("cannot write " + name + ": " + std::strerror(err));
   }
   fs::rename(tmp, path, ec);
   if (ec) std::remove(tmp.c_str());
   set_temporary_file(nullptr);
-  if (ec) throw RuntimeError("cannot write " + quote(path.string()) + ": " + ec.message());
+  if (ec) throw RuntimeError("cannot write " + name + ": " + ec.message());
   count_file_written();
 }
 

@@ -15,8 +15,11 @@ namespace pond {
 // when writing fails.
 void check_output_path(const std::filesystem::path& path);
 
-// Atomically replaces `path` with `bytes`. Throws RuntimeError on failure; the target is untouched.
-void write_file_atomic(const std::filesystem::path& path, std::span<const std::byte> bytes);
+// Atomically replaces `path` with `bytes`. Throws RuntimeError on failure, naming `shown_as` when
+// given (a temporary file written for a later rename: its messages name the file asked for); the
+// target is untouched.
+void write_file_atomic(const std::filesystem::path& path, std::span<const std::byte> bytes,
+                       const std::filesystem::path& shown_as = {});
 
 std::string read_file(const std::filesystem::path& path);  // InputError when missing or unreadable
 
