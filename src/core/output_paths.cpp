@@ -24,7 +24,7 @@ bool same_file(const fs::path& a, const fs::path& b) {
   return place(a) == place(b);
 }
 
-void check_distinct_outputs(const std::vector<std::pair<std::string, fs::path>>& outputs) {
+void check_distinct_outputs(const NamedPaths& outputs) {
   std::vector<const std::pair<std::string, fs::path>*> seen;
   for (const auto& output : outputs) {
     if (output.second.empty()) continue;

@@ -13,13 +13,15 @@ namespace pond {
 // folder and its target).
 bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
 
+// Paths each with the option (or script line) that names it, for the messages.
+using NamedPaths = std::vector<std::pair<std::string, std::filesystem::path>>;
+
 // Throws InputError "OPTION_B names the same file as OPTION_A (PATH)" for the first two of
 // `outputs` (option, path) that name the same file; empty paths are skipped.
-void check_distinct_outputs(const std::vector<std::pair<std::string, std::filesystem::path>>& outputs);
+void check_distinct_outputs(const NamedPaths& outputs);
 
 // Throws InputError "OUTPUT PATH names the same file as its input INPUT (PATH)" for the first of
 // `outputs` that names one of `inputs` (a run would overwrite what it reads); empty paths skipped.
-using NamedPaths = std::vector<std::pair<std::string, std::filesystem::path>>;
 void check_outputs_spare_inputs(const NamedPaths& outputs, const NamedPaths& inputs);
 
 // Bytes an output's file name keeps free for the temporary names written first (".tmp.PID",

@@ -347,7 +347,7 @@ int run_demo(const DemoOptions& options) {
     throw InputError("--size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
                      ": a window takes at most " + std::to_string(kMaxWindowSide) + " pixels a side (X11's coordinates)");
   if (!options.screenshot.empty()) check_output_path(options.screenshot);
-  std::vector<std::pair<std::string, std::filesystem::path>> shots{{"--screenshot", options.screenshot}};
+  NamedPaths shots{{"--screenshot", options.screenshot}};
   for (std::size_t k = 0; k < script.screenshots.size(); ++k)
     shots.emplace_back("--script line " + std::to_string(script.screenshot_lines[k]) + ": screenshot", script.screenshots[k]);
   check_distinct_outputs(shots);  // one would overwrite the other
