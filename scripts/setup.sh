@@ -18,6 +18,9 @@ packages=(
   # Debian's arm64 runtime, beside the native one (multiarch): the arm64 tests run on it under
   # qemu-aarch64, and the arm64 .deb's Depends come from its symbols files (dpkg-shlibdeps).
   libc6:arm64 libstdc++6:arm64 libgcc-s1:arm64
+  # The arm64-gpu preset (cmake/Aarch64GpuToolchain.cmake): arm64 Vulkan loader, GLFW and ImGui to
+  # link, and arm64 lavapipe and validation layer for its pond under qemu-aarch64.
+  libvulkan-dev:arm64 libglfw3-dev:arm64 libimgui-dev:arm64 mesa-vulkan-drivers:arm64 vulkan-validationlayers:arm64
   gnuplot-nox
   clang-14 libclang-rt-14-dev  # scripts/fuzz.sh: libFuzzer and clang's ASan/UBSan runtimes
   dpkg-dev file  # cpack -G DEB (tests/install): dpkg-shlibdeps computes Depends; CPack finds ELF files with `file`

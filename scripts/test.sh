@@ -5,7 +5,8 @@
 # (FUZZ_SECONDS, default 10 here; scripts/fuzz.sh); the GPU solver's tests (context, float policy,
 # SPIR-V checks, a tenth of the parity suite's steps) under ASan + UBSan too; the GPU tests under
 # the discrete-GPU test layer (both denormal settings); the aarch64 build's tests under qemu-aarch64;
-# then the release tests.
+# the aarch64 Vulkan build's `pond check` and `pond render` on Debian's arm64 lavapipe under
+# qemu-aarch64; then the release tests.
 # The soak (label soak, ~12 min) is left out: scripts/soak.sh runs it. Exits non-zero on the first
 # failure.
 set -euo pipefail
@@ -61,6 +62,38 @@ stage "arm64 build and tests under qemu-aarch64"
 cmake --preset arm64 -DPOND_HOST_PARITY_HASHES="$PWD/build/tests/sim/parity_hashes"
 cmake --build --preset arm64 -j "$jobs"
 ctest --preset arm64 -j "$jobs"
+
+# The aarch64 build with Vulkan (the arm64-gpu preset: pond only) on Debian's arm64 lavapipe under
+# qemu-aarch64, with the arm64 validation layer: `pond check`'s cases, shortened, bit-identical to
+# the CPU; one small `pond render --validation`, the pond right side up (png_probe from the release
+# build). The submerged effect is off: arm64 llvmpipe aborts compiling its shader (docs/water.md).
+stage "arm64 Vulkan build, pond check and render under qemu-aarch64"
+cmake --preset arm64-gpu
+cmake --build --preset arm64-gpu -j "$jobs"
+arm_gpu=$PWD/build-arm64-gpu/ci
+mkdir -p "$arm_gpu"
+arm_pond() { MESA_SHADER_CACHE_DIR="$arm_gpu/mesa-shader-cache" qemu-aarch64 build-arm64-gpu/src/app/pond "$@"; }
+arm_fail() { echo "scripts/test.sh: arm64 Vulkan: $1" >&2; exit 1; }
+# `pond check` has no --validation: the layer goes in by the loader, set as --validation sets it
+# (warnings and errors, synchronization validation), and prints its messages to stdout.
+printf 'khronos_validation.report_flags = error,warn\n' > "$arm_gpu/vk_layer_settings.txt"
+VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation VK_LAYER_SETTINGS_PATH="$arm_gpu/vk_layer_settings.txt" \
+  VK_LAYER_ENABLES=VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT \
+  arm_pond check --steps 200 2>&1 | tee "$arm_gpu/check.out" || arm_fail "pond check: exit $?"
+grep -Eq "^all [0-9]+ cases bit-identical$" "$arm_gpu/check.out" || arm_fail "pond check: not all cases bit-identical"
+if grep -Eqi "validation|VUID" "$arm_gpu/check.out"; then arm_fail "pond check: validation messages"; fi
+cat > "$arm_gpu/scene.json" << 'EOF'
+{"grid": {"rows": 50, "cols": 50, "spacing": 1.0},
+ "physics": {"mass": 4.0, "stiffness": 7.0, "damping": 0.05, "dt": 0.4},
+ "border": "fixed", "constraints": [{"kind": "fixed", "rows": [30, 35], "cols": [30, 36]}],
+ "perturbations": [{"step": 0, "row": 18, "col": 20, "radius": 2.0, "amplitude": 1.0,
+                    "target": "velocity", "mode": "add"}],
+ "view": {"submerged": false}}
+EOF
+rm -f "$arm_gpu/frame.png"
+arm_pond render --scene "$arm_gpu/scene.json" --steps 20 --size 64x48 --out "$arm_gpu/frame.png" --validation ||
+  arm_fail "pond render: exit $?"
+build/tests/demo/png_probe pond "$arm_gpu/frame.png" || arm_fail "pond render: not the pond right side up"
 
 # Last, so its summary closes the output.
 stage "release tests"
