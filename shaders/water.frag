@@ -23,7 +23,7 @@
 layout(early_fragment_tests) in;
 
 layout(location = 0) in vec3 in_world;
-layout(location = 1) in vec3 in_normal;
+layout(location = 1) in vec4 in_normal;  // w: the foam's cover (render/foam_pass.h)
 // The frame's constants (water.vert; not the uniform block, see shared/water_render.h).
 layout(location = POND_WATER_FLAT_EYE) flat in vec4 in_eye;  // xyz: camera; w: POND_FLAT_INV_SPACING
 layout(location = POND_WATER_FLAT_SUN) flat in vec4 in_sun;  // xyz: to the sun; w: POND_FLAT_FLOOR_DEPTH
@@ -59,6 +59,15 @@ vec3 floor_color(vec2 xz) {
   const vec2 p = xz * POND_FLAT_INV_SPACING(in_eye);  // world -> grid units
   const float ripple = tri(p.x * 0.21 + 0.27 * tri(p.y * 0.07)) * tri(p.y * 0.17 + 0.21 * tri(p.x * 0.06));
   return in_ground.rgb * (0.85 + 0.15 * ripple);
+}
+
+// Foam's texture at a world point, in [0, 1]: soft blotches several cells across (triangle waves
+// bent by others, as the floor's ripples, at periods that do not repeat together).
+float foam_patches(vec2 xz) {
+  const vec2 p = xz * POND_FLAT_INV_SPACING(in_eye);
+  const float a = tri(p.x * 0.083 + 0.8 * tri(p.y * 0.061)) * tri(p.y * 0.097 + 0.8 * tri(p.x * 0.053));
+  const float b = tri((p.x + p.y) * 0.131 + 0.7 * tri((p.x - p.y) * 0.071));
+  return clamp(0.5 + 0.3 * a + 0.2 * b, 0.0, 1.0);
 }
 
 // The rim's wall under water at a world point: tiles a grid unit square with dark grout lines.
@@ -144,7 +153,7 @@ vec2 water_sun_light(vec3 hit) {
 }
 
 void main() {
-  vec3 n = normalize(in_normal);
+  vec3 n = normalize(in_normal.xyz);
   const vec3 v = normalize(in_eye.xyz - in_world);
   if (!gl_FrontFacing && dot(n, v) < 0.0) n = -n;  // folded wave crests seen from below
   const vec3 l = in_sun.xyz;
@@ -193,5 +202,9 @@ void main() {
   spec *= 3.0 * sun.x;
 
   vec3 color = mix(seen_through, reflected, fresnel) + spec * vec3(1.0, 0.95, 0.85) * fresnel * 4.0;
+  // Foam on top, a rough white lit by the sky and the sun: thin foam shows as patches, thick foam
+  // covers (no foam: the colour as is).
+  const vec3 foam = vec3(0.92, 0.94, 0.95) * (0.45 + 0.55 * diffuse * sun.x);
+  color = mix(color, foam, clamp(in_normal.w * (0.2 + 1.6 * foam_patches(in_world.xz)), 0.0, 1.0));
   out_color = finish_color(color);
 }

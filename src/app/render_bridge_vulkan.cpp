@@ -46,12 +46,7 @@ void print_effect_costs(render::FrameLoop& loop, const render::RenderTarget& tar
   if (frames < 2) return;
   const int pairs = std::min(frames, 40);
   view.wait = true;
-  struct Effect {
-    const char* name;
-    bool view::Effects::*flag;
-  };
-  for (const Effect e : {Effect{"reflections", &view::Effects::reflections}, Effect{"caustics", &view::Effects::caustics},
-                         Effect{"shadows", &view::Effects::shadows}, Effect{"submerged", &view::Effects::submerged}}) {
+  for (const view::EffectEntry& e : view::kEffects) {
     if (!(view.effects.*e.flag)) continue;
     // A frame of a configuration never drawn before also builds what it needs (lavapipe compiles
     // pipelines for tens of milliseconds): one untimed frame of each first, or with few pairs the
@@ -73,7 +68,7 @@ void print_effect_costs(render::FrameLoop& loop, const render::RenderTarget& tar
     const double cost = median(on) - median(off);
     char what[48] = "no cost above the noise";
     if (cost >= 0) std::snprintf(what, sizeof what, "%.3f ms per frame", cost);
-    std::printf("effect %s: %s (with %.3f, without %.3f; medians of %d alternated frozen frames)\n", e.name, what,
+    std::printf("effect %s: %s (with %.3f, without %.3f; medians of %d alternated frozen frames)\n", e.key, what,
                 median(on), median(off), pairs);
   }
 }

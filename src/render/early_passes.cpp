@@ -1,54 +1,73 @@
 #include "render/early_passes.h"
 
-#include "render/barrier_batch.h"
+#include <array>
+
+#include "render/frame_pass.h"
 #include "render/shadow_pass.h"
 #include "render/submerged_pass.h"
 
 namespace pond::render {
 namespace {
-using S = vk::PipelineStageFlagBits2;
-using A = vk::AccessFlagBits2;
-}  // namespace
 
-void record_early_passes(const vk::raii::CommandBuffer& cmd, const FrameContext& frame, const CausticsPass& caustics,
-                         const shared::caustics::CausticsPush& caustics_push) {
-  FrameData& d = frame.data;
-  const view::FramePlan& plan = frame.plan;
-  const FrameInfo info = frame.info(cmd);
-  // Before: the solver's writes (compute, and transfers of uploads) -> the vertex shader (this
-  // pass's and the main one's, later in submission order) and the caustics' reads; each image to
-  // the layout it is written in.
-  BarrierBatch batch;
-  batch.memory.push_back({.srcStageMask = S::eComputeShader | S::eTransfer,
-                          .srcAccessMask = A::eShaderWrite | A::eTransferWrite,
-                          .dstStageMask = S::eVertexShader | S::eVertexAttributeInput | S::eComputeShader,
-                          .dstAccessMask = A::eShaderRead | A::eVertexAttributeRead});
-  if (plan.caustics) batch.images.push_back(caustics.begin_barrier(frame.slot));
-  if (plan.shadow) batch.images.push_back(shadow_pass_begin(d.shadow));
-  if (plan.reflection)
-    for (const vk::ImageMemoryBarrier2& b : layer_pass_begin(d.reflection)) batch.images.push_back(b);
-  if (plan.submerged)
-    for (const vk::ImageMemoryBarrier2& b : layer_pass_begin(d.submerged)) batch.images.push_back(b);
-  batch.record(cmd);
+using L = vk::ImageLayout;
 
-  if (plan.caustics) {
-    const PassTimestamps::Scope timed = frame.timestamps.scope(cmd, frame.slot, TimedPass::caustics);
-    caustics.record_dispatch(cmd, frame.slot, caustics_push);
+// A layer's two images written by a pass that draws into them (render/layer_target.h): the colour
+// read by the water's fragment shader after it, the depth scratch.
+void declare_layer(const LayerTarget& t, PassDeclaration& d) {
+  d.writes.push_back({.image = *t.color.image, .layout = L::eColorAttachmentOptimal, .stages = S2::eColorAttachmentOutput,
+                      .access = A2::eColorAttachmentWrite | A2::eColorAttachmentRead});
+  d.writes.push_back({.image = *t.depth.image, .aspect = vk::ImageAspectFlagBits::eDepth,
+                      .layout = L::eDepthAttachmentOptimal, .stages = S2::eEarlyFragmentTests | S2::eLateFragmentTests,
+                      .access = A2::eDepthStencilAttachmentRead | A2::eDepthStencilAttachmentWrite, .scratch = true});
+}
+
+class Caustics final : public FramePass {
+ public:
+  Caustics(const CausticsPass& pass, const shared::caustics::CausticsPush& push) : pass_(pass), push_(push) {}
+  TimedPass timed() const override { return TimedPass::caustics; }
+  bool enabled(const FrameContext& frame) const override { return frame.plan.caustics; }
+  void declare(const FrameContext& frame, PassDeclaration& d) override {
+    d.writes.push_back({.image = *pass_.map(frame.slot).image, .layout = L::eGeneral, .stages = S2::eComputeShader,
+                        .access = A2::eShaderStorageWrite});
   }
-  if (plan.shadow) {
-    const PassTimestamps::Scope timed = frame.timestamps.scope(cmd, frame.slot, TimedPass::shadow);
-    FrameInfo sun = info;
-    sun.view_proj = plan.shadow->clip.data();
-    sun.extent = d.shadow.extent;
-    record_shadow_pass(cmd, d.shadow, [&] {
+  void record(const vk::raii::CommandBuffer& cmd, const FrameContext& frame) override {
+    pass_.record_dispatch(cmd, frame.slot, push_);
+  }
+
+ private:
+  const CausticsPass& pass_;
+  const shared::caustics::CausticsPush& push_;
+};
+
+class Shadow final : public FramePass {
+ public:
+  TimedPass timed() const override { return TimedPass::shadow; }
+  bool enabled(const FrameContext& frame) const override { return frame.plan.shadow.has_value(); }
+  void declare(const FrameContext& frame, PassDeclaration& d) override {
+    d.writes.push_back({.image = *frame.data.shadow.image, .aspect = vk::ImageAspectFlagBits::eDepth,
+                        .layout = L::eDepthAttachmentOptimal, .stages = S2::eEarlyFragmentTests | S2::eLateFragmentTests,
+                        .access = A2::eDepthStencilAttachmentRead | A2::eDepthStencilAttachmentWrite});
+  }
+  void record(const vk::raii::CommandBuffer& cmd, const FrameContext& frame) override {
+    FrameInfo sun = frame.info(cmd);
+    sun.view_proj = frame.plan.shadow->clip.data();
+    sun.extent = frame.data.shadow.extent;
+    record_shadow_pass(cmd, frame.data.shadow, [&] {
       for (PassDrawable* p : frame.drawables) p->draw_shadow(sun);
     });
   }
-  if (plan.reflection) {
-    const PassTimestamps::Scope timed = frame.timestamps.scope(cmd, frame.slot, TimedPass::reflection);
-    FrameInfo mirrored = info;
+};
+
+class Reflection final : public FramePass {
+ public:
+  TimedPass timed() const override { return TimedPass::reflection; }
+  bool enabled(const FrameContext& frame) const override { return frame.plan.reflection; }
+  void declare(const FrameContext& frame, PassDeclaration& d) override { declare_layer(frame.data.reflection, d); }
+  void record(const vk::raii::CommandBuffer& cmd, const FrameContext& frame) override {
+    const FrameData& d = frame.data;
+    FrameInfo mirrored = frame.info(cmd);
     mirrored.extent = d.reflection.color.extent;
-    mirrored.pixel_scale = static_cast<float>(mirrored.extent.height) / static_cast<float>(info.extent.height);
+    mirrored.pixel_scale = static_cast<float>(mirrored.extent.height) / static_cast<float>(frame.base.extent.height);
     record_layer_pass(cmd, d.reflection, [&] {
       cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *frame.pipes.layout, 0, *d.set, nullptr);
       cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *frame.pipes.land_mirror);
@@ -57,23 +76,41 @@ void record_early_passes(const vk::raii::CommandBuffer& cmd, const FrameContext&
       for (PassDrawable* p : frame.drawables) p->draw_reflected(mirrored);
     });
   }
-  if (plan.submerged) {
-    const PassTimestamps::Scope timed = frame.timestamps.scope(cmd, frame.slot, TimedPass::submerged);
-    record_layer_pass(cmd, d.submerged, [&] {
-      cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *frame.pipes.layout, 0, *d.set, nullptr);
+};
+
+class Submerged final : public FramePass {
+ public:
+  TimedPass timed() const override { return TimedPass::submerged; }
+  bool enabled(const FrameContext& frame) const override { return frame.plan.submerged; }
+  void declare(const FrameContext& frame, PassDeclaration& d) override { declare_layer(frame.data.submerged, d); }
+  void record(const vk::raii::CommandBuffer& cmd, const FrameContext& frame) override {
+    const FrameInfo info = frame.info(cmd);
+    record_layer_pass(cmd, frame.data.submerged, [&] {
+      cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *frame.pipes.layout, 0, *frame.data.set, nullptr);
       cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *frame.pipes.land_submerged);
       frame.geometry.draw_submerged(cmd);
       for (PassDrawable* p : frame.drawables) p->draw_submerged(info);
     });
   }
-  // After: what they wrote to shader-read for the main pass's fragment shaders (a frame without
-  // shadows or without the submerged layer still puts the map or the layer, which every water.frag
-  // declares, in that layout).
-  if (plan.caustics) batch.images.push_back(caustics.end_barrier(frame.slot));
-  batch.images.push_back(plan.shadow ? shadow_pass_end(d.shadow) : shadow_map_unused(d.shadow));
-  if (plan.reflection) batch.images.push_back(layer_pass_end(d.reflection));  // read only by water_reflect.frag
-  batch.images.push_back(plan.submerged ? layer_pass_end(d.submerged) : layer_unused(d.submerged));
-  batch.record(cmd);
+};
+
+}  // namespace
+
+void record_early_passes(const vk::raii::CommandBuffer& cmd, const FrameContext& frame, const CausticsPass& caustics,
+                         FoamPass& foam, const shared::caustics::CausticsPush& caustics_push) {
+  Caustics caustics_pass(caustics, caustics_push);
+  Shadow shadow;
+  Reflection reflection;
+  Submerged submerged;
+  FramePass* const passes[] = {&caustics_pass, &foam, &shadow, &reflection, &submerged};
+  // The solver's writes (compute, and transfers of uploads) and the earlier frames' compute
+  // passes' before the vertex shaders (these passes' and the main one's, later in submission
+  // order) and this frame's compute passes, which read them (and rewrite their own).
+  record_pass_list(cmd, frame, passes,
+                   {.srcStageMask = S2::eComputeShader | S2::eTransfer,
+                    .srcAccessMask = A2::eShaderWrite | A2::eTransferWrite,
+                    .dstStageMask = S2::eVertexShader | S2::eVertexAttributeInput | S2::eComputeShader,
+                    .dstAccessMask = A2::eShaderRead | A2::eShaderWrite | A2::eVertexAttributeRead});
 }
 
 }  // namespace pond::render

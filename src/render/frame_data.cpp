@@ -3,7 +3,10 @@
 #include <string>
 
 #include "core/errors.h"
+#include "render/reflection_pass.h"
 #include "render/render_layout.h"
+#include "render/shadow_pass.h"
+#include "render/submerged_pass.h"
 
 namespace pond::render {
 namespace {
@@ -15,7 +18,7 @@ FrameRing::FrameRing(const gpu::Context& ctx, vk::DescriptorSetLayout set_layout
                                                   .flags = vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
                                                   .queueFamilyIndex = ctx.queue_family()});
   const vk::DescriptorPoolSize sizes[] = {{.type = vk::DescriptorType::eUniformBuffer, .descriptorCount = kFramesInFlight},
-                                          {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 2 * kFramesInFlight},
+                                          {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 3 * kFramesInFlight},
                                           {.type = vk::DescriptorType::eCombinedImageSampler,
                                            .descriptorCount = 4 * kFramesInFlight}};
   descriptor_pool_ = vk::raii::DescriptorPool(
@@ -36,17 +39,37 @@ FrameRing::FrameRing(const gpu::Context& ctx, vk::DescriptorSetLayout set_layout
                                                                  .descriptorPool = *descriptor_pool_,
                                                                  .descriptorSetCount = 1, .pSetLayouts = &set_layout})[0]);
   }
+  using U = vk::ImageUsageFlagBits;
+  const vk::Extent2D one{1, 1};
+  placeholders_.color = create_image(ctx, one, kReflectionFormat, U::eSampled, vk::ImageAspectFlagBits::eColor,
+                                     "placeholder colour");
+  placeholders_.depth = create_image(ctx, one, kShadowFormat, U::eSampled, vk::ImageAspectFlagBits::eDepth,
+                                     "placeholder depth");
+  placeholders_.submerged = create_image(ctx, one, kSubmergedFormat, U::eSampled, vk::ImageAspectFlagBits::eColor,
+                                         "placeholder submerged layer");
+  ctx.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {  // never written: only their layout matters
+    std::array<vk::ImageMemoryBarrier2, 3> to_read;
+    const Image* images[] = {&placeholders_.color, &placeholders_.depth, &placeholders_.submerged};
+    for (std::size_t k = 0; k < to_read.size(); ++k)
+      to_read[k] = {.dstStageMask = S::eFragmentShader, .dstAccessMask = vk::AccessFlagBits2::eShaderSampledRead,
+                    .oldLayout = vk::ImageLayout::eUndefined, .newLayout = vk::ImageLayout::eShaderReadOnlyOptimal,
+                    .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                    .image = *images[k]->image,
+                    .subresourceRange = {.aspectMask = k == 1 ? vk::ImageAspectFlagBits::eDepth : vk::ImageAspectFlagBits::eColor,
+                                         .baseMipLevel = 0, .levelCount = 1, .baseArrayLayer = 0, .layerCount = 1}};
+    cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 3, .pImageMemoryBarriers = to_read.data()});
+  });
 }
 
 void write_frame_set(const gpu::Context& ctx, const FrameData& f, const gpu::Buffer& state, const gpu::Buffer& normals,
-                     vk::ImageView caustics_map, vk::Sampler nearest, vk::Sampler shadow) {
+                     const gpu::Buffer& foam, const FrameSetImages& bound, vk::Sampler nearest, vk::Sampler shadow) {
   using DT = vk::DescriptorType;
   constexpr auto kRead = vk::ImageLayout::eShaderReadOnlyOptimal;
-  const vk::DescriptorBufferInfo infos[] = {f.uniforms.whole(), state.whole(), normals.whole()};
-  const vk::DescriptorImageInfo images[] = {{.sampler = nearest, .imageView = *f.reflection.color.view, .imageLayout = kRead},
-                                            {.sampler = shadow, .imageView = *f.shadow.view, .imageLayout = kRead},
-                                            {.sampler = nearest, .imageView = caustics_map, .imageLayout = kRead},
-                                            {.sampler = nearest, .imageView = *f.submerged.color.view, .imageLayout = kRead}};
+  const vk::DescriptorBufferInfo infos[] = {f.uniforms.whole(), state.whole(), normals.whole(), foam.whole()};
+  const vk::DescriptorImageInfo images[] = {{.sampler = nearest, .imageView = bound.reflection, .imageLayout = kRead},
+                                            {.sampler = shadow, .imageView = bound.shadow, .imageLayout = kRead},
+                                            {.sampler = nearest, .imageView = bound.caustics, .imageLayout = kRead},
+                                            {.sampler = nearest, .imageView = bound.submerged, .imageLayout = kRead}};
   const vk::WriteDescriptorSet writes[] = {
       {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_FRAME, .descriptorCount = 1,
        .descriptorType = DT::eUniformBuffer, .pBufferInfo = &infos[0]},
@@ -61,7 +84,9 @@ void write_frame_set(const gpu::Context& ctx, const FrameData& f, const gpu::Buf
       {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_CAUSTICS, .descriptorCount = 1,
        .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[2]},
       {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_SUBMERGED, .descriptorCount = 1,
-       .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[3]}};
+       .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[3]},
+      {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_FOAM, .descriptorCount = 1,
+       .descriptorType = DT::eStorageBuffer, .pBufferInfo = &infos[3]}};
   ctx.device().updateDescriptorSets(writes, nullptr);
 }
 

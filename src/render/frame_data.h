@@ -35,6 +35,20 @@ class DeletionQueue {
   std::vector<std::shared_ptr<void>> held_;
 };
 
+// What the water's set binds where a frame does not draw the reflection, the shadow map or the
+// submerged layer (their passes are off and made nothing): 1 x 1 images in the shader-read layout
+// that the pipelines of such a frame never sample.
+struct Placeholders {
+  Image color;      // kReflectionFormat
+  Image depth;      // kShadowFormat
+  Image submerged;  // kSubmergedFormat
+};
+
+// The images the water's set binds this frame (shared/water_render.h).
+struct FrameSetImages {
+  vk::ImageView reflection, shadow, caustics, submerged;
+};
+
 struct FrameData {
   vk::raii::CommandBuffer early = nullptr;  // the passes before the main one
   vk::raii::CommandBuffer main = nullptr;   // the main pass
@@ -43,18 +57,18 @@ struct FrameData {
   gpu::Buffer uniforms;                     // host-visible: WaterFrame
   vk::raii::DescriptorSet set = nullptr;    // the water renderer's set 0 (shared/water_render.h)
   Image depth;
-  LayerTarget reflection;
-  LayerTarget submerged;  // render/submerged_pass.h
-  Image shadow;  // the sun's shadow map (render/shadow_pass.h)
+  LayerTarget reflection;  // made at the first frame with the reflection, as the two below
+  LayerTarget submerged;   // render/submerged_pass.h
+  Image shadow;            // the sun's shadow map (render/shadow_pass.h)
   DeletionQueue retired;  // emptied when the slot is finished
 };
 
 // Points `frame`'s descriptor set (shared/water_render.h bindings) at its uniforms, the water's
-// `state` and `normals`, its reflection, submerged layer and shadow map and the caustics'
-// `caustics_map`; the frame must be finished. `nearest`: the layers' and the caustics map's sampler; `shadow`: the
-// depth-compare one.
+// `state` and `normals`, the `foam` and `images`; the frame must be finished. `nearest`: the
+// layers' and the caustics map's sampler; `shadow`: the depth-compare one.
 void write_frame_set(const gpu::Context& ctx, const FrameData& frame, const gpu::Buffer& state,
-                     const gpu::Buffer& normals, vk::ImageView caustics_map, vk::Sampler nearest, vk::Sampler shadow);
+                     const gpu::Buffer& normals, const gpu::Buffer& foam, const FrameSetImages& images,
+                     vk::Sampler nearest, vk::Sampler shadow);
 
 class FrameRing {
  public:
@@ -62,6 +76,7 @@ class FrameRing {
   FrameRing(const gpu::Context& ctx, vk::DescriptorSetLayout set_layout);
 
   FrameData& operator[](std::uint32_t slot) { return frames_[slot]; }
+  const Placeholders& placeholders() const { return placeholders_; }
   const FrameData& operator[](std::uint32_t slot) const { return frames_[slot]; }
   // Until slot's last submissions finished: polls its fences and waits only while they run (in the
   // steady state the frame's one wait, for an earlier frame's compute, has finished them already);
@@ -90,6 +105,7 @@ class FrameRing {
   vk::raii::CommandPool pool_ = nullptr;
   vk::raii::DescriptorPool descriptor_pool_ = nullptr;
   std::array<FrameData, kFramesInFlight> frames_;
+  Placeholders placeholders_;
 };
 
 }  // namespace pond::render

@@ -8,6 +8,7 @@
 #include "core/errors.h"
 #include "render/caustics_pass.h"
 #include "render/early_passes.h"
+#include "render/foam_pass.h"
 #include "render/frame_data.h"
 #include "render/main_pass.h"
 #include "render/pass_timestamps.h"
@@ -46,6 +47,7 @@ struct FrameLoop::Impl {
   WaterSource water;
   VisibleGeometry geometry;
   CausticsPass caustics;
+  FoamPass foam;
   PassTimestamps timestamps;  // each pass's GPU time, read at the frame's wait
   std::vector<PassDrawable*> drawables;
   std::uint32_t next = 0;
@@ -72,6 +74,7 @@ struct FrameLoop::Impl {
         nearest_sampler(create_reflection_sampler(c)), shadow_sampler(create_shadow_sampler(c)),
         frames(c, *pipes.set_layout), water(c, drawn, gpu),
         geometry(c, drawn.model()), caustics(c, drawn.model(), kFramesInFlight),
+        foam(c, drawn.model(), kFramesInFlight),
         timestamps(c, kFramesInFlight),
         generation(drawn.solver_generation()) {}
 
@@ -95,27 +98,43 @@ struct FrameLoop::Impl {
     f.view_proj = view::view_projection(f.camera, session.model());
     f.lighting = scene.lighting;
     f.lighting.sun = session.sun();
-    ensure_layer_target(ctx, d.reflection, reflection_extent(extent), kReflectionFormat, "reflection");  // made even when off: the set is whole
     const FrameInfo base = info(cmd, f);
     for (PassDrawable* p : drawables) p->prepare(base);
     std::vector<view::ShadowCaster> casters;
     for (const PassDrawable* p : drawables) p->add_shadow_casters(casters);
     f.plan = view::plan_frame({f.view.effects, casters, geometry.submerged_boxes(), f.view_proj, w, h, f.lighting.sun,
                                session.model().basin.floor_depth, session.model().basin.land_height});
-    ensure_shadow_map(ctx, d.shadow, f.plan.shadow ? f.plan.shadow->size : 0);  // made even when off: the set is whole
-    ensure_layer_target(ctx, d.submerged, submerged_extent(extent, f.plan.submerged), kSubmergedFormat, "submerged layer");
-    const vk::Extent2D mirror = d.reflection.color.extent;
+    // Each pass's target made when the frame first has it; a frame without binds a placeholder.
+    const Placeholders& none = frames.placeholders();
+    FrameSetImages images{*none.color.view, *none.depth.view, *caustics.map(f.slot).view, *none.submerged.view};
+    if (f.plan.reflection) {
+      ensure_layer_target(ctx, d.reflection, reflection_extent(extent), kReflectionFormat, "reflection");
+      images.reflection = *d.reflection.color.view;
+    }
+    if (f.plan.shadow) {
+      ensure_shadow_map(ctx, d.shadow, f.plan.shadow->size);
+      images.shadow = *d.shadow.view;
+    }
+    if (f.plan.submerged) {
+      ensure_layer_target(ctx, d.submerged, extent, kSubmergedFormat, "submerged layer");
+      images.submerged = *d.submerged.color.view;
+    }
+    const vk::Extent2D mirror = f.plan.reflection ? d.reflection.color.extent : vk::Extent2D{0, 0};
     geometry.cull_land(f.slot, f.view_proj, w, h, f.plan.shadow_rects,
-                       {f.plan.reflection ? static_cast<int>(mirror.width) : 0, static_cast<int>(mirror.height)}, f.draws);
-    write_frame_set(ctx, d, *f.water.state, *f.water.normals, *caustics.map(f.slot).view, *nearest_sampler,
-                    *shadow_sampler);
+                       {static_cast<int>(mirror.width), static_cast<int>(mirror.height)}, f.draws);
+    // Without foam the water reads none: any buffer of a float per node stands in for it.
+    const gpu::Buffer& foam_drawn =
+        f.plan.foam ? foam.prepare(f.slot, *f.water.state, f.water.stride, f.water.pitch, session.simulated_seconds())
+                    : *f.water.normals;
+    write_frame_set(ctx, d, *f.water.state, *f.water.normals, foam_drawn, images, *nearest_sampler, *shadow_sampler);
     caustics.bind(f.slot, *f.water.state, *f.water.normals);
-    const WaterFrame u = view::frame_uniforms({session.model(), f.lighting, f.camera, f.view_proj,
+    WaterFrame u = view::frame_uniforms({session.model(), f.lighting, f.camera, f.view_proj,
                                                f.water.stride, f.water.pitch, f.plan.shadow ? &*f.plan.shadow : nullptr});
+    POND_FRAME_FOAM(u) = f.plan.foam ? 1.0f : 0.0f;
     std::memcpy(d.uniforms.mapped, &u, sizeof u);
     d.uniforms.flush(ctx);
     timestamps.begin_frame(cmd, f.slot);
-    record_early_passes(cmd, context(f, base), caustics,
+    record_early_passes(cmd, context(f, base), caustics, foam,
                         view::caustics_push(session.model(), view::unit(f.lighting.sun), session.model().basin.floor_depth,
                                             f.water.stride, f.water.pitch));
   }
@@ -219,6 +238,17 @@ const sim::WaterModel& FrameLoop::model() const { return impl_->session.model();
 vk::Format FrameLoop::color_format() const { return impl_->color_format; }
 lod::Camera FrameLoop::default_camera(int width, int height) const {
   return view::scene_camera(impl_->scene.camera, impl_->session.model(), width, height);
+}
+const FoamPass& FrameLoop::foam() const { return impl_->foam; }
+void FrameLoop::adopt_foam(FoamPass::Carried carried) { impl_->foam.adopt(std::move(carried)); }
+std::size_t FrameLoop::pass_targets() const {
+  std::size_t made = impl_->foam.made() ? 3 : 0;
+  for (std::uint32_t k = 0; k < kFramesInFlight; ++k) {
+    const FrameData& d = impl_->frames[k];
+    for (const Image* i : {&d.reflection.color, &d.reflection.depth, &d.submerged.color, &d.submerged.depth, &d.shadow})
+      made += *i->image ? 1 : 0;
+  }
+  return made;
 }
 std::span<const std::uint32_t> FrameLoop::lod_triangles() const { return impl_->geometry.lod_triangles(); }
 

@@ -27,6 +27,7 @@
 #include "gpu/context.h"
 #include "gpu/gpu_solvers.h"
 #include "lod/camera_budget.h"
+#include "render/foam_pass.h"
 #include "render/frame_target.h"
 #include "render/pass_timestamps.h"
 #include "render/pass_drawable.h"
@@ -92,6 +93,14 @@ class FrameLoop {
   vk::Format color_format() const;
   // The scene's camera, or a view of the whole pond when the scene has none.
   lod::Camera default_camera(int width, int height) const;
+  // The foam's pass (render/foam_pass.h): whether it was made, its foam; a new loop of the same
+  // session goes on from an old one's (FoamPass::carry) instead of no foam.
+  const FoamPass& foam() const;
+  void adopt_foam(FoamPass::Carried carried);
+  // How many images and buffers the passes before the main one have made so far, over every frame
+  // slot (the reflection's and the submerged layer's two images, the shadow map, the foam's three
+  // buffers): none while every effect is off. For tests and tools.
+  std::size_t pass_targets() const;
   // The last prepared frame's LOD triangles before culling (node indices; empty for the full mesh).
   std::span<const std::uint32_t> lod_triangles() const;
 

@@ -3,7 +3,7 @@
 namespace pond::render {
 
 const char* timed_pass_name(TimedPass pass) {
-  static constexpr const char* kNames[] = {"caustics", "shadow", "reflection", "submerged", "main"};
+  static constexpr const char* kNames[] = {"caustics", "foam", "shadow", "reflection", "submerged", "main"};
   return kNames[static_cast<std::size_t>(pass)];
 }
 

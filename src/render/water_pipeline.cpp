@@ -96,9 +96,12 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
       {.binding = POND_RENDER_BINDING_CAUSTICS, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
        .descriptorCount = 1, .stageFlags = SS::eFragment},
       {.binding = POND_RENDER_BINDING_SUBMERGED, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
-       .descriptorCount = 1, .stageFlags = SS::eFragment}};
+       .descriptorCount = 1, .stageFlags = SS::eFragment},
+      {.binding = POND_RENDER_BINDING_FOAM, .descriptorType = vk::DescriptorType::eStorageBuffer,
+       .descriptorCount = 1, .stageFlags = SS::eVertex}};
+  static_assert(std::size(bindings) == POND_RENDER_BINDINGS);
   p.set_layout = vk::raii::DescriptorSetLayout(
-      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = 7, .pBindings = bindings});
+      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = POND_RENDER_BINDINGS, .pBindings = bindings});
   const vk::DescriptorSetLayout set_layout = *p.set_layout;
   p.layout = vk::raii::PipelineLayout(ctx.device(),
                                       vk::PipelineLayoutCreateInfo{.setLayoutCount = 1, .pSetLayouts = &set_layout});

@@ -188,10 +188,7 @@ void parse_view(JsonFields f, ViewSpec& v, sim::BasinSpec& basin, int basin_give
     if (!(basin_value(basin, k) > 0.0)) f.fail(key, std::string("must be positive (it is basin.") + key + " now)");
     check_spacings(f, key, basin_value(basin, k), g);
   }
-  v.effects.reflections = f.boolean("reflections", v.effects.reflections);
-  v.effects.caustics = f.boolean("caustics", v.effects.caustics);
-  v.effects.shadows = f.boolean("shadows", v.effects.shadows);
-  v.effects.submerged = f.boolean("submerged", v.effects.submerged);
+  for (const view::EffectEntry& e : view::kEffects) v.effects.*e.flag = f.boolean(e.key, v.effects.*e.flag);
   f.finish();
 }
 

@@ -80,9 +80,8 @@ json scene_to_json(const Scene& s) {
   j["bodies"] = json::array();
   for (const sim::BodySpec& b : s.bodies) j["bodies"].push_back(body_json(b));
   const view::ViewSpec& v = s.view;
-  j["view"] = {{"steps_per_frame", v.steps_per_frame}, {"lod_tolerance", v.lod_tolerance_px},
-               {"reflections", v.effects.reflections}, {"caustics", v.effects.caustics},
-               {"shadows", v.effects.shadows},         {"submerged", v.effects.submerged}};
+  j["view"] = {{"steps_per_frame", v.steps_per_frame}, {"lod_tolerance", v.lod_tolerance_px}};
+  for (const view::EffectEntry& e : view::kEffects) j["view"][e.key] = v.effects.*e.flag;
   if (s.camera) j["camera"] = {{"eye", vec(s.camera->eye)}, {"target", vec(s.camera->target)}, {"fovy", s.camera->fovy_degrees}};
   const view::LightingSpec& l = s.lighting;
   j["lighting"] = {{"sun", vec(l.sun)},     {"water", vec(l.water)},   {"absorption", vec(l.absorption)},

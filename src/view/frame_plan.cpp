@@ -48,6 +48,7 @@ FramePlan plan_frame(const PlanInput& in) {
   FramePlan plan;
   plan.caustics = in.effects.caustics;
   plan.reflection = in.effects.reflections;
+  plan.foam = in.effects.foam;
   std::vector<PixelRect> below, shadowed;
   if (in.effects.submerged) {
     auto add = [&](ShadowCaster box) {

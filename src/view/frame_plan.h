@@ -25,6 +25,7 @@ inline constexpr double kShadowWaveMargin = 1.0;
 struct FramePlan {
   bool caustics = false;
   bool reflection = false;
+  bool foam = false;  // the foam's update runs and the water draws it (render/foam_pass.h)
   // Something lies under the surface besides the floor and the rim's walls (islands' walls,
   // bodies) where the camera can see it: the frame draws the submerged layer
   // (render/submerged_pass.h).

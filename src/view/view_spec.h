@@ -28,7 +28,26 @@ struct Effects {
   bool caustics = true;     // the sun's light focused by the waves on the pool floor
   bool shadows = true;      // the sun's shadows of the trees and the bodies on the land and the water
   bool submerged = true;    // the islands' walls and the bodies under clear water, refracted
+  bool foam = true;         // white water where the surface is stirred, drifting and fading
+  static constexpr Effects none() { return {false, false, false, false, false}; }
   bool operator==(const Effects&) const = default;
+};
+
+// Every effect, one row each: what the scene file, `pond render --profile`, the demo's keys, help
+// and panel read, so a new effect is a row here and its pass (docs/architecture.md).
+struct EffectEntry {
+  const char* key;      // the scene's "view" key; the name --profile prints
+  bool Effects::*flag;  // its switch
+  const char* demo_key;  // one letter "A".."Z": the demo's toggle
+  const char* label;    // the demo panel's checkbox
+  const char* meaning;  // the demo help's line
+};
+inline constexpr EffectEntry kEffects[] = {
+    {"reflections", &Effects::reflections, "M", "reflections", "reflections (mirror image) on / off"},
+    {"caustics", &Effects::caustics, "K", "caustics", "caustics (focused sunlight on the floor) on / off"},
+    {"shadows", &Effects::shadows, "L", "shadows", "shadows (of the trees and bodies) on / off"},
+    {"submerged", &Effects::submerged, "U", "under water", "under water (islands' walls, bodies, refracted) on / off"},
+    {"foam", &Effects::foam, "F", "foam", "foam (white water where the surface is stirred) on / off"},
 };
 
 // "view": what a rendered frame advances and which effects it draws (the floor and the land are
@@ -36,7 +55,7 @@ struct Effects {
 struct ViewSpec {
   std::int64_t steps_per_frame = 1;  // simulation steps per rendered frame
   double lod_tolerance_px = 1.0;     // LOD screen-space error bound; 0 = the full mesh
-  Effects effects;                   // "reflections", "caustics", "shadows": true | false
+  Effects effects;                   // kEffects' keys: true | false
   bool operator==(const ViewSpec&) const = default;
 };
 

@@ -36,7 +36,7 @@ done
 
 "$pond" render --steps 2 --frames 2 --size 96x64 --out "$work/profiled.png" --profile > "$work/stdout" 2> "$work/stderr" ||
   fail "--profile: $(cat "$work/stderr")"
-[ "$(grep -c "^effect " "$work/stdout")" -eq 4 ] || fail "--profile: not four effects: $(cat "$work/stdout")"
+[ "$(grep -c "^effect " "$work/stdout")" -eq 5 ] || fail "--profile: not one line for each of the five effects: $(cat "$work/stdout")"
 if grep "^effect " "$work/stdout" | grep -q ": -"; then fail "--profile printed a negative cost: $(cat "$work/stdout")"; fi
 # Two frames read no pass time back (each slot's queries are read when it comes round again): said,
 # not an empty heading.

@@ -59,7 +59,7 @@ void measure_frame(const gpu::Context& ctx, const Plan& plan, Progress& progress
   on.lod_tolerance_px = scene.view.lod_tolerance_px;
   on.wait = true;  // each frame whole: its CPU parts and the GPU's, and its timestamps read at once
   render::FrameView off = on;
-  off.effects = {.reflections = false, .caustics = false, .shadows = false, .submerged = false};
+  off.effects = view::Effects::none();
   session.advance(40);  // the splashes spread, the balls settle a little
 
   Figure all = make_figure("frame.all_effects", "frame, every effect on, " + where, "ms", false);

@@ -3,7 +3,10 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <vector>
 
 namespace pond::app::demo {
 namespace {
@@ -24,10 +27,6 @@ constexpr KeyBinding kBindings[] = {
     {GLFW_KEY_V, Action::all_vertical, "V", "all nodes vertical-only (waves pass through)"},
     {GLFW_KEY_I, Action::islands, "I", "islands on / off"},
     {GLFW_KEY_W, Action::wireframe, "W", "LOD wireframe"},
-    {GLFW_KEY_M, Action::reflections, "M", "reflections (mirror image) on / off"},
-    {GLFW_KEY_K, Action::caustics, "K", "caustics (focused sunlight on the floor) on / off"},
-    {GLFW_KEY_L, Action::shadows, "L", "shadows (of the trees and bodies) on / off"},
-    {GLFW_KEY_U, Action::submerged, "U", "under water (islands' walls, bodies, refracted) on / off"},
     {GLFW_KEY_RIGHT_BRACKET, Action::tau_up, "] / =", "LOD tolerance up (coarser)"},
     {GLFW_KEY_EQUAL, Action::tau_up, "", ""},
     {GLFW_KEY_LEFT_BRACKET, Action::tau_down, "[ / -", "LOD tolerance down (0 = full mesh)"},
@@ -44,9 +43,21 @@ constexpr KeyBinding kBindings[] = {
     {GLFW_KEY_ESCAPE, Action::quit, "Esc", "quit"},
 };
 
+// The table above with each effect's toggle (view::kEffects) after the wireframe's row.
+std::vector<KeyBinding> with_effects() {
+  std::vector<KeyBinding> all(std::begin(kBindings), std::end(kBindings));
+  auto at = std::find_if(all.begin(), all.end(), [](const KeyBinding& b) { return b.action == Action::wireframe; }) + 1;
+  for (const view::EffectEntry& e : view::kEffects)
+    at = all.insert(at, {GLFW_KEY_A + (e.demo_key[0] - 'A'), Action::toggle_effect, e.demo_key, e.meaning, &e}) + 1;
+  return all;
+}
+
 }  // namespace
 
-std::span<const KeyBinding> key_bindings() { return kBindings; }
+std::span<const KeyBinding> key_bindings() {
+  static const std::vector<KeyBinding> all = with_effects();
+  return all;
+}
 
 SplashKind splash_kind(int mods) {
   if (mods & GLFW_MOD_CONTROL) return SplashKind::explosion;
@@ -63,10 +74,12 @@ void InputDispatch::dispatch(const InputEvent& e, bool ui_mouse, bool ui_keyboar
         target.on_wind_strength(e.code - GLFW_KEY_0);
         return;
       }
-      for (const KeyBinding& b : kBindings)
+      for (const KeyBinding& b : key_bindings())
         if (b.key == e.code) {
           if (b.action == Action::drop_ball)  // needs the cursor, which only the dispatch knows
             target.on_drop_ball(x_, y_);
+          else if (b.effect)
+            target.on_toggle_effect(*b.effect);
           else
             target.on_action(b.action);
           return;

@@ -7,13 +7,14 @@
 #include <span>
 
 #include "app/demo/input_event.h"
+#include "view/view_spec.h"
 
 namespace pond::app::demo {
 
 enum class Action {
   quit, help, panel, pause, step, reset_water, reset_camera, border, all_vertical, islands, wireframe,
-  tau_up, tau_down, solver, rain, screenshot, vsync, steps_up, steps_down, reflections, caustics,
-  drop_ball, shadows, submerged, save_checkpoint, load_checkpoint
+  tau_up, tau_down, solver, rain, screenshot, vsync, steps_up, steps_down, toggle_effect, drop_ball,
+  save_checkpoint, load_checkpoint
 };
 
 // The LOD tolerance one step up or down the table 0, 0.25, 0.5, 1, 2, 4, 8, 16, 32 px (keys ] and [).
@@ -24,6 +25,7 @@ struct KeyBinding {
   Action action;
   const char* keys;     // as shown in the help overlay
   const char* meaning;
+  const view::EffectEntry* effect = nullptr;  // Action::toggle_effect: which (view::kEffects)
 };
 std::span<const KeyBinding> key_bindings();
 
@@ -36,6 +38,7 @@ class ControlTarget {
  public:
   virtual ~ControlTarget() = default;
   virtual void on_action(Action action) = 0;
+  virtual void on_toggle_effect(const view::EffectEntry& effect) = 0;
   virtual void on_orbit(double dx, double dy) = 0;
   virtual void on_pan(double dx, double dy) = 0;
   virtual void on_zoom(double steps) = 0;

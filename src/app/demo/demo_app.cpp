@@ -124,12 +124,17 @@ scene::Scene DemoApp::scene_with_settings() const {
 }
 
 // A loop for the session's current model (its land follows the constraints); the tree with the
-// controls' changes carried over.
+// controls' changes carried over, and the foam of the loop it replaces (the same water goes on).
 void DemoApp::build_loop() {
-  if (loop_) loop_->wait_idle();
+  render::FoamPass::Carried foam;
+  if (loop_) {
+    loop_->wait_idle();
+    foam = loop_->foam().carry();
+  }
   loop_.reset();  // one loop at a time: its buffers and pipelines are the big allocations
   drawn_scene_ = scene_with_settings();
   loop_ = std::make_unique<render::FrameLoop>(gpu_->ctx, drawn_scene_, *session_, &gpu_->solvers, gpu_->swapchain.format());
+  loop_->adopt_foam(std::move(foam));
   if (drawn_scene_.tree) {  // drawn before the UI
     const tree::TreeSpec spec = tree_ ? tree_->spec() : *drawn_scene_.tree;
     tree_.reset();

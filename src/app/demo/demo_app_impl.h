@@ -48,6 +48,7 @@ class DemoApp final : public ControlTarget {
 
   // ControlTarget (demo_input.cpp)
   void on_action(Action action) override;
+  void on_toggle_effect(const view::EffectEntry& effect) override;
   void on_orbit(double dx, double dy) override { camera_.orbit(dx, dy); }
   void on_pan(double dx, double dy) override { camera_.pan(dx, dy, static_cast<int>(gpu_->swapchain.extent().height)); }
   void on_zoom(double steps) override { camera_.zoom(steps); }

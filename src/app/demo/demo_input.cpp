@@ -17,6 +17,10 @@ std::array<double, 3> DemoApp::middle_of_pond() const {
   return {0.5 * (m.cols - 1) * m.spacing, 3.0 * m.spacing, 0.5 * (m.rows - 1) * m.spacing};
 }
 
+void DemoApp::on_toggle_effect(const view::EffectEntry& effect) {
+  settings_.effects.*effect.flag = !(settings_.effects.*effect.flag);
+}
+
 void DemoApp::on_action(Action action) {
   switch (action) {
     case Action::quit: quit_ = true; break;
@@ -39,10 +43,7 @@ void DemoApp::on_action(Action action) {
       apply_requests({.rebuild_scene = true});
       break;
     case Action::wireframe: settings_.wireframe = !settings_.wireframe; break;
-    case Action::reflections: settings_.effects.reflections = !settings_.effects.reflections; break;
-    case Action::caustics: settings_.effects.caustics = !settings_.effects.caustics; break;
-    case Action::shadows: settings_.effects.shadows = !settings_.effects.shadows; break;
-    case Action::submerged: settings_.effects.submerged = !settings_.effects.submerged; break;
+    case Action::toggle_effect: break;  // needs the effect: on_toggle_effect
     case Action::tau_up: settings_.lod_tolerance_px = next_tolerance(settings_.lod_tolerance_px, true); break;
     case Action::tau_down: settings_.lod_tolerance_px = next_tolerance(settings_.lod_tolerance_px, false); break;
     case Action::steps_up: settings_.steps_per_frame = std::min<std::int64_t>(64, settings_.steps_per_frame + 1); break;

@@ -44,7 +44,7 @@ void DemoApp::recover(const GpuFailure& first) {
                          " times without a frame drawn between: giving up");
     std::string what = said ? std::string("making the device again") : std::string(failure.what()) + "; making the device again";
     if (failure.kind == GpuFailure::Kind::out_of_memory) {
-      settings_.effects = view::Effects{.reflections = false, .caustics = false, .shadows = false, .submerged = false};
+      settings_.effects = view::Effects::none();
       what += " with the effects off, so the frame needs less memory";
     }
     notice(what);

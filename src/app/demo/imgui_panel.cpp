@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <numbers>
 
 #include "app/demo/controls.h"
@@ -134,14 +135,15 @@ PanelRequests draw_panel(DemoSettings& s, const DemoStats& stats, render::TreeDr
     if (ImGui::SliderFloat("LOD tau px ([ ])", &tau, 0.0f, 32.0f, "%.2f", ImGuiSliderFlags_Logarithmic))
       s.lod_tolerance_px = tau;
     ImGui::Checkbox("wireframe (W)", &s.wireframe);
-    ImGui::Checkbox("reflections (M)", &s.effects.reflections);
-    ImGui::SameLine();
-    ImGui::Checkbox("caustics (K)", &s.effects.caustics);
     ImGui::SameLine();
     ImGui::Checkbox("vsync (F3)", &s.vsync);
-    ImGui::Checkbox("shadows (L)", &s.effects.shadows);
-    ImGui::SameLine();
-    ImGui::Checkbox("under water (U)", &s.effects.submerged);
+    for (std::size_t k = 0; k < std::size(view::kEffects); ++k) {  // three to a row
+      const view::EffectEntry& e = view::kEffects[k];
+      if (k % 3 != 0) ImGui::SameLine();
+      char label[64];
+      std::snprintf(label, sizeof label, "%s (%s)", e.label, e.demo_key);
+      ImGui::Checkbox(label, &(s.effects.*e.flag));
+    }
     if (ImGui::Button("reset camera (C)")) req.reset_camera = true;
     req.apply_sun = edit_sun(s.sun);
   }

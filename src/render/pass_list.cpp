@@ -1,0 +1,92 @@
+// record_pass_list (render/frame_pass.h): the barriers between the frame's passes, from what they
+// declare.
+#include <algorithm>
+
+#include "render/frame_pass.h"
+
+namespace pond::render {
+namespace {
+
+bool same(const PassWrite& w, const PassRead& r) {
+  return (w.image && w.image == r.image) || (w.buffer && w.buffer == r.buffer);
+}
+
+// An output from its last use before this frame's pass (read by an earlier frame, whose contents
+// are not needed) to being written.
+void to_written(const PassWrite& w, BarrierBatch& batch) {
+  if (w.buffer) {  // written after being read: an execution dependency on the readers
+    batch.memory.push_back({.srcStageMask = w.read_stages, .dstStageMask = w.stages, .dstAccessMask = w.access});
+    return;
+  }
+  // An image's earlier readers (or, scratch, its earlier writers) done before it is written again.
+  batch.images.push_back({.srcStageMask = w.scratch ? w.stages : w.read_stages,
+                          .srcAccessMask = w.scratch ? w.access & (A2::eDepthStencilAttachmentWrite | A2::eColorAttachmentWrite |
+                                                                   A2::eShaderStorageWrite)
+                                                     : vk::AccessFlags2{},
+                          .dstStageMask = w.stages, .dstAccessMask = w.access, .oldLayout = vk::ImageLayout::eUndefined, .newLayout = w.layout,
+                          .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                          .image = w.image,
+                          .subresourceRange = {.aspectMask = w.aspect, .baseMipLevel = 0, .levelCount = 1,
+                                               .baseArrayLayer = 0, .layerCount = 1}});
+}
+
+// An output from being written to being read (`extra`: the stages of a later pass that reads it too).
+void to_read(const PassWrite& w, vk::PipelineStageFlags2 extra, BarrierBatch& batch) {
+  if (w.buffer) {
+    batch.memory.push_back({.srcStageMask = w.stages, .srcAccessMask = w.access, .dstStageMask = w.read_stages | extra,
+                            .dstAccessMask = w.read_access});
+    return;
+  }
+  batch.images.push_back({.srcStageMask = w.stages, .srcAccessMask = w.access, .dstStageMask = w.read_stages | extra,
+                          .dstAccessMask = w.read_access, .oldLayout = w.layout, .newLayout = w.read_layout,
+                          .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                          .image = w.image,
+                          .subresourceRange = {.aspectMask = w.aspect, .baseMipLevel = 0, .levelCount = 1,
+                                               .baseArrayLayer = 0, .layerCount = 1}});
+}
+
+}  // namespace
+
+PassBarriers plan_pass_barriers(std::span<const PassDeclaration> declared, const vk::MemoryBarrier2& before) {
+  PassBarriers out;
+  out.before.resize(declared.size());
+  if (declared.empty()) return out;
+  out.before.front().memory.push_back(before);
+  std::vector<PassWrite> pending;  // written since the frame began, not yet made readable
+  std::size_t open = 0;            // the pass whose batch the next outputs' first barriers join
+  for (std::size_t k = 0; k < declared.size(); ++k) {
+    for (const PassRead& r : declared[k].reads) {
+      const auto w = std::find_if(pending.begin(), pending.end(), [&](const PassWrite& x) { return same(x, r); });
+      if (w == pending.end()) continue;
+      open = k;
+      to_read(*w, r.stages, out.before[k]);
+      pending.erase(w);
+    }
+    for (const PassWrite& w : declared[k].writes) {
+      to_written(w, out.before[open]);
+      if (!w.scratch) pending.push_back(w);
+    }
+  }
+  for (const PassWrite& w : pending) to_read(w, {}, out.after);
+  return out;
+}
+
+void record_pass_list(const vk::raii::CommandBuffer& cmd, const FrameContext& frame, std::span<FramePass* const> passes,
+                      const vk::MemoryBarrier2& before) {
+  std::vector<FramePass*> enabled;
+  std::vector<PassDeclaration> declared;
+  for (FramePass* p : passes)
+    if (p->enabled(frame)) {
+      enabled.push_back(p);
+      p->declare(frame, declared.emplace_back());
+    }
+  PassBarriers barriers = plan_pass_barriers(declared, before);
+  for (std::size_t k = 0; k < enabled.size(); ++k) {
+    barriers.before[k].record(cmd);
+    const PassTimestamps::Scope timed = frame.timestamps.scope(cmd, frame.slot, enabled[k]->timed());
+    enabled[k]->record(cmd, frame);
+  }
+  barriers.after.record(cmd);
+}
+
+}  // namespace pond::render
