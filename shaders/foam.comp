@@ -1,7 +1,7 @@
 #version 460
 // Foam (shared/foam.h): one invocation per node reads the node's displacement and the one of the
-// last update (which it then replaces) and the last foam around it, and writes this update's foam. Outside the physics: its output is drawn
-// (water.vert), never read by the solver.
+// last update (which it then replaces) and the last foam around it, and writes this update's foam.
+// Outside the physics: its output is drawn (water.vert), never read by the solver.
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/foam.h"
@@ -16,9 +16,9 @@ layout(push_constant) uniform Push { FoamPush p; };
 
 void main() {
   const uint rows = p.grid.x, cols = p.grid.y, stride = p.grid.z, pitch = p.grid.w;
-  const uint n = gl_GlobalInvocationID.x;
-  if (n >= rows * cols) return;
-  const uint row = n / cols, col = n % cols, m = row * pitch + col;
+  const uint col = gl_GlobalInvocationID.x, row = gl_GlobalInvocationID.y;  // one row a workgroup row
+  if (col >= cols || row >= rows) return;
+  const uint n = row * cols + col, m = row * pitch + col;
   const vec3 u = vec3(state[m], state[stride + m], state[2u * stride + m]);
   const float moved = length(u - last[n].xyz);
   last[n] = vec4(u, 0.0);

@@ -23,7 +23,7 @@
 layout(early_fragment_tests) in;
 
 layout(location = 0) in vec3 in_world;
-layout(location = 1) in vec4 in_normal;  // w: the foam's cover (render/foam_pass.h)
+layout(location = 1) in vec4 in_normal_foam;  // xyz: the normal; w: the foam here (render/foam_pass.h)
 // The frame's constants (water.vert; not the uniform block, see shared/water_render.h).
 layout(location = POND_WATER_FLAT_EYE) flat in vec4 in_eye;  // xyz: camera; w: POND_FLAT_INV_SPACING
 layout(location = POND_WATER_FLAT_SUN) flat in vec4 in_sun;  // xyz: to the sun; w: POND_FLAT_FLOOR_DEPTH
@@ -153,7 +153,7 @@ vec2 water_sun_light(vec3 hit) {
 }
 
 void main() {
-  vec3 n = normalize(in_normal.xyz);
+  vec3 n = normalize(in_normal_foam.xyz);
   const vec3 v = normalize(in_eye.xyz - in_world);
   if (!gl_FrontFacing && dot(n, v) < 0.0) n = -n;  // folded wave crests seen from below
   const vec3 l = in_sun.xyz;
@@ -205,6 +205,6 @@ void main() {
   // Foam on top, a rough white lit by the sky and the sun: thin foam shows as patches, thick foam
   // covers (no foam: the colour as is).
   const vec3 foam = vec3(0.92, 0.94, 0.95) * (0.45 + 0.55 * diffuse * sun.x);
-  color = mix(color, foam, clamp(in_normal.w * (0.2 + 1.6 * foam_patches(in_world.xz)), 0.0, 1.0));
+  color = mix(color, foam, clamp(in_normal_foam.w * (0.2 + 1.6 * foam_patches(in_world.xz)), 0.0, 1.0));
   out_color = finish_color(color);
 }

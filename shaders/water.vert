@@ -14,7 +14,7 @@ layout(std430, set = 0, binding = POND_RENDER_BINDING_NORMALS) restrict readonly
 layout(std430, set = 0, binding = POND_RENDER_BINDING_FOAM) restrict readonly buffer Foam { float foam[]; };
 
 layout(location = 0) out vec3 out_world;
-layout(location = 1) out vec4 out_normal;  // w: the foam here (render/foam_pass.h)
+layout(location = 1) out vec4 out_normal_foam;  // xyz: the normal; w: the foam here (render/foam_pass.h)
 // The frame's constants for water.frag, as flat varyings (see POND_WATER_FLAT_* in
 // shared/water_render.h for why not the uniform block).
 layout(location = POND_WATER_FLAT_EYE) flat out vec4 out_eye;
@@ -46,7 +46,7 @@ void main() {
   precise vec3 world = (rest + u) * POND_FRAME_GRID_SPACING(f);  // grid units -> world
   precise vec4 position = f.view_proj * vec4(world, 1.0);
   out_world = world;
-  out_normal = vec4(normals[n].xyz, POND_FRAME_FOAM(f) > 0.0 ? foam[n] : 0.0);
+  out_normal_foam = vec4(normals[n].xyz, POND_FRAME_FOAM(f) > 0.0 ? foam[n] : 0.0);
   gl_Position = position;
   // w: POND_FLAT_INV_SPACING, the reciprocal: water.frag multiplies by it.
   out_eye = vec4(f.eye.xyz, 1.0 / POND_FRAME_GRID_SPACING(f));

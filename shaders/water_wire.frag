@@ -9,7 +9,7 @@
 layout(std140, set = 0, binding = POND_RENDER_BINDING_FRAME) uniform Frame { WaterFrame f; };
 
 layout(location = 0) in vec3 in_world;
-layout(location = 1) in vec4 in_normal;
+layout(location = 1) in vec4 in_normal_foam;
 layout(location = 0) out vec4 out_color;
 
 void main() {

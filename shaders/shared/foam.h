@@ -3,8 +3,8 @@
 //
 // Foam is one float per node, the share of the surface it covers in [0, 1], compact (node
 // row * cols + col, the normals' numbering, which water.vert reads it by). Per node it rides with
-// the membrane, as the surface point it whitens does, so it drifts wherever the node is pushed; one
-// update a drawn frame, over the simulated time since the last one (elapsed, the model's time units):
+// the membrane, as the surface point it whitens does, so it drifts wherever the node is pushed.
+// One update a drawn frame, over the simulated time since the last one (elapsed, time units):
 //   v     = (u - u at the last update) / elapsed: the node's mean velocity since, from the
 //           displacements the frame draws (a CPU solver's frame has them too, not the velocities);
 //           none at the first update
@@ -29,7 +29,7 @@ using water_render::vec4;
 #define POND_FOAM_CONST const
 #endif
 
-#define POND_FOAM_LOCAL_X 64  // foam.comp's workgroup: nodes along a row
+#define POND_FOAM_LOCAL_X 64  // foam.comp's workgroup: nodes along a row (one workgroup row a node row)
 
 // Bindings (set 0), storage buffers.
 #define POND_FOAM_BINDING_STATE 0  // the water's displacements (water_gpu.h's layout: stride, pitch; ux uy uz)

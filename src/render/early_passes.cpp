@@ -96,8 +96,8 @@ class Submerged final : public FramePass {
 
 }  // namespace
 
-void record_early_passes(const vk::raii::CommandBuffer& cmd, const FrameContext& frame, const CausticsPass& caustics,
-                         FoamPass& foam, const shared::caustics::CausticsPush& caustics_push) {
+PassSet record_early_passes(const vk::raii::CommandBuffer& cmd, const FrameContext& frame, const CausticsPass& caustics,
+                            FoamPass& foam, const shared::caustics::CausticsPush& caustics_push) {
   Caustics caustics_pass(caustics, caustics_push);
   Shadow shadow;
   Reflection reflection;
@@ -106,7 +106,7 @@ void record_early_passes(const vk::raii::CommandBuffer& cmd, const FrameContext&
   // The solver's writes (compute, and transfers of uploads) and the earlier frames' compute
   // passes' before the vertex shaders (these passes' and the main one's, later in submission
   // order) and this frame's compute passes, which read them (and rewrite their own).
-  record_pass_list(cmd, frame, passes,
+  return record_pass_list(cmd, frame, passes,
                    {.srcStageMask = S2::eComputeShader | S2::eTransfer,
                     .srcAccessMask = A2::eShaderWrite | A2::eTransferWrite,
                     .dstStageMask = S2::eVertexShader | S2::eVertexAttributeInput | S2::eComputeShader,

@@ -13,7 +13,8 @@
 
 namespace pond::render {
 
-void record_early_passes(const vk::raii::CommandBuffer& cmd, const FrameContext& frame, const CausticsPass& caustics,
-                         FoamPass& foam, const shared::caustics::CausticsPush& caustics_push);
+// Returns which passes it recorded.
+PassSet record_early_passes(const vk::raii::CommandBuffer& cmd, const FrameContext& frame, const CausticsPass& caustics,
+                            FoamPass& foam, const shared::caustics::CausticsPush& caustics_push);
 
 }  // namespace pond::render

@@ -17,7 +17,7 @@ static_assert(sizeof(FoamPush) == 32 && offsetof(FoamPush, update) == 16);
 
 FoamPass::FoamPass(const gpu::Context& ctx, const sim::WaterModel& model, std::uint32_t slots)
     : ctx_(ctx), rows_(static_cast<std::uint32_t>(model.rows)), cols_(static_cast<std::uint32_t>(model.cols)),
-      slots_(slots), wave_speed_(std::sqrt(model.physics.stiffness / model.physics.mass)) {}
+      slots_(slots) {}
 
 void FoamPass::make() {
   pipeline_ = gpu::create_compute_pipeline(ctx_, pond_spirv_foam_comp, POND_FOAM_BINDINGS, sizeof(FoamPush), {}, "foam");
@@ -41,13 +41,12 @@ void FoamPass::make() {
 }
 
 const gpu::Buffer& FoamPass::prepare(std::uint32_t slot, const gpu::Buffer& state, std::uint32_t stride,
-                                     std::uint32_t pitch, double simulated_time) {
+                                     std::uint32_t pitch, const sim::WaterModel& model, std::int64_t steps) {
   if (!made()) make();
-  // The water went back in time (reset, an earlier state set): it starts again without foam.
-  if (last_time_ && simulated_time < *last_time_) filled_ = seeded_ = primed_ = false;
-  // The time since the last update: none on the first, nor after the water went back.
-  const double elapsed = last_time_ && simulated_time > *last_time_ ? simulated_time - *last_time_ : 0.0;
-  last_time_ = simulated_time;
+  went_back(steps);
+  // The simulated time since the last update: none on the first, nor after the water went back.
+  const double elapsed = last_steps_ ? static_cast<double>(steps - *last_steps_) * model.physics.dt : 0.0;
+  last_steps_ = steps;
   const gpu::Buffer& from = buffers_[current_];
   current_ ^= 1u;
   const gpu::Buffer& to = buffers_[current_];
@@ -61,13 +60,25 @@ const gpu::Buffer& FoamPass::prepare(std::uint32_t slot, const gpu::Buffer& stat
   // No stir until there are displacements to move from (the first update, or the first after the
   // water went back, only records them).
   const bool moving = primed_ && elapsed > 0;
+  const double wave_speed = std::sqrt(model.physics.stiffness / model.physics.mass);
   pushes_[slot] = {.grid = {rows_, cols_, stride, pitch},
                       .update = {static_cast<float>(std::exp(-elapsed / fs::kFoamFade)),
                                  static_cast<float>(moving ? fs::kFoamRate * elapsed : 0.0),
                                  static_cast<float>(std::min(fs::kFoamSpread * elapsed, 0.5)),
-                                 static_cast<float>(moving ? 1.0 / (wave_speed_ * elapsed) : 0.0)}};
+                                 static_cast<float>(moving ? 1.0 / (wave_speed * elapsed) : 0.0)}};
   primed_ = true;
   return to;
+}
+
+void FoamPass::skip(std::int64_t steps) {
+  went_back(steps);
+  primed_ = false;  // the displacements of the last update are stale by the next
+}
+
+void FoamPass::went_back(std::int64_t steps) {
+  if (!last_steps_ || steps >= *last_steps_) return;
+  filled_ = seeded_ = primed_ = false;  // the water went back (reset, an earlier state): no foam
+  last_steps_ = steps;
 }
 
 void FoamPass::declare(const FrameContext& /*frame*/, PassDeclaration& d) {
@@ -78,6 +89,11 @@ void FoamPass::declare(const FrameContext& /*frame*/, PassDeclaration& d) {
 void FoamPass::record(const vk::raii::CommandBuffer& cmd, const FrameContext& frame) {
   const std::uint32_t slot = frame.slot;
   if (!filled_) {  // both buffers zero, or the adopted foam, before the first update reads one
+    // After the other frame in flight's update and draw, which may still use them (a reset).
+    const vk::MemoryBarrier2 free{.srcStageMask = S::eComputeShader | S::eVertexShader,
+                                  .srcAccessMask = A::eShaderWrite,
+                                  .dstStageMask = S::eClear | S::eCopy, .dstAccessMask = A::eTransferWrite};
+    cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &free});
     cmd.fillBuffer(*last_.buffer, 0, VK_WHOLE_SIZE, 0);
     for (const gpu::Buffer& b : buffers_) {
       if (seeded_)
@@ -93,7 +109,7 @@ void FoamPass::record(const vk::raii::CommandBuffer& cmd, const FrameContext& fr
   cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline_.pipeline);
   cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipeline_.layout, 0, *sets_[slot], nullptr);
   cmd.pushConstants<FoamPush>(*pipeline_.layout, vk::ShaderStageFlagBits::eCompute, 0, pushes_[slot]);
-  cmd.dispatch(gpu::group_count(rows_ * cols_, POND_FOAM_LOCAL_X), 1, 1);
+  cmd.dispatch(gpu::group_count(cols_, POND_FOAM_LOCAL_X), rows_, 1);
 }
 
 void FoamPass::adopt(Carried c) {
@@ -103,7 +119,7 @@ void FoamPass::adopt(Carried c) {
   std::memcpy(seed_.mapped, c.foam.data(), c.foam.size() * sizeof(float));
   seed_.flush(ctx_);
   seeded_ = true;
-  last_time_ = c.time;
+  last_steps_ = c.steps;
 }
 
 std::vector<float> FoamPass::read() const {

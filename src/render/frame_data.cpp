@@ -41,15 +41,15 @@ FrameRing::FrameRing(const gpu::Context& ctx, vk::DescriptorSetLayout set_layout
   }
   using U = vk::ImageUsageFlagBits;
   const vk::Extent2D one{1, 1};
-  placeholders_.color = create_image(ctx, one, kReflectionFormat, U::eSampled, vk::ImageAspectFlagBits::eColor,
+  placeholders_.reflection = create_image(ctx, one, kReflectionFormat, U::eSampled, vk::ImageAspectFlagBits::eColor,
                                      "placeholder colour");
-  placeholders_.depth = create_image(ctx, one, kShadowFormat, U::eSampled, vk::ImageAspectFlagBits::eDepth,
+  placeholders_.shadow = create_image(ctx, one, kShadowFormat, U::eSampled, vk::ImageAspectFlagBits::eDepth,
                                      "placeholder depth");
   placeholders_.submerged = create_image(ctx, one, kSubmergedFormat, U::eSampled, vk::ImageAspectFlagBits::eColor,
                                          "placeholder submerged layer");
   ctx.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {  // never written: only their layout matters
     std::array<vk::ImageMemoryBarrier2, 3> to_read;
-    const Image* images[] = {&placeholders_.color, &placeholders_.depth, &placeholders_.submerged};
+    const Image* images[] = {&placeholders_.reflection, &placeholders_.shadow, &placeholders_.submerged};
     for (std::size_t k = 0; k < to_read.size(); ++k)
       to_read[k] = {.dstStageMask = S::eFragmentShader, .dstAccessMask = vk::AccessFlagBits2::eShaderSampledRead,
                     .oldLayout = vk::ImageLayout::eUndefined, .newLayout = vk::ImageLayout::eShaderReadOnlyOptimal,

@@ -39,9 +39,9 @@ class DeletionQueue {
 // submerged layer (their passes are off and made nothing): 1 x 1 images in the shader-read layout
 // that the pipelines of such a frame never sample.
 struct Placeholders {
-  Image color;      // kReflectionFormat
-  Image depth;      // kShadowFormat
-  Image submerged;  // kSubmergedFormat
+  Image reflection;  // kReflectionFormat
+  Image shadow;      // kShadowFormat
+  Image submerged;   // kSubmergedFormat
 };
 
 // The images the water's set binds this frame (shared/water_render.h).

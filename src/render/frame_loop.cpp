@@ -65,8 +65,10 @@ struct FrameLoop::Impl {
     VisibleDraws draws;
     FrameStats stats;
     std::uint64_t state_revision = 0, generation = 0;
+    PassSet passes{};  // recorded before the main pass
   };
   std::optional<Prepared> prepared;
+  PassSet last_passes{};  // the last drawn frame's, the main pass among them
 
   Impl(const gpu::Context& c, const scene::Scene& s, const sim::Session& drawn, const gpu::GpuSolvers* gpu,
        vk::Format format)
@@ -106,7 +108,7 @@ struct FrameLoop::Impl {
                                session.model().basin.floor_depth, session.model().basin.land_height});
     // Each pass's target made when the frame first has it; a frame without binds a placeholder.
     const Placeholders& none = frames.placeholders();
-    FrameSetImages images{*none.color.view, *none.depth.view, *caustics.map(f.slot).view, *none.submerged.view};
+    FrameSetImages images{*none.reflection.view, *none.shadow.view, *caustics.map(f.slot).view, *none.submerged.view};
     if (f.plan.reflection) {
       ensure_layer_target(ctx, d.reflection, reflection_extent(extent), kReflectionFormat, "reflection");
       images.reflection = *d.reflection.color.view;
@@ -123,8 +125,10 @@ struct FrameLoop::Impl {
     geometry.cull_land(f.slot, f.view_proj, w, h, f.plan.shadow_rects,
                        {static_cast<int>(mirror.width), static_cast<int>(mirror.height)}, f.draws);
     // Without foam the water reads none: any buffer of a float per node stands in for it.
+    if (!f.plan.foam) foam.skip(session.steps_done());
     const gpu::Buffer& foam_drawn =
-        f.plan.foam ? foam.prepare(f.slot, *f.water.state, f.water.stride, f.water.pitch, session.simulated_seconds())
+        f.plan.foam ? foam.prepare(f.slot, *f.water.state, f.water.stride, f.water.pitch, session.model(),
+                                   session.steps_done())
                     : *f.water.normals;
     write_frame_set(ctx, d, *f.water.state, *f.water.normals, foam_drawn, images, *nearest_sampler, *shadow_sampler);
     caustics.bind(f.slot, *f.water.state, *f.water.normals);
@@ -134,7 +138,7 @@ struct FrameLoop::Impl {
     std::memcpy(d.uniforms.mapped, &u, sizeof u);
     d.uniforms.flush(ctx);
     timestamps.begin_frame(cmd, f.slot);
-    record_early_passes(cmd, context(f, base), caustics, foam,
+    f.passes = record_early_passes(cmd, context(f, base), caustics, foam,
                         view::caustics_push(session.model(), view::unit(f.lighting.sun), session.model().basin.floor_depth,
                                             f.water.stride, f.water.pitch));
   }
@@ -193,6 +197,8 @@ struct FrameLoop::Impl {
       f.stats.lod_ms += ms_since(t);
     }
     frames.ensure_depth(f.slot, target.extent);
+    last_passes = f.passes;
+    last_passes[static_cast<std::size_t>(TimedPass::main)] = true;
     {
       const PassTimestamps::Scope timed = timestamps.scope(cmd, f.slot, TimedPass::main);
       record_main_pass(cmd, context(f, info(cmd, f)), target,
@@ -240,9 +246,10 @@ lod::Camera FrameLoop::default_camera(int width, int height) const {
   return view::scene_camera(impl_->scene.camera, impl_->session.model(), width, height);
 }
 const FoamPass& FrameLoop::foam() const { return impl_->foam; }
+PassSet FrameLoop::passes_recorded() const { return impl_->last_passes; }
 void FrameLoop::adopt_foam(FoamPass::Carried carried) { impl_->foam.adopt(std::move(carried)); }
 std::size_t FrameLoop::pass_targets() const {
-  std::size_t made = impl_->foam.made() ? 3 : 0;
+  std::size_t made = impl_->foam.buffers_made();
   for (std::uint32_t k = 0; k < kFramesInFlight; ++k) {
     const FrameData& d = impl_->frames[k];
     for (const Image* i : {&d.reflection.color, &d.reflection.depth, &d.submerged.color, &d.submerged.depth, &d.shadow})

@@ -97,9 +97,13 @@ class FrameLoop {
   // session goes on from an old one's (FoamPass::carry) instead of no foam.
   const FoamPass& foam() const;
   void adopt_foam(FoamPass::Carried carried);
+  // Which passes the last drawn frame recorded (the main pass and those its plan had), whether or
+  // not the device has timestamps to time them.
+  PassSet passes_recorded() const;
   // How many images and buffers the passes before the main one have made so far, over every frame
-  // slot (the reflection's and the submerged layer's two images, the shadow map, the foam's three
-  // buffers): none while every effect is off. For tests and tools.
+  // slot (the reflection's and the submerged layer's two images, the shadow map, the foam's
+  // buffers; not the caustics maps, made with the loop): none while every effect is off. For tests
+  // and tools.
   std::size_t pass_targets() const;
   // The last prepared frame's LOD triangles before culling (node indices; empty for the full mesh).
   std::span<const std::uint32_t> lod_triangles() const;

@@ -71,8 +71,8 @@ struct PassBarriers {
 PassBarriers plan_pass_barriers(std::span<const PassDeclaration> declared, const vk::MemoryBarrier2& before);
 
 // Records the enabled passes of `passes` in order, each timed, with the barriers
-// plan_pass_barriers gives for their declarations.
-void record_pass_list(const vk::raii::CommandBuffer& cmd, const FrameContext& frame, std::span<FramePass* const> passes,
-                      const vk::MemoryBarrier2& before);
+// plan_pass_barriers gives for their declarations; returns which it recorded.
+PassSet record_pass_list(const vk::raii::CommandBuffer& cmd, const FrameContext& frame,
+                         std::span<FramePass* const> passes, const vk::MemoryBarrier2& before);
 
 }  // namespace pond::render

@@ -21,16 +21,8 @@ struct LayerTarget {
 bool ensure_layer_target(const gpu::Context& ctx, LayerTarget& t, vk::Extent2D extent, vk::Format format,
                          const std::string& name);
 
-// The barriers before the pass: both images to attachment layouts (contents discarded).
-std::array<vk::ImageMemoryBarrier2, 2> layer_pass_begin(const LayerTarget& t);
-// Records the pass (between layer_pass_begin() and layer_pass_end(), which the caller records,
-// batched with other passes' barriers: render/barrier_batch.h): cleared, viewport and scissor the
-// target's, `draw()` inside.
+// Records the pass that draws into `t` (its images in attachment layouts: the barriers are the
+// pass list's, render/frame_pass.h): cleared, viewport and scissor the target's, `draw()` inside.
 void record_layer_pass(const vk::raii::CommandBuffer& cmd, const LayerTarget& t, const std::function<void()>& draw);
-// The barrier after it: the colour image to shader-read for the water's fragment shader.
-vk::ImageMemoryBarrier2 layer_pass_end(const LayerTarget& t);
-// A frame that does not draw the layer still binds it (the descriptor set is whole): the barrier
-// that puts its colour image in the shader-read layout.
-vk::ImageMemoryBarrier2 layer_unused(const LayerTarget& t);
 
 }  // namespace pond::render

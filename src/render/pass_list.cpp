@@ -50,7 +50,10 @@ void to_read(const PassWrite& w, vk::PipelineStageFlags2 extra, BarrierBatch& ba
 PassBarriers plan_pass_barriers(std::span<const PassDeclaration> declared, const vk::MemoryBarrier2& before) {
   PassBarriers out;
   out.before.resize(declared.size());
-  if (declared.empty()) return out;
+  if (declared.empty()) {  // no pass: the frame's other dependencies still hold for the main pass
+    out.after.memory.push_back(before);
+    return out;
+  }
   out.before.front().memory.push_back(before);
   std::vector<PassWrite> pending;  // written since the frame began, not yet made readable
   std::size_t open = 0;            // the pass whose batch the next outputs' first barriers join
@@ -71,8 +74,8 @@ PassBarriers plan_pass_barriers(std::span<const PassDeclaration> declared, const
   return out;
 }
 
-void record_pass_list(const vk::raii::CommandBuffer& cmd, const FrameContext& frame, std::span<FramePass* const> passes,
-                      const vk::MemoryBarrier2& before) {
+PassSet record_pass_list(const vk::raii::CommandBuffer& cmd, const FrameContext& frame,
+                         std::span<FramePass* const> passes, const vk::MemoryBarrier2& before) {
   std::vector<FramePass*> enabled;
   std::vector<PassDeclaration> declared;
   for (FramePass* p : passes)
@@ -87,6 +90,9 @@ void record_pass_list(const vk::raii::CommandBuffer& cmd, const FrameContext& fr
     enabled[k]->record(cmd, frame);
   }
   barriers.after.record(cmd);
+  PassSet recorded{};
+  for (const FramePass* p : enabled) recorded[static_cast<std::size_t>(p->timed())] = true;
+  return recorded;
 }
 
 }  // namespace pond::render

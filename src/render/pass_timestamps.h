@@ -16,6 +16,7 @@ namespace pond::render {
 enum class TimedPass { caustics, foam, shadow, reflection, submerged, main, count };
 inline constexpr std::size_t kTimedPasses = static_cast<std::size_t>(TimedPass::count);
 const char* timed_pass_name(TimedPass pass);  // "caustics", "foam", ..., "main"
+using PassSet = std::array<bool, kTimedPasses>;  // by TimedPass
 
 // One frame's pass times in milliseconds; `ran[p]` when pass p was recorded and its times read.
 struct PassTimes {

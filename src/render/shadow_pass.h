@@ -24,22 +24,13 @@ namespace pond::render {
 
 inline constexpr vk::Format kShadowFormat = vk::Format::eD16Unorm;  // sampled and attachment on every device
 
-// (Re)creates `map` (one frame slot's, idle) when it is not `size` x `size` texels; size 0: keeps any
-// map there is (a frame without shadows), else makes the smallest.
+// (Re)creates `map` (one frame slot's, idle) when it is not `size` x `size` texels.
 void ensure_shadow_map(const gpu::Context& ctx, Image& map, std::uint32_t size);
 
-// The barrier before the pass: the map to the depth-attachment layout (contents discarded).
-vk::ImageMemoryBarrier2 shadow_pass_begin(const Image& map);
-// Records the pass (between shadow_pass_begin() and shadow_pass_end(), which the caller records,
-// batched with other passes' barriers: render/barrier_batch.h): the map cleared to the far depth,
-// viewport and scissor the map's, `draw()` inside.
+// Records the pass (the map in the depth-attachment layout: the barriers are the pass list's,
+// render/frame_pass.h): the map cleared to the far depth, viewport and scissor the map's, `draw()`
+// inside.
 void record_shadow_pass(const vk::raii::CommandBuffer& cmd, const Image& map, const std::function<void()>& draw);
-// The barrier after it: the map to shader-read for the land's and the water's fragment shaders.
-vk::ImageMemoryBarrier2 shadow_pass_end(const Image& map);
-
-// A frame without a map still binds it (the descriptor set is whole): the barrier that puts it in
-// the shader-read layout its pipelines (which never read it) declare.
-vk::ImageMemoryBarrier2 shadow_map_unused(const Image& map);
 
 // The depth-compare sampler (less or equal: lit where no deeper than the stored caster), nearest,
 // clamped to an opaque white (far) border.

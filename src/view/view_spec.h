@@ -29,7 +29,7 @@ struct Effects {
   bool shadows = true;      // the sun's shadows of the trees and the bodies on the land and the water
   bool submerged = true;    // the islands' walls and the bodies under clear water, refracted
   bool foam = true;         // white water where the surface is stirred, drifting and fading
-  static constexpr Effects none() { return {false, false, false, false, false}; }
+  static constexpr Effects none();  // every one off (below kEffects)
   bool operator==(const Effects&) const = default;
 };
 
@@ -49,6 +49,12 @@ inline constexpr EffectEntry kEffects[] = {
     {"submerged", &Effects::submerged, "U", "under water", "under water (islands' walls, bodies, refracted) on / off"},
     {"foam", &Effects::foam, "F", "foam", "foam (white water where the surface is stirred) on / off"},
 };
+
+constexpr Effects Effects::none() {
+  Effects off;
+  for (const EffectEntry& e : kEffects) off.*e.flag = false;
+  return off;
+}
 
 // "view": what a rendered frame advances and which effects it draws (the floor and the land are
 // the water's: sim::BasinSpec, the scene's "basin").

@@ -108,8 +108,10 @@ TEST_F(FoamTest, TheWakeOfADraggedSphereWhitensAndFadesAfterItStops) {
   EXPECT_TRUE(on.d.loop.foam().made());
   // Foam off: the pass made nothing and recorded nothing (no foam time in the frames' timestamps).
   EXPECT_FALSE(off.d.loop.foam().made());
-  EXPECT_FALSE(off.d.loop.timestamps().last().ran[static_cast<std::size_t>(render::TimedPass::foam)]);
-  // The foam is drawn, never fed back: the same bits with it and without.
+  EXPECT_FALSE(off.d.loop.passes_recorded()[static_cast<std::size_t>(render::TimedPass::foam)]);
+  EXPECT_TRUE(on.d.loop.passes_recorded()[static_cast<std::size_t>(render::TimedPass::foam)]);
+  // The foam is drawn, never fed back: the same bits with it and without (a guard for the future,
+  // should a pass ever share the solver's buffers).
   const std::vector<float> a = sim::to_world_interleaved(on.d.session.state(), on.d.session.model());
   const std::vector<float> b = sim::to_world_interleaved(off.d.session.state(), off.d.session.model());
   ASSERT_EQ(a.size(), b.size());
@@ -117,7 +119,7 @@ TEST_F(FoamTest, TheWakeOfADraggedSphereWhitensAndFadesAfterItStops) {
 }
 
 // The foam is gathered from the displacements the frame draws, which a CPU solver's frame has
-// too: the same foam, bit for bit, whichever solver moves the water (and after a switch).
+// too: the same foam, bit for bit, whichever solver moves the water.
 TEST_F(FoamTest, TheCpuSolversFoamIsTheGpuSolvers) {
   Pond gpu(ctx(), kDraggedThroughFoam, true), cpu(ctx(), kDraggedThroughFoam, true, {.gpu = false});
   gpu.run(60, 2);
@@ -128,6 +130,19 @@ TEST_F(FoamTest, TheCpuSolversFoamIsTheGpuSolvers) {
   for (float f : a) most = std::max(most, static_cast<double>(f));
   EXPECT_GT(most, 0.5);  // the wake has foam to compare
   EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(float)), 0);
+}
+
+// Water that goes back in time (reset to rest) starts again without foam, and gathers it again.
+TEST_F(FoamTest, WaterResetToRestHasNoFoam) {
+  Pond p(ctx(), kDraggedThroughFoam, true);
+  p.run(60, 2);
+  p.d.session.reset();
+  p.d.loop.frame(p.target.frame_target(), p.view);
+  for (float f : p.d.loop.foam().read()) ASSERT_EQ(f, 0.0f);
+  p.run(60, 2);
+  double most = 0;
+  for (float f : p.d.loop.foam().read()) most = std::max(most, static_cast<double>(f));
+  EXPECT_GT(most, 0.5);
 }
 
 // Calm water gathers no foam, and no foam changes no pixel.
