@@ -45,7 +45,8 @@ ctest --preset sanitize-gpu -j "$jobs"
 # The parity runs at 0.3 of their length here; the plain run below keeps the full length. The
 # installed and packaged pond's tests (label install) run their own layer; the plain run has them.
 stage "GPU tests under the discrete-GPU layer"
-validation_json=$(dpkg -L vulkan-validationlayers | grep -m1 'VkLayer_khronos_validation.json$')
+# The host's layer (arm64's is installed too, for the arm64 Vulkan stage).
+validation_json=$(dpkg -L "vulkan-validationlayers:$(dpkg --print-architecture)" | grep -m1 'VkLayer_khronos_validation.json$')
 for pass in "1 gpu" "0 gpu_solver|parity"; do
   read -r denorm label <<< "$pass"
   VK_LAYER_PATH="$(dirname "$validation_json"):$PWD/build/layers" \
