@@ -8,6 +8,18 @@
 
 namespace pond::render {
 
+// The one image barrier every pass and target builds: the whole image (one mip, one layer) of
+// `aspect` from layout `from` to `to`, queue families ignored.
+inline vk::ImageMemoryBarrier2 image_barrier(vk::Image image, vk::ImageAspectFlags aspect, vk::ImageLayout from,
+                                             vk::ImageLayout to, vk::PipelineStageFlags2 src_stage,
+                                             vk::AccessFlags2 src_access, vk::PipelineStageFlags2 dst_stage,
+                                             vk::AccessFlags2 dst_access) {
+  return {.srcStageMask = src_stage, .srcAccessMask = src_access, .dstStageMask = dst_stage, .dstAccessMask = dst_access,
+          .oldLayout = from, .newLayout = to, .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+          .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .image = image,
+          .subresourceRange = {.aspectMask = aspect, .baseMipLevel = 0, .levelCount = 1, .baseArrayLayer = 0, .layerCount = 1}};
+}
+
 struct BarrierBatch {
   std::vector<vk::MemoryBarrier2> memory;
   std::vector<vk::ImageMemoryBarrier2> images;

@@ -3,6 +3,7 @@
 #include <cstring>
 #include <string>
 
+#include "render/barrier_batch.h"
 #include "render/render_shaders.h"
 
 namespace pond::render {
@@ -15,14 +16,6 @@ namespace cs = shared::caustics;
 
 constexpr vk::ImageSubresourceRange kColor{.aspectMask = vk::ImageAspectFlagBits::eColor, .baseMipLevel = 0,
                                            .levelCount = 1, .baseArrayLayer = 0, .layerCount = 1};
-
-vk::ImageMemoryBarrier2 map_barrier(vk::Image image, L from, L to, vk::PipelineStageFlags2 src_stage,
-                                    vk::AccessFlags2 src_access, vk::PipelineStageFlags2 dst_stage,
-                                    vk::AccessFlags2 dst_access) {
-  return {.srcStageMask = src_stage, .srcAccessMask = src_access, .dstStageMask = dst_stage, .dstAccessMask = dst_access,
-          .oldLayout = from, .newLayout = to, .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-          .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .image = image, .subresourceRange = kColor};
-}
 
 constexpr vk::DescriptorType kBindings[] = {vk::DescriptorType::eUniformTexelBuffer,
                                             vk::DescriptorType::eUniformTexelBuffer, vk::DescriptorType::eStorageImage};
@@ -56,12 +49,12 @@ CausticsPass::CausticsPass(const gpu::Context& ctx, const sim::WaterModel& model
   // Every map to its resting layout, holding calm water's 1.
   ctx.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
     for (const Slot& s : slots_) {
-      const auto to_clear = map_barrier(*s.map.image, L::eUndefined, L::eTransferDstOptimal, S::eNone, {}, S::eClear,
+      const auto to_clear = image_barrier(*s.map.image, vk::ImageAspectFlagBits::eColor, L::eUndefined, L::eTransferDstOptimal, S::eNone, {}, S::eClear,
                                         A::eTransferWrite);
       cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &to_clear});
       cmd.clearColorImage(*s.map.image, L::eTransferDstOptimal,
                           vk::ClearColorValue{.float32 = std::array<float, 4>{cs::kCausticsUnit, cs::kCausticsUnit, cs::kCausticsUnit, cs::kCausticsUnit}}, kColor);
-      const auto to_read = map_barrier(*s.map.image, L::eTransferDstOptimal, L::eShaderReadOnlyOptimal, S::eClear,
+      const auto to_read = image_barrier(*s.map.image, vk::ImageAspectFlagBits::eColor, L::eTransferDstOptimal, L::eShaderReadOnlyOptimal, S::eClear,
                                        A::eTransferWrite, S::eFragmentShader, A::eShaderSampledRead);
       cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &to_read});
     }
@@ -101,7 +94,7 @@ void CausticsPass::bind(std::uint32_t slot, const gpu::Buffer& state, const gpu:
 vk::ImageMemoryBarrier2 CausticsPass::begin_barrier(std::uint32_t slot) const {
   // The map from the water's sampling (this slot's previous frame, or creation) to the compute write;
   // its contents are all rewritten.
-  return map_barrier(*slots_[slot].map.image, L::eUndefined, L::eGeneral, S::eFragmentShader, {}, S::eComputeShader,
+  return image_barrier(*slots_[slot].map.image, vk::ImageAspectFlagBits::eColor, L::eUndefined, L::eGeneral, S::eFragmentShader, {}, S::eComputeShader,
                      A::eShaderStorageWrite);
 }
 
@@ -113,7 +106,7 @@ void CausticsPass::record_dispatch(const vk::raii::CommandBuffer& cmd, std::uint
 }
 
 vk::ImageMemoryBarrier2 CausticsPass::end_barrier(std::uint32_t slot) const {
-  return map_barrier(*slots_[slot].map.image, L::eGeneral, L::eShaderReadOnlyOptimal, S::eComputeShader,
+  return image_barrier(*slots_[slot].map.image, vk::ImageAspectFlagBits::eColor, L::eGeneral, L::eShaderReadOnlyOptimal, S::eComputeShader,
                      A::eShaderStorageWrite, S::eFragmentShader, A::eShaderSampledRead);
 }
 
@@ -132,14 +125,14 @@ std::vector<float> CausticsPass::read_map(std::uint32_t slot) const {
                                                   gpu::MemoryUse::readback, "caustics map readback");
   ctx_.device().waitIdle();
   ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
-    const auto to_copy = map_barrier(*s.map.image, L::eShaderReadOnlyOptimal, L::eTransferSrcOptimal, S::eAllCommands,
+    const auto to_copy = image_barrier(*s.map.image, vk::ImageAspectFlagBits::eColor, L::eShaderReadOnlyOptimal, L::eTransferSrcOptimal, S::eAllCommands,
                                      A::eShaderStorageWrite, S::eCopy, A::eTransferRead);
     cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &to_copy});
     cmd.copyImageToBuffer(*s.map.image, L::eTransferSrcOptimal, *readback.buffer,
                           vk::BufferImageCopy{.imageSubresource = {.aspectMask = vk::ImageAspectFlagBits::eColor,
                                                                    .mipLevel = 0, .baseArrayLayer = 0, .layerCount = 1},
                                               .imageExtent = {e.width, e.height, 1}});
-    const auto back = map_barrier(*s.map.image, L::eTransferSrcOptimal, L::eShaderReadOnlyOptimal, S::eCopy, {},
+    const auto back = image_barrier(*s.map.image, vk::ImageAspectFlagBits::eColor, L::eTransferSrcOptimal, L::eShaderReadOnlyOptimal, S::eCopy, {},
                                   S::eFragmentShader, A::eShaderSampledRead);
     const vk::BufferMemoryBarrier2 to_host{.srcStageMask = S::eCopy, .srcAccessMask = A::eTransferWrite,
                                            .dstStageMask = S::eHost, .dstAccessMask = A::eHostRead,

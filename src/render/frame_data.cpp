@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "render/barrier_batch.h"
 #include "render/reflection_pass.h"
 #include "render/render_layout.h"
 #include "render/shadow_pass.h"
@@ -48,16 +49,13 @@ FrameRing::FrameRing(const gpu::Context& ctx, vk::DescriptorSetLayout set_layout
   placeholders_.submerged = create_image(ctx, one, kSubmergedFormat, U::eSampled, vk::ImageAspectFlagBits::eColor,
                                          "placeholder submerged layer");
   ctx.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {  // never written: only their layout matters
-    std::array<vk::ImageMemoryBarrier2, 3> to_read;
-    const Image* images[] = {&placeholders_.reflection, &placeholders_.shadow, &placeholders_.submerged};
-    for (std::size_t k = 0; k < to_read.size(); ++k)
-      to_read[k] = {.dstStageMask = S::eFragmentShader, .dstAccessMask = vk::AccessFlagBits2::eShaderSampledRead,
-                    .oldLayout = vk::ImageLayout::eUndefined, .newLayout = vk::ImageLayout::eShaderReadOnlyOptimal,
-                    .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                    .image = *images[k]->image,
-                    .subresourceRange = {.aspectMask = k == 1 ? vk::ImageAspectFlagBits::eDepth : vk::ImageAspectFlagBits::eColor,
-                                         .baseMipLevel = 0, .levelCount = 1, .baseArrayLayer = 0, .layerCount = 1}};
-    cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 3, .pImageMemoryBarriers = to_read.data()});
+    BarrierBatch to_read;
+    for (const Image* i : {&placeholders_.reflection, &placeholders_.shadow, &placeholders_.submerged})
+      to_read.images.push_back(image_barrier(
+          *i->image, i == &placeholders_.shadow ? vk::ImageAspectFlagBits::eDepth : vk::ImageAspectFlagBits::eColor,
+          vk::ImageLayout::eUndefined, vk::ImageLayout::eShaderReadOnlyOptimal, S::eNone, {}, S::eFragmentShader,
+          vk::AccessFlagBits2::eShaderSampledRead));
+    to_read.record(cmd);
   });
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/barrier_batch.h"
 #include "render/color_format.h"
 
 namespace pond::render {
@@ -10,15 +11,6 @@ namespace {
 
 using S = vk::PipelineStageFlagBits2;
 using A = vk::AccessFlagBits2;
-
-vk::ImageMemoryBarrier2 layout_barrier(vk::Image image, vk::ImageAspectFlags aspect, vk::ImageLayout from,
-                                       vk::ImageLayout to, vk::PipelineStageFlags2 src_stage, vk::AccessFlags2 src_access,
-                                       vk::PipelineStageFlags2 dst_stage, vk::AccessFlags2 dst_access) {
-  return {.srcStageMask = src_stage, .srcAccessMask = src_access, .dstStageMask = dst_stage, .dstAccessMask = dst_access,
-          .oldLayout = from, .newLayout = to, .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-          .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .image = image,
-          .subresourceRange = {.aspectMask = aspect, .baseMipLevel = 0, .levelCount = 1, .baseArrayLayer = 0, .layerCount = 1}};
-}
 
 vk::Rect2D scissor(const view::PixelRect& r) {
   return {{r.x0, r.y0}, {static_cast<std::uint32_t>(r.x1 - r.x0), static_cast<std::uint32_t>(r.y1 - r.y0)}};
@@ -46,10 +38,10 @@ void record_main_pass(const vk::raii::CommandBuffer& cmd, const FrameContext& fr
   // The target and the depth buffer to their attachment layouts. The color barrier waits at color
   // output, where the swapchain's acquire semaphore is waited.
   const vk::ImageMemoryBarrier2 images[] = {
-      layout_barrier(target.image, vk::ImageAspectFlagBits::eColor, target.old_layout,
+      image_barrier(target.image, vk::ImageAspectFlagBits::eColor, target.old_layout,
                      vk::ImageLayout::eColorAttachmentOptimal, S::eColorAttachmentOutput, {}, S::eColorAttachmentOutput,
                      A::eColorAttachmentWrite | A::eColorAttachmentRead),
-      layout_barrier(*d.depth.image, vk::ImageAspectFlagBits::eDepth, vk::ImageLayout::eUndefined,
+      image_barrier(*d.depth.image, vk::ImageAspectFlagBits::eDepth, vk::ImageLayout::eUndefined,
                      vk::ImageLayout::eDepthAttachmentOptimal, S::eLateFragmentTests, A::eDepthStencilAttachmentWrite,
                      S::eEarlyFragmentTests | S::eLateFragmentTests,
                      A::eDepthStencilAttachmentRead | A::eDepthStencilAttachmentWrite)};
@@ -126,7 +118,7 @@ void record_main_pass(const vk::raii::CommandBuffer& cmd, const FrameContext& fr
   // upload of a new state) must not overwrite the state, normals or bodies while this pass (or the
   // caustics pass) reads them (write-after-read: an execution dependency).
   const bool present = target.final_layout == vk::ImageLayout::ePresentSrcKHR;
-  const vk::ImageMemoryBarrier2 end_image = layout_barrier(
+  const vk::ImageMemoryBarrier2 end_image = image_barrier(
       target.image, vk::ImageAspectFlagBits::eColor, vk::ImageLayout::eColorAttachmentOptimal, target.final_layout,
       S::eColorAttachmentOutput, A::eColorAttachmentWrite, present ? S::eNone : S::eCopy,
       present ? A::eNone : A::eTransferRead);

@@ -19,15 +19,10 @@ void to_written(const PassWrite& w, BarrierBatch& batch) {
     return;
   }
   // An image's earlier readers (or, scratch, its earlier writers) done before it is written again.
-  batch.images.push_back({.srcStageMask = w.scratch ? w.stages : w.read_stages,
-                          .srcAccessMask = w.scratch ? w.access & (A2::eDepthStencilAttachmentWrite | A2::eColorAttachmentWrite |
-                                                                   A2::eShaderStorageWrite)
-                                                     : vk::AccessFlags2{},
-                          .dstStageMask = w.stages, .dstAccessMask = w.access, .oldLayout = vk::ImageLayout::eUndefined, .newLayout = w.layout,
-                          .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                          .image = w.image,
-                          .subresourceRange = {.aspectMask = w.aspect, .baseMipLevel = 0, .levelCount = 1,
-                                               .baseArrayLayer = 0, .layerCount = 1}});
+  const vk::AccessFlags2 writes = A2::eDepthStencilAttachmentWrite | A2::eColorAttachmentWrite | A2::eShaderStorageWrite;
+  batch.images.push_back(image_barrier(w.image, w.aspect, vk::ImageLayout::eUndefined, w.layout,
+                                       w.scratch ? w.stages : w.read_stages, w.scratch ? w.access & writes : vk::AccessFlags2{},
+                                       w.stages, w.access));
 }
 
 // An output from being written to being read (`extra`: the stages of a later pass that reads it too).
@@ -37,12 +32,8 @@ void to_read(const PassWrite& w, vk::PipelineStageFlags2 extra, BarrierBatch& ba
                             .dstAccessMask = w.read_access});
     return;
   }
-  batch.images.push_back({.srcStageMask = w.stages, .srcAccessMask = w.access, .dstStageMask = w.read_stages | extra,
-                          .dstAccessMask = w.read_access, .oldLayout = w.layout, .newLayout = w.read_layout,
-                          .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                          .image = w.image,
-                          .subresourceRange = {.aspectMask = w.aspect, .baseMipLevel = 0, .levelCount = 1,
-                                               .baseArrayLayer = 0, .layerCount = 1}});
+  batch.images.push_back(image_barrier(w.image, w.aspect, w.layout, w.read_layout, w.stages, w.access,
+                                       w.read_stages | extra, w.read_access));
 }
 
 }  // namespace

@@ -16,7 +16,4 @@ namespace pond::render {
 // read texel by texel (nearest) and never blended.
 inline constexpr vk::Format kSubmergedFormat = vk::Format::eR32G32Uint;
 
-// The layer's size: the frame's when the frame draws it, else 1 x 1 (bound, never read).
-inline vk::Extent2D submerged_extent(vk::Extent2D frame, bool drawn) { return drawn ? frame : vk::Extent2D{1, 1}; }
-
 }  // namespace pond::render
