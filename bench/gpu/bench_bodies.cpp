@@ -44,8 +44,8 @@ double process_cpu_seconds() {
 // Alternates `steps` steps of `plain` and of `bodies` per iteration; counters: each one's ms per
 // step and the bodies' cost, in real and in CPU time.
 // The steps done: the CPU solver's return done, the GPU solver's are only submitted.
-void finish(const sim::CpuSolver&) {}
-void finish(const gpu::GpuSolver& s) { s.finish(); }
+void finish(sim::CpuSolver&) {}
+void finish(gpu::GpuSolver& s) { s.finish(); }
 
 template <class Solver>
 void alternate(benchmark::State& state, Solver& plain, Solver& bodies, std::int64_t steps) {

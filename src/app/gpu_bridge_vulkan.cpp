@@ -23,11 +23,11 @@ class HeadlessGpuSolver final : public sim::Solver {
   std::int64_t steps_done() const override { return solver_.steps_done(); }
   void advance(std::int64_t steps) override { solver_.advance(steps); }
   void perturb(const sim::PerturbationTable& table) override { solver_.perturb(table); }
-  sim::WaterState read_state() const override { return solver_.read_state(); }
-  sim::HostDisplacements displacements() const override { return solver_.displacements(); }
+  sim::WaterState read_state() override { return solver_.read_state(); }
+  sim::HostDisplacements displacements() override { return solver_.displacements(); }
   void set_state(const sim::WaterState& state, std::int64_t steps) override { solver_.set_state(state, steps); }
-  std::vector<sim::BodyState> read_bodies() const override { return solver_.read_bodies(); }
-  const sim::HostSnapshot* host_snapshot() const override { return solver_.host_snapshot(); }
+  std::vector<sim::BodyState> read_bodies() override { return solver_.read_bodies(); }
+  const sim::HostSnapshot* host_snapshot() override { return solver_.host_snapshot(); }
   void set_body_models(std::vector<sim::BodyModel> bodies) override { solver_.set_body_models(std::move(bodies)); }
   std::string engine() const override { return solver_.engine(); }
   std::string identity() const override { return solver_.identity(); }

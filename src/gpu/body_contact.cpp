@@ -51,7 +51,6 @@ BodyContact::BodyContact(const Context& ctx, const sim::WaterModel& model, std::
   constants_ = create_buffer(ctx_, count * sizeof(BodyConstants), BU::eStorageBuffer | BU::eTransferDst,
                              MemoryUse::device, "body constants");
   upload_constants();
-  readback_ = create_buffer(ctx_, count * sizeof(BodyState), BU::eTransferDst, MemoryUse::readback, "bodies readback");
   schedule_ = create_buffer(ctx_, static_cast<vk::DeviceSize>(max_substeps_) * regions * count * sizeof(BodyState),
                             BU::eStorageBuffer, MemoryUse::upload, "kinematic body schedule");
   land_ = create_buffer(ctx_, model_.land.size() * sizeof(std::uint32_t), BU::eStorageBuffer | BU::eTransferDst,
@@ -108,25 +107,6 @@ void BodyContact::set_bodies(const std::vector<sim::BodyState>& bodies) {
     throw InternalError("GpuSolver::set_state: " + std::to_string(bodies.size()) + " bodies for a model of " +
                      std::to_string(model_.bodies.size()));
   upload(ctx_, bodies_, std::as_bytes(std::span(bodies)));
-}
-
-std::vector<sim::BodyState> BodyContact::read() const {
-  ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
-    using S = vk::PipelineStageFlagBits2;
-    using A = vk::AccessFlagBits2;
-    const vk::MemoryBarrier2 before{.srcStageMask = S::eComputeShader | S::eTransfer,
-                                    .srcAccessMask = A::eShaderWrite | A::eTransferWrite,
-                                    .dstStageMask = S::eTransfer, .dstAccessMask = A::eTransferRead};
-    cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &before});
-    cmd.copyBuffer(*bodies_.buffer, *readback_.buffer, vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = bodies_.size});
-    const vk::MemoryBarrier2 to_host{.srcStageMask = S::eTransfer, .srcAccessMask = A::eTransferWrite,
-                                     .dstStageMask = S::eHost, .dstAccessMask = A::eHostRead};
-    cmd.pipelineBarrier2(vk::DependencyInfo{.memoryBarrierCount = 1, .pMemoryBarriers = &to_host});
-  });
-  readback_.invalidate(ctx_);
-  std::vector<sim::BodyState> out(model_.bodies.size());
-  std::memcpy(out.data(), readback_.mapped, bodies_.size);
-  return out;
 }
 
 void BodyContact::write_schedule(std::int64_t first_step, std::int64_t steps, std::uint32_t region) {

@@ -31,7 +31,6 @@ class BodyContact {
 
   void set_bodies(const std::vector<sim::BodyState>& bodies);  // uploads them (waits)
   void upload_constants();  // the model's bodies' constants, where they changed (waits then)
-  std::vector<sim::BodyState> read() const;                     // copies them back (waits)
   // The kinematic bodies' positions for the substeps of steps [first_step, first_step + steps),
   // written and flushed into `region` for the next submission (at most max_substeps substeps; no
   // submission in flight may read that region).
@@ -49,7 +48,7 @@ class BodyContact {
   std::size_t pitch_, stride_;
   std::int64_t max_substeps_;
   ComputePipeline pipe_;
-  Buffer bodies_, constants_, schedule_, land_, readback_;  // readback_: read()'s, kept (the demo reads every frame)
+  Buffer bodies_, constants_, schedule_, land_;
   std::vector<shared::BodyConstants> uploaded_;       // what constants_ holds
   vk::raii::DescriptorPool pool_ = nullptr;
   std::vector<vk::raii::DescriptorSet> sets_;  // sets_[c]: state buffer c

@@ -32,7 +32,7 @@ DisplacementReadback::DisplacementReadback(const Context& ctx, std::size_t pitch
 }
 
 void DisplacementReadback::record_gather(const vk::raii::CommandBuffer& cmd, const Buffer& state, const Buffer& packed,
-                                         const core::NodeRuns& runs, std::uint32_t slot) const {
+                                         const core::NodeRuns& runs, std::uint32_t slot) {
   std::vector<GatherRun> list;
   list.reserve(runs.runs().size());
   std::uint32_t at = 0;
@@ -63,7 +63,7 @@ void DisplacementReadback::record_gather(const vk::raii::CommandBuffer& cmd, con
   cmd.dispatch(std::min<std::uint32_t>(push.runs, 65535), 3, 1);
 }
 
-void DisplacementReadback::unpack(const core::NodeRuns& runs, const float* packed) const {
+void DisplacementReadback::unpack(const core::NodeRuns& runs, const float* packed) {
   if (host_.empty()) host_.assign(3 * stride_, 0.0f);
   for (std::size_t c = 0; c < 3; ++c)
     for (const core::NodeRun& r : runs.runs()) {
@@ -85,7 +85,7 @@ void DisplacementReadback::record(const vk::raii::CommandBuffer& cmd, const Buff
   if (!keep_->empty()) record_gather(cmd, state, s.displacements, *keep_, index);
 }
 
-sim::HostDisplacements DisplacementReadback::host(const Submission& s, std::uint32_t index) const {
+sim::HostDisplacements DisplacementReadback::host(Submission& s, std::uint32_t index) {
   const std::optional<core::NodeRuns>& copied = copied_[index];
   if (!copied) {  // all of it, read where it landed
     if (!s.displacements_seen) s.displacements.invalidate(ctx_);
@@ -103,13 +103,13 @@ sim::HostDisplacements DisplacementReadback::host(const Submission& s, std::uint
   return {u, u + stride_, u + 2 * stride_, pitch_};
 }
 
-bool DisplacementReadback::holds(const Submission& s, std::uint32_t index, const core::GridWindow& w) const {
+bool DisplacementReadback::holds(Submission& s, std::uint32_t index, const core::GridWindow& w) {
   host(s, index);
   return !copied_[index] || held_.covers(w);
 }
 
-void DisplacementReadback::bring(const Submission& s, std::uint32_t index, const Buffer& state,
-                                 std::span<const core::GridWindow> windows) const {
+void DisplacementReadback::bring(Submission& s, std::uint32_t index, const Buffer& state,
+                                 std::span<const core::GridWindow> windows) {
   host(s, index);
   if (!copied_[index]) return;  // s copied every node
   const core::NodeRuns missing = core::NodeRuns(windows).minus(held_);

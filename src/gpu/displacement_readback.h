@@ -29,31 +29,31 @@ class DisplacementReadback {
   // Records submission s's copy of `state` (ux | uy | uz first) into its readback buffer.
   void record(const vk::raii::CommandBuffer& cmd, const Buffer& state, const Submission& s, std::uint32_t index);
   // Submission s (finished, ring index `index`) as the host holds it: unpacked on first call.
-  sim::HostDisplacements host(const Submission& s, std::uint32_t index) const;
+  sim::HostDisplacements host(Submission& s, std::uint32_t index);
   // Whether host() of s holds every node of w.
-  bool holds(const Submission& s, std::uint32_t index, const core::GridWindow& w) const;
+  bool holds(Submission& s, std::uint32_t index, const core::GridWindow& w);
   // Copies the nodes of `windows` that host() of s lacks from `state` (s's state, unchanged since)
   // and waits for them.
-  void bring(const Submission& s, std::uint32_t index, const Buffer& state, std::span<const core::GridWindow> windows) const;
+  void bring(Submission& s, std::uint32_t index, const Buffer& state, std::span<const core::GridWindow> windows);
 
  private:
   // Records the packing of `runs` of `state` into `packed` (component by component, runs in order)
   // with runs buffer and descriptor set `slot` (idle).
   void record_gather(const vk::raii::CommandBuffer& cmd, const Buffer& state, const Buffer& packed,
-                     const core::NodeRuns& runs, std::uint32_t slot) const;
-  void unpack(const core::NodeRuns& runs, const float* packed) const;
+                     const core::NodeRuns& runs, std::uint32_t slot);
+  void unpack(const core::NodeRuns& runs, const float* packed);
 
   const Context& ctx_;
   std::size_t pitch_, stride_;
   std::optional<core::NodeRuns> keep_;
   std::array<std::optional<core::NodeRuns>, SubmissionRing::kSize> copied_;  // per ring entry
-  mutable std::vector<float> host_;  // the unpacked nodes, in the state's layout
-  mutable core::NodeRuns held_;      // which of host_ are current
-  mutable Buffer fetched_;           // bring()'s readback, grown when needed
+  std::vector<float> host_;  // the unpacked nodes, in the state's layout
+  core::NodeRuns held_;      // which of host_ are current
+  Buffer fetched_;           // bring()'s readback, grown when needed
   ComputePipeline gather_;
   vk::raii::DescriptorPool pool_ = nullptr;
   // Per ring entry, then bring()'s: the runs' list (grown when needed) and the gather's set.
-  mutable std::array<Buffer, SubmissionRing::kSize + 1> runs_;
+  std::array<Buffer, SubmissionRing::kSize + 1> runs_;
   std::vector<vk::raii::DescriptorSet> sets_;
 };
 

@@ -145,11 +145,11 @@ void GpuSolver::perturb(const sim::PerturbationTable& table) {
   append_entries(table, static_cast<std::size_t>(model_.cols), pitch_, splash_entries_);
 }
 
-void GpuSolver::flush_splashes() const {
+void GpuSolver::flush_splashes() {
   if (!splash_pushes_.empty()) submit(0, drawn_);
 }
 
-void GpuSolver::submit(std::int64_t steps, bool publish) const {
+void GpuSolver::submit(std::int64_t steps, bool publish) {
   Submission& s = ring_->begin();
   snapshots_->harvest(ring_->finished_serial());
   const std::uint32_t region = ring_->index_of(s);
@@ -169,22 +169,22 @@ void GpuSolver::submit(std::int64_t steps, bool publish) const {
   ring_->submit();
 }
 
-const Submission& GpuSolver::published() const {
+Submission& GpuSolver::published() {
   const Submission* last = ring_->last();
   if (!last || !last->published) submit(0, true);
-  const Submission& done = *ring_->finish_last();
+  Submission& done = *ring_->finish_last();
   snapshots_->harvest(ring_->finished_serial());
   return done;
 }
 
-const sim::HostSnapshot* GpuSolver::host_snapshot() const {
+const sim::HostSnapshot* GpuSolver::host_snapshot() {
   snapshots_->harvest(ring_->finished_serial());
   return &snapshots_->latest();
 }
 
 // The splashes queued since the last submission, from the entry's own table (made larger first if
 // they do not fit; the entry is idle).
-void GpuSolver::record_splashes(const vk::raii::CommandBuffer& cmd, Submission& s) const {
+void GpuSolver::record_splashes(const vk::raii::CommandBuffer& cmd, Submission& s) {
   if (splash_pushes_.empty()) return;
   const vk::DeviceSize bytes = splash_entries_.size() * sizeof(PerturbEntry);
   if (!*s.splashes.buffer || s.splashes.size < bytes) {
@@ -204,7 +204,7 @@ void GpuSolver::record_splashes(const vk::raii::CommandBuffer& cmd, Submission& 
 
 // One step: its scheduled perturbations, then its substeps, each dispatch behind a barrier, the
 // bodies' contact after each substep.
-void GpuSolver::record_step(const vk::raii::CommandBuffer& cmd, std::uint32_t region, std::int64_t first_step) const {
+void GpuSolver::record_step(const vk::raii::CommandBuffer& cmd, std::uint32_t region, std::int64_t first_step) {
   while (next_perturbation_ < model_.perturbations.size() && model_.perturbations[next_perturbation_].step == step_) {
     const sim::PerturbationTable& t = model_.perturbations[next_perturbation_];
     const PerturbPush push = push_for(t, table_first_[next_perturbation_], stride_);
@@ -266,7 +266,7 @@ void GpuSolver::upload_state(const sim::WaterState& state, std::int64_t steps_do
 
 // Copies `src` into a new host-visible buffer after every earlier submission's writes, and makes
 // the copy visible to the host.
-Buffer GpuSolver::copy_to_host(const Buffer& src, const char* name) const {
+Buffer GpuSolver::copy_to_host(const Buffer& src, const char* name) {
   flush_splashes();
   Buffer staging = create_buffer(ctx_, src.size, BU::eTransferDst, MemoryUse::readback, name);
   ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
@@ -280,11 +280,11 @@ Buffer GpuSolver::copy_to_host(const Buffer& src, const char* name) const {
   return staging;
 }
 
-sim::WaterState GpuSolver::read_state() const {
+sim::WaterState GpuSolver::read_state() {
   return guard_gpu(ctx_, "while reading the water's state back", [&] { return read_state_now(); });
 }
 
-sim::WaterState GpuSolver::read_state_now() const {
+sim::WaterState GpuSolver::read_state_now() {
   const Buffer staging = copy_to_host(state_[cur_], "state readback");
   sim::WaterState s(model_.nodes());
   s.bodies = read_bodies();
@@ -297,8 +297,8 @@ sim::WaterState GpuSolver::read_state_now() const {
   return s;
 }
 
-sim::HostDisplacements GpuSolver::displacements() const {
-  const Submission& s = guard_gpu(ctx_, "while waiting for the water's step", [&]() -> const Submission& { return published(); });
+sim::HostDisplacements GpuSolver::displacements() {
+  Submission& s = guard_gpu(ctx_, "while waiting for the water's step", [&]() -> Submission& { return published(); });
   if (readback_) return readback_->host(s, ring_->index_of(s));
   const float* u = static_cast<const float*>(state_[cur_].mapped);  // read in place (lavapipe)
   return {u, u + stride_, u + 2 * stride_, pitch_};
@@ -323,30 +323,30 @@ std::vector<core::GridWindow> within(std::span<const core::GridWindow> windows, 
 
 }  // namespace
 
-void GpuSolver::keep_on_host(std::optional<std::vector<core::GridWindow>> windows) const {
+void GpuSolver::keep_on_host(std::optional<std::vector<core::GridWindow>> windows) {
   if (!readback_) return;
   if (!windows) return readback_->keep(std::nullopt);
   readback_->keep(core::NodeRuns(within(*windows, model_.rows, model_.cols)));
 }
 
-bool GpuSolver::holds_on_host(const core::GridWindow& w) const {
+bool GpuSolver::holds_on_host(const core::GridWindow& w) {
   if (!readback_) return true;
   const core::GridWindow in = within(w, model_.rows, model_.cols);
-  const Submission& s = guard_gpu(ctx_, "while waiting for the water's step", [&]() -> const Submission& { return published(); });
+  Submission& s = guard_gpu(ctx_, "while waiting for the water's step", [&]() -> Submission& { return published(); });
   return in.rows == 0 || readback_->holds(s, ring_->index_of(s), in);
 }
 
-void GpuSolver::bring_to_host(std::span<const core::GridWindow> windows) const {
+void GpuSolver::bring_to_host(std::span<const core::GridWindow> windows) {
   if (!readback_) return;
   guard_gpu(ctx_, "while reading the water's nodes back", [&] {
-    const Submission& s = published();
+    Submission& s = published();
     readback_->bring(s, ring_->index_of(s), state_[cur_], within(windows, model_.rows, model_.cols));
   });
 }
 
-std::vector<sim::BodyState> GpuSolver::read_bodies() const {
+std::vector<sim::BodyState> GpuSolver::read_bodies() {
   if (!contact_) return {};
-  const Submission* s = &guard_gpu(ctx_, "while reading the bodies back", [&]() -> const Submission& { return published(); });
+  Submission* s = &guard_gpu(ctx_, "while reading the bodies back", [&]() -> Submission& { return published(); });
   if (!s->bodies_seen) s->bodies.invalidate(ctx_);
   s->bodies_seen = true;
   std::vector<sim::BodyState> out(model_.bodies.size());
@@ -354,7 +354,7 @@ std::vector<sim::BodyState> GpuSolver::read_bodies() const {
   return out;
 }
 
-sim::Normals GpuSolver::normals() const {
+sim::Normals GpuSolver::normals() {
   const Buffer staging = guard_gpu(ctx_, "while reading the normals back", [&] {
     published();  // the normals of the current state
     return copy_to_host(normals_, "normals readback");
@@ -386,9 +386,9 @@ void GpuSolver::track_tiles(bool on) {
   submit(0, true);  // the current state's bounds (and its splashes)
 }
 
-std::span<const sim::TileBounds> GpuSolver::tile_bounds() const {
+std::span<const sim::TileBounds> GpuSolver::tile_bounds() {
   if (!tiles_) return {};
-  const Submission& s = guard_gpu(ctx_, "while waiting for the water's step", [&]() -> const Submission& { return published(); });
+  Submission& s = guard_gpu(ctx_, "while waiting for the water's step", [&]() -> Submission& { return published(); });
   return tiles_->host_bounds(ring_->index_of(s));
 }
 

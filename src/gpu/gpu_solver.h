@@ -60,25 +60,25 @@ class GpuSolver : public sim::Solver {
   // Replaces the state and the step counter (uploads it, waiting; then submits its normals and
   // copies). Splashes not yet submitted are dropped, as the state they applied to.
   void set_state(const sim::WaterState& state, std::int64_t steps_done) override;
-  sim::WaterState read_state() const override;  // copies the state back (waits)
-  sim::HostDisplacements displacements() const override;
+  sim::WaterState read_state() override;  // copies the state back (waits)
+  sim::HostDisplacements displacements() override;
   // Where the state is not host-readable in place, submissions copy only the windows kept
   // (gpu/displacement_readback.h); in place (lavapipe) every node is held anyway.
-  void keep_on_host(std::optional<std::vector<core::GridWindow>> windows) const override;
-  bool holds_on_host(const core::GridWindow& w) const override;
-  void bring_to_host(std::span<const core::GridWindow> windows) const override;
-  std::vector<sim::BodyState> read_bodies() const override;
-  const sim::HostSnapshot* host_snapshot() const override;
+  void keep_on_host(std::optional<std::vector<core::GridWindow>> windows) override;
+  bool holds_on_host(const core::GridWindow& w) override;
+  void bring_to_host(std::span<const core::GridWindow> windows) override;
+  std::vector<sim::BodyState> read_bodies() override;
+  const sim::HostSnapshot* host_snapshot() override;
 
   // Substeps between the host's copies of the state (StateSnapshots; 0: none, for benchmarks).
   void set_host_copy_interval(std::int64_t substeps) { snapshots_->set_interval(substeps); }
   // Waits until every submission finished (benchmarks time the steps, not their submission).
-  void finish() const { ring_->finish_all(); }
+  void finish() { ring_->finish_all(); }
   std::size_t stride() const { return stride_; }  // floats between the state's component arrays
   // Nodes between two rows of the state buffers: cols rounded up to 4 (gpu/water_layout.h).
   std::size_t pitch() const { return pitch_; }
   // The normals of the current state, read back (waits).
-  sim::Normals normals() const;
+  sim::Normals normals();
   // What the renderer draws from, as the last submission left it: the state now (its first
   // 3 * stride floats are ux | uy | uz), the normals, the bodies (null without bodies).
   const Buffer& state_buffer() const { return state_[cur_]; }
@@ -92,7 +92,7 @@ class GpuSolver : public sim::Solver {
   void track_tile_bounds(bool on) override;
   // The current state's tile bounds on the host, tile (a, b) at b * tiles_x + a, valid as
   // displacements() is (it waits for the last submission, as that does); empty while not tracked.
-  std::span<const sim::TileBounds> tile_bounds() const override;
+  std::span<const sim::TileBounds> tile_bounds() override;
   // The same in the GPU's buffer as the last submission left it (a renderer copies or binds it;
   // as normals_buffer(): storage, transfer source), and their grid; null while not tracked.
   const Buffer* tile_bounds_buffer() const { return tiles_ ? &tiles_->bounds() : nullptr; }
@@ -103,7 +103,7 @@ class GpuSolver : public sim::Solver {
  private:
   void create_buffers();
   void upload_state(const sim::WaterState& state, std::int64_t steps_done);  // set_state's work
-  sim::WaterState read_state_now() const;                                     // read_state's
+  sim::WaterState read_state_now();                                           // read_state's
   void track_tiles(bool on);                                                  // track_tile_bounds's
   void map_state_where_host_readable();
   void upload_kinds_and_perturbations();
@@ -112,15 +112,15 @@ class GpuSolver : public sim::Solver {
   std::int64_t steps_per_submit() const;
   // One submission: the queued splashes, `steps` steps, and with `publish` the normals and the
   // host copies.
-  void submit(std::int64_t steps, bool publish) const;
+  void submit(std::int64_t steps, bool publish);
   // The last submission, finished and published (one that publishes submitted first if it was not).
-  const Submission& published() const;
-  void record_splashes(const vk::raii::CommandBuffer& cmd, Submission& s) const;
-  void record_step(const vk::raii::CommandBuffer& cmd, std::uint32_t region, std::int64_t first_step) const;
+  Submission& published();
+  void record_splashes(const vk::raii::CommandBuffer& cmd, Submission& s);
+  void record_step(const vk::raii::CommandBuffer& cmd, std::uint32_t region, std::int64_t first_step);
   void record_copies(const vk::raii::CommandBuffer& cmd, const Submission& s) const;
   // The splashes queued since the last submission, submitted (read_*() see them).
-  void flush_splashes() const;
-  Buffer copy_to_host(const Buffer& src, const char* name) const;
+  void flush_splashes();
+  Buffer copy_to_host(const Buffer& src, const char* name);
 
   const Context& ctx_;
   sim::WaterModel model_;
@@ -137,12 +137,11 @@ class GpuSolver : public sim::Solver {
   std::unique_ptr<SubmissionRing> ring_;
   std::unique_ptr<DisplacementReadback> readback_;  // where the state is not read in place
   std::unique_ptr<StateSnapshots> snapshots_;
-  // Mutable: the const readers submit the queued splashes first (flush_splashes()).
-  mutable std::vector<PerturbEntry> splash_entries_;          // queued, node = row * pitch + col
-  mutable std::vector<PerturbPush> splash_pushes_;           // one per queued splash (first: into entries)
-  mutable int cur_ = 0;
-  mutable std::size_t next_perturbation_ = 0;
-  mutable std::int64_t step_ = 0;
+  std::vector<PerturbEntry> splash_entries_;  // queued, node = row * pitch + col
+  std::vector<PerturbPush> splash_pushes_;    // one per queued splash (first: into entries)
+  int cur_ = 0;
+  std::size_t next_perturbation_ = 0;
+  std::int64_t step_ = 0;
 };
 
 }  // namespace pond::gpu

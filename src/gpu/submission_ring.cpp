@@ -31,7 +31,7 @@ SubmissionRing::SubmissionRing(const Context& ctx, vk::DeviceSize displacement_b
   }
 }
 
-void SubmissionRing::finish(const Submission& s) const {
+void SubmissionRing::finish(Submission& s) {
   if (!s.in_flight) return;
   // A wait even when the fence may have signalled: one call a finished submission, whatever the
   // timing, so the waits a frame makes are counted the same on every run (docs/layer.md).
@@ -62,15 +62,15 @@ void SubmissionRing::submit() {
   next_ = (next_ + 1) % kSize;
 }
 
-const Submission* SubmissionRing::finish_last() const {
+Submission* SubmissionRing::finish_last() {
   if (last_ < 0) return nullptr;
-  const Submission& s = entries_[static_cast<std::size_t>(last_)];
+  Submission& s = entries_[static_cast<std::size_t>(last_)];
   finish(s);
   return &s;
 }
 
-void SubmissionRing::finish_all() const {
-  for (const Submission& s : entries_) finish(s);
+void SubmissionRing::finish_all() {
+  for (Submission& s : entries_) finish(s);
 }
 
 }  // namespace pond::gpu

@@ -20,9 +20,9 @@ struct Submission {
   Buffer splashes;       // upload: the entries of the splashes it applies (grown when needed)
   bool published = false;  // it computed the normals and made the host's copies
   std::uint64_t serial = 0;  // its place in submission order, from 1
-  mutable bool in_flight = false;
+  bool in_flight = false;
   // Its copies invalidated since it finished (each once: the host reads them several times).
-  mutable bool displacements_seen = false, bodies_seen = false;
+  bool displacements_seen = false, bodies_seen = false;
 };
 
 class SubmissionRing {
@@ -38,19 +38,19 @@ class SubmissionRing {
   std::uint32_t index_of(const Submission& s) const { return static_cast<std::uint32_t>(&s - entries_.data()); }
   // Ends and submits the command buffer begun last; its entry becomes last().
   void submit();
-  // The entry submitted last (null before any), and the same finished: polls its fence, waits only
-  // while it runs.
+  // The entry submitted last (null before any), and the same finished: waits for its fence while
+  // it runs.
   const Submission* last() const { return last_ < 0 ? nullptr : &entries_[static_cast<std::size_t>(last_)]; }
-  const Submission* finish_last() const;
-  // Every entry finished.
-  void finish_all() const;
+  Submission* finish_last();
+  // Every entry finished (waits).
+  void finish_all();
   // The serial the next submission gets, and the newest serial known finished: a queue runs its
   // submissions in order, so every earlier one has finished too.
   std::uint64_t next_serial() const { return next_serial_; }
   std::uint64_t finished_serial() const { return finished_; }
 
  private:
-  void finish(const Submission& s) const;
+  void finish(Submission& s);
 
   const Context& ctx_;
   vk::raii::CommandPool pool_ = nullptr;
@@ -58,7 +58,7 @@ class SubmissionRing {
   std::uint32_t next_ = 0;
   int last_ = -1;
   std::uint64_t next_serial_ = 1;
-  mutable std::uint64_t finished_ = 0;
+  std::uint64_t finished_ = 0;
 };
 
 }  // namespace pond::gpu

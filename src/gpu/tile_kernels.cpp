@@ -85,7 +85,7 @@ TileKernels::TileKernels(const Context& ctx, const sim::WaterModel& model, const
   ctx_.device().updateDescriptorSets(writes, nullptr);
 }
 
-void TileKernels::record(const vk::raii::CommandBuffer& cmd, int c, std::uint32_t slot) const {
+void TileKernels::record(const vk::raii::CommandBuffer& cmd, int c, std::uint32_t slot) {
   water_.record_normals_with(cmd, normals_pipe_, normals_sets_[c]);  // its barrier after: columns readable
   const TilesPush push{.cols = static_cast<std::uint32_t>(grid_.cols), .tiles_x = static_cast<std::uint32_t>(grid_.tiles_x),
                        .tiles = static_cast<std::uint32_t>(grid_.tiles())};
@@ -99,7 +99,7 @@ void TileKernels::record(const vk::raii::CommandBuffer& cmd, int c, std::uint32_
   cmd.copyBuffer(*bounds_.buffer, *host_[slot].buffer, vk::BufferCopy{.srcOffset = 0, .dstOffset = 0, .size = bounds_.size});
 }
 
-std::span<const TileBounds> TileKernels::host_bounds(std::uint32_t slot) const {
+std::span<const TileBounds> TileKernels::host_bounds(std::uint32_t slot) {
   if (host_.empty()) return {static_cast<const TileBounds*>(bounds_.mapped), grid_.tiles()};
   if (!host_seen_[slot]) host_[slot].invalidate(ctx_);
   host_seen_[slot] = true;

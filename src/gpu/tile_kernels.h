@@ -30,9 +30,9 @@ class TileKernels {
   // barriers before and after the normals), and their copy for the host into `slot`'s where the
   // bounds are not read in place. The submission's closing barrier must follow, which makes them
   // visible to the host, later commands and transfers (GpuSolver::record_copies).
-  void record(const vk::raii::CommandBuffer& cmd, int c, std::uint32_t slot) const;
+  void record(const vk::raii::CommandBuffer& cmd, int c, std::uint32_t slot);
   // The bounds the submission of `slot` left, on the host (it must have finished).
-  std::span<const TileBounds> host_bounds(std::uint32_t slot) const;
+  std::span<const TileBounds> host_bounds(std::uint32_t slot);
 
   // Tile (a, b) at b * tiles_x + a; storage and transfer source.
   const Buffer& bounds() const { return bounds_; }
@@ -45,7 +45,7 @@ class TileKernels {
   // Per slot, the host's copy of bounds_ (none where bounds_ is mapped: read in place, lavapipe),
   // and whether it was invalidated since its submission finished.
   std::vector<Buffer> host_;
-  mutable std::vector<bool> host_seen_;
+  std::vector<bool> host_seen_;
   ComputePipeline normals_pipe_, tiles_pipe_;
   vk::raii::DescriptorPool pool_ = nullptr;
   std::vector<vk::raii::DescriptorSet> normals_sets_;  // [c]: state c

@@ -178,7 +178,7 @@ std::size_t LodBuilder::build(const NodePositions& p, const TileRanges& ranges, 
   for (std::uint32_t id : grid_.always_split_ids()) state_[id] = kActive;
   if (whole_ && p.fetch) {
     const core::GridWindow all{0, 0, rows(), cols()};
-    if (!p.fetch->holds(all)) p.fetch->bring(std::span(&all, 1)), ++stats_.brought;
+    if (!p.fetch->holds(all)) p.fetch->bring_and_wait(std::span(&all, 1)), ++stats_.brought;
   }
   ranged_corners_.clear(), corners_brought_.clear();
   if (p.fetch) held_.assign(static_cast<std::size_t>(blocks_.blocks_x()) * static_cast<std::size_t>(blocks_.blocks_y()), 0);
@@ -250,7 +250,7 @@ void LodBuilder::refine() {
       corners_brought_.push_back(id);
     }
     ranged_corners_.clear();
-    positions_.fetch->bring(to_bring_);
+    positions_.fetch->bring_and_wait(to_bring_);
     ++stats_.brought;
     for (std::size_t k = 0; k < blocks; ++k) held_at(to_bring_[k].col0 / kBlockCells, to_bring_[k].row0 / kBlockCells) = 1;
     to_bring_.clear();
@@ -278,7 +278,7 @@ void LodBuilder::read_corners(std::span<const std::uint32_t> triangles) {
   std::vector<core::GridWindow> missing;
   for (std::size_t k = blocks; k < reads.size(); ++k)
     if (!positions_.fetch->holds(reads[k])) missing.push_back(reads[k]);
-  if (!missing.empty()) positions_.fetch->bring(missing), ++stats_.brought;
+  if (!missing.empty()) positions_.fetch->bring_and_wait(missing), ++stats_.brought;
   reads_ = std::move(reads);
 }
 

@@ -18,13 +18,14 @@
 namespace pond::lod {
 
 // Where only parts of the positions are on the host (a discrete GPU's state, read back in
-// windows): which parts are, and a way to bring more. Null in NodePositions: every node is.
+// windows): which parts are, and a way to bring more. Null in NodePositions: every node is. The
+// frame that draws implements it (render/water_source.h); not const: bringing waits.
 class NodeFetch {
  public:
-  virtual bool holds(const core::GridWindow& w) const = 0;
+  virtual bool holds(const core::GridWindow& w) = 0;
   // Brings the nodes of `windows` to the host (for a GPU: one copy, one wait); the views onto the
   // positions stay valid and show them.
-  virtual void bring(std::span<const core::GridWindow> windows) const = 0;
+  virtual void bring_and_wait(std::span<const core::GridWindow> windows) = 0;
 
  protected:
   ~NodeFetch() = default;
@@ -38,7 +39,7 @@ struct NodePositions {
   int rows = 0, cols = 0;
   float grid_spacing = 0;  // > 0: displacements in grid units from the rest grid of this spacing
   std::size_t row_pitch = 0;  // nodes from a row's first node to the next row's (>= cols)
-  const NodeFetch* fetch = nullptr;  // where not every node is on the host (see above)
+  NodeFetch* fetch = nullptr;  // where not every node is on the host (see above)
 
   std::size_t nodes() const { return static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols); }
 };

@@ -97,7 +97,7 @@ struct BodyDrawable::Impl {
 
   void prepare(const FrameInfo& info) {
     const sim::Session& session = info.session;
-    const std::vector<sim::BodyState> states = session.bodies();  // the host's copy of what is drawn
+    const std::span<const sim::BodyState> states = info.body_states;  // the host's copy of what is drawn
     const auto& specs = session.water().bodies;
     const double h = session.model().spacing;
     count = info.bodies ? static_cast<std::uint32_t>(std::min({states.size(), specs.size(), scene::kMaxBodies})) : 0;

@@ -117,7 +117,7 @@ void CausticsPass::record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot
   cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &to_read});
 }
 
-std::vector<float> CausticsPass::read_map(std::uint32_t slot) const {
+std::vector<float> CausticsPass::read_map(std::uint32_t slot) {
   const Slot& s = slots_[slot];
   const vk::Extent2D e = s.map.extent;
   const vk::DeviceSize bytes = vk::DeviceSize{e.width} * e.height * 4;

@@ -55,7 +55,7 @@ class CausticsPass {
   // Copies slot `slot`'s map back (waits for the device to be idle first) and decodes it: width x
   // height floats, the light relative to calm water at each texel's first corner (x, y), row y =
   // map row y (for tests and tools).
-  std::vector<float> read_map(std::uint32_t slot) const;
+  std::vector<float> read_map(std::uint32_t slot);
 
  private:
   struct Slot {

@@ -122,7 +122,7 @@ void FoamPass::adopt(Carried c) {
   last_steps_ = c.steps;
 }
 
-std::vector<float> FoamPass::read() const {
+std::vector<float> FoamPass::read() {
   std::vector<float> out;
   if (!made()) return out;
   const gpu::Buffer& b = buffers_[current_];

@@ -45,14 +45,14 @@ class FoamPass final : public FramePass {
   bool made() const { return static_cast<bool>(*pipeline_.pipeline); }
   std::size_t buffers_made() const { return made() ? buffers_.size() + 1 : 0; }  // with last_
   // The newest foam read back (waits for the device to be idle first; for tests and tools).
-  std::vector<float> read() const;
+  std::vector<float> read();
   // What a new pass goes on from (the frame loop made again for new constraints, the same grid): the
   // foam read back, as read(), and the step of its update.
   struct Carried {
     std::vector<float> foam;
     std::optional<std::int64_t> steps;
   };
-  Carried carry() const { return {read(), last_steps_}; }
+  Carried carry() { return {read(), last_steps_}; }
   // Before the first update: start from `c` instead of no foam (ignored unless it is rows * cols).
   void adopt(Carried c);
 

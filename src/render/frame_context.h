@@ -29,7 +29,7 @@ struct FrameContext {
 };
 
 inline FrameInfo FrameContext::info(const vk::raii::CommandBuffer& cmd) const {
-  return {cmd, base.slot, base.view_proj, base.eye, base.extent, base.session, base.lighting, base.bodies,
+  return {cmd, base.slot, base.view_proj, base.eye, base.extent, base.session, base.lighting, base.body_states, base.bodies,
           base.pixel_scale};
 }
 

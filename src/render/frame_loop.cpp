@@ -39,7 +39,7 @@ double ms_since(std::chrono::steady_clock::time_point& t) {
 struct FrameLoop::Impl {
   const gpu::Context& ctx;
   const scene::Scene scene;
-  const sim::Session& session;
+  sim::Session& session;
   vk::Format color_format;
   WaterPipelines pipes;
   vk::raii::Sampler nearest_sampler = nullptr, shadow_sampler = nullptr;
@@ -70,7 +70,7 @@ struct FrameLoop::Impl {
   std::optional<Prepared> prepared;
   PassSet last_passes{};  // the last drawn frame's, the main pass among them
 
-  Impl(const gpu::Context& c, const scene::Scene& s, const sim::Session& drawn, const gpu::GpuSolvers* gpu,
+  Impl(const gpu::Context& c, const scene::Scene& s, sim::Session& drawn, const gpu::GpuSolvers* gpu,
        vk::Format format)
       : ctx(c), scene(s), session(drawn), color_format(format), pipes(create_water_pipelines(c, format, kDepthFormat)),
         nearest_sampler(create_reflection_sampler(c)), shadow_sampler(create_shadow_sampler(c)),
@@ -84,7 +84,7 @@ struct FrameLoop::Impl {
     return {cmd, f.slot, f.view_proj.data(),
             {static_cast<float>(f.camera.eye[0]), static_cast<float>(f.camera.eye[1]), static_cast<float>(f.camera.eye[2])},
             {static_cast<std::uint32_t>(f.camera.width), static_cast<std::uint32_t>(f.camera.height)},
-            session, f.lighting, f.water.bodies};
+            session, f.lighting, water.bodies(), f.water.bodies};
   }
   FrameContext context(const Prepared& f, const FrameInfo& base) {
     return {f.slot, frames[f.slot], f.plan, f.draws, geometry, pipes, drawables, base, timestamps};
@@ -143,8 +143,12 @@ struct FrameLoop::Impl {
                                             f.water.stride, f.water.pitch));
   }
 
+  // The LOD of the positions sync() left on the host: the nodes the frame kept there (keep_on_host,
+  // from the last frame's reads); where it needs others, it brings them through `fetch`, waiting.
   void build_lod(Prepared& f) {
-    geometry.build_water(f.slot, water.positions(), water.tile_bounds(), f.camera, f.view_proj, f.view.lod_tolerance_px,
+    lod::NodePositions positions = water.positions();
+    positions.fetch = water.fetch();
+    geometry.build_water(f.slot, positions, water.tile_bounds(), f.camera, f.view_proj, f.view.lod_tolerance_px,
                          f.plan.shadow_rects, f.draws);
     water.keep_on_host(geometry.lod_reads());  // what the next frames' compute copies back
     f.stats.triangles = f.draws.water_triangles;
@@ -215,7 +219,7 @@ struct FrameLoop::Impl {
   }
 };
 
-FrameLoop::FrameLoop(const gpu::Context& ctx, const scene::Scene& scene, const sim::Session& session,
+FrameLoop::FrameLoop(const gpu::Context& ctx, const scene::Scene& scene, sim::Session& session,
                      const gpu::GpuSolvers* gpu, vk::Format color_format)
     : impl_(std::make_unique<Impl>(ctx, scene, session, gpu, color_format)) {}
 
@@ -234,7 +238,7 @@ FrameStats FrameLoop::frame(const FrameTarget& target, const FrameView& view) {
 FrameStats FrameLoop::prepare(const FrameView& view, vk::Extent2D extent) { return impl_->prepare(view, extent); }
 bool FrameLoop::prepared() const { return impl_->is_prepared(); }
 FrameStats FrameLoop::draw(const FrameTarget& target) { return impl_->draw(target); }
-void FrameLoop::wait_idle() const { impl_->frames.finish_all(); }
+void FrameLoop::wait_idle() { impl_->frames.finish_all(); }
 const PassTimestamps& FrameLoop::timestamps() const { return impl_->timestamps; }
 void FrameLoop::add_drawable(PassDrawable& drawable) { impl_->drawables.push_back(&drawable); }
 
@@ -245,7 +249,7 @@ vk::Format FrameLoop::color_format() const { return impl_->color_format; }
 lod::Camera FrameLoop::default_camera(int width, int height) const {
   return view::scene_camera(impl_->scene.camera, impl_->session.model(), width, height);
 }
-const FoamPass& FrameLoop::foam() const { return impl_->foam; }
+FoamPass& FrameLoop::foam() { return impl_->foam; }
 PassSet FrameLoop::passes_recorded() const { return impl_->last_passes; }
 void FrameLoop::adopt_foam(FoamPass::Carried carried) { impl_->foam.adopt(std::move(carried)); }
 std::size_t FrameLoop::pass_targets() const {

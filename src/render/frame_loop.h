@@ -4,10 +4,11 @@
 // the session (GPU compute is submitted, not waited for) and the loop draws the state its last
 // change left. It only orders the frame's parts and submits them:
 //
-//   prepare(): the frame's one wait, for the last compute (sim::Solver::displacements) -> the frame's
-//     resources (render/frame_data.h), its camera, plan (view/frame_plan.h: passes, the sun's
-//     shadow map) and uniforms (view/frame_uniforms.h) -> the passes before the main one,
-//     recorded and submitted (render/early_passes.h: caustics, shadow map, reflection) -> the
+//   prepare(): the frame's one wait, for the last compute (render/water_source.h: sync() leaves the
+//     displacements, tile bounds and bodies on the host) -> the frame's resources
+//     (render/frame_data.h), its camera, plan (view/frame_plan.h: passes, the sun's shadow map) and
+//     uniforms (view/frame_uniforms.h) -> the passes before the main one, recorded and submitted
+//     (render/early_passes.h: caustics, foam, shadow map, reflection, submerged layer) -> the
 //     visible geometry (render/visible_geometry.h: the LOD of the positions on the host, culled,
 //     streamed into the frame's index buffers) while the device draws those passes
 //   draw(target): the main pass (render/main_pass.h) into the caller's image, submitted
@@ -62,8 +63,9 @@ class FrameLoop {
   // Draws `session` (which must outlive the loop, as must the context and `gpu`, what made its GPU
   // solvers: null when it has none) as `scene` shows it (its view, lighting and camera; copied).
   // `color_format`: the format of the images draw() gets (pipelines are built for it). The land is
-  // built from the session's model now: a session given new constraints needs a new loop.
-  FrameLoop(const gpu::Context& ctx, const scene::Scene& scene, const sim::Session& session,
+  // built from the session's model now: a session given new constraints needs a new loop. The
+  // session is not const: the loop never changes its state, but reading it waits (prepare()).
+  FrameLoop(const gpu::Context& ctx, const scene::Scene& scene, sim::Session& session,
             const gpu::GpuSolvers* gpu, vk::Format color_format);
   ~FrameLoop();
   FrameLoop(const FrameLoop&) = delete;
@@ -83,7 +85,7 @@ class FrameLoop {
   // with FrameView::wait is read at once, any other when its slot is prepared again.
   const PassTimestamps& timestamps() const;
   // Waits until every submitted frame is drawn (before reading back, resizing, tearing down).
-  void wait_idle() const;
+  void wait_idle();
 
   void add_drawable(PassDrawable& drawable);  // drawn after the water (occluders before the scene), in insertion order
 
@@ -95,7 +97,7 @@ class FrameLoop {
   lod::Camera default_camera(int width, int height) const;
   // The foam's pass (render/foam_pass.h): whether it was made, its foam; a new loop of the same
   // session goes on from an old one's (FoamPass::carry) instead of no foam.
-  const FoamPass& foam() const;
+  FoamPass& foam();
   void adopt_foam(FoamPass::Carried carried);
   // Which passes the last drawn frame recorded (the main pass and those its plan had), whether or
   // not the device has timestamps to time them.

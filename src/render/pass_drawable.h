@@ -3,6 +3,7 @@
 // bodies, the demo's panel), and the per-frame values it is given.
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "gpu/buffer.h"
@@ -19,8 +20,10 @@ struct FrameInfo {
   const float* view_proj;       // column-major 4x4, Vulkan clip space (y down, depth 0..1)
   std::array<float, 3> eye;
   vk::Extent2D extent;
-  const sim::Session& session;         // what is drawn, as it is now (read only)
+  const sim::Session& session;         // what is drawn, as it is now (const: nothing here waits)
   const view::LightingSpec& lighting;  // the scene's, with the session's sun
+  // The bodies' states this frame draws, on the host (grid units): read in the frame's one wait.
+  std::span<const sim::BodyState> body_states;
   // The bodies' states this frame draws (grid units, sim::BodyState): the GPU solver's own buffer,
   // or the CPU solver's copied into the slot's; null without bodies.
   const gpu::Buffer* bodies = nullptr;

@@ -12,8 +12,15 @@ namespace {
 using BU = vk::BufferUsageFlagBits;
 }  // namespace
 
-WaterSource::WaterSource(const gpu::Context& ctx, const sim::Session& session, const gpu::GpuSolvers* gpu)
+WaterSource::WaterSource(const gpu::Context& ctx, sim::Session& session, const gpu::GpuSolvers* gpu)
     : ctx_(ctx), session_(session), gpu_(gpu) {}
+
+void WaterSource::sync() {
+  sim::Solver& solver = session_.solver();
+  displacements_ = solver.displacements();  // waits
+  tiles_ = solver.tile_bounds();            // of the same submission: no second wait
+  bodies_ = solver.read_bodies();           // the same
+}
 
 const gpu::GpuSolver* WaterSource::session_gpu() const {
   const gpu::GpuSolver* g = gpu_ ? gpu_->live() : nullptr;
@@ -21,7 +28,6 @@ const gpu::GpuSolver* WaterSource::session_gpu() const {
 }
 
 WaterSource::DrawBuffers WaterSource::prepare(std::uint32_t slot) {
-  const sim::Solver& solver = session_.solver();
   if (const gpu::GpuSolver* g = session_gpu())
     return {&g->state_buffer(), &g->normals_buffer(), g->bodies_buffer(), static_cast<std::uint32_t>(g->stride()),
             static_cast<std::uint32_t>(g->pitch())};
@@ -59,16 +65,15 @@ WaterSource::DrawBuffers WaterSource::prepare(std::uint32_t slot) {
   }
   b.state.flush(ctx_);
   b.normals.flush(ctx_);
-  const std::vector<sim::BodyState> bodies = solver.read_bodies();
-  if (!bodies.empty()) {
-    std::memcpy(b.bodies.mapped, bodies.data(), bodies.size() * sizeof(sim::BodyState));
-    b.bodies.flush(ctx_, bodies.size() * sizeof(sim::BodyState));
+  if (!bodies_.empty()) {
+    std::memcpy(b.bodies.mapped, bodies_.data(), bodies_.size() * sizeof(sim::BodyState));
+    b.bodies.flush(ctx_, bodies_.size() * sizeof(sim::BodyState));
   }
-  return {&b.state, &b.normals, bodies.empty() ? nullptr : &b.bodies, static_cast<std::uint32_t>(stride),
+  return {&b.state, &b.normals, bodies_.empty() ? nullptr : &b.bodies, static_cast<std::uint32_t>(stride),
           static_cast<std::uint32_t>(cols)};
 }
 
-void WaterSource::keep_on_host(std::optional<std::vector<core::GridWindow>> lod_reads) const {
+void WaterSource::keep_on_host(std::optional<std::vector<core::GridWindow>> lod_reads) {
   if (3 * sizeof(float) * session_.model().nodes() < kReadBackInPartsFrom) lod_reads.reset();
   session_.solver().keep_on_host(std::move(lod_reads));
 }
@@ -76,10 +81,8 @@ void WaterSource::keep_on_host(std::optional<std::vector<core::GridWindow>> lod_
 lod::NodePositions WaterSource::positions() const {
   // The LOD builder converts the displacements to world positions as it copies them.
   const sim::WaterModel& model = session_.model();
-  lod::NodePositions p = lod::grid_displacements(displacements_.ux, displacements_.uy, displacements_.uz, model.rows,
-                                                 model.cols, model.spacing, displacements_.pitch);
-  if (session_gpu()) p.fetch = this;  // a CPU solver holds every node
-  return p;
+  return lod::grid_displacements(displacements_.ux, displacements_.uy, displacements_.uz, model.rows, model.cols,
+                                 model.spacing, displacements_.pitch);
 }
 
 }  // namespace pond::render

@@ -27,14 +27,14 @@ class CpuSolver final : public Solver {
   int threads() const { return threads_->size(); }
   std::int64_t steps_done() const override { return step_; }
   const WaterState& state() const { return cur_; }
-  WaterState read_state() const override { return cur_; }
+  WaterState read_state() override { return cur_; }
   // Replaces the state and the step counter (e.g. when switching solvers).
   void set_state(const WaterState& state, std::int64_t steps_done) override;
   std::string engine() const override;
   void set_body_models(std::vector<BodyModel> bodies) override;
-  std::vector<BodyState> read_bodies() const override { return cur_.bodies; }
+  std::vector<BodyState> read_bodies() override { return cur_.bodies; }
   void perturb(const PerturbationTable& table) override;
-  HostDisplacements displacements() const override {
+  HostDisplacements displacements() override {
     return {cur_.ux.data(), cur_.uy.data(), cur_.uz.data(), static_cast<std::size_t>(model_.cols)};
   }
 
@@ -48,7 +48,7 @@ class CpuSolver final : public Solver {
   // on computes them from the state.
   void track_tile_bounds(bool on) override;
   // The current state's tile bounds, tile (a, b) at b * tiles_x + a; empty while not tracked.
-  std::span<const TileBounds> tile_bounds() const override { return tile_bounds_; }
+  std::span<const TileBounds> tile_bounds() override { return tile_bounds_; }
   const TileGrid& tile_grid() const { return tile_grid_; }
 
  private:

@@ -97,9 +97,9 @@ class Session {
   // the session must not be on a GPU solver of the old factory (recover() first).
   void set_gpu_factory(GpuSolverFactory gpu);
 
-  // The bodies (grid units). Their specs are water().bodies, with the edits below. The non-const
-  // overloads here and below go on on the CPU when the GPU fails while they read.
-  std::vector<BodyState> bodies() const { return solver_->read_bodies(); }
+  // The bodies (grid units). Their specs are water().bodies, with the edits below. Not const, as
+  // state() below: the GPU solver waits for its last submission, and when the GPU fails while they
+  // read, the session goes on on the CPU.
   std::vector<BodyState> bodies();
   // Adds a body where its spec puts it (InputError from the rules: a radius below the grid
   // spacing, a position off the grid, too many bodies, ...). The water carries over.
@@ -138,8 +138,7 @@ class Session {
   const SolverChoice& choice() const { return choice_; }
   std::int64_t steps_done() const { return solver_->steps_done(); }
   double simulated_seconds() const { return static_cast<double>(steps_done()) * water_.physics.dt; }
-  WaterState state() const { return solver_->read_state(); }
-  WaterState state();
+  WaterState state();  // reads it back from the GPU solver, waiting
   // After a GPU failure elsewhere (the renderer's: the device is lost for everyone), the session
   // goes on on the CPU from its journal, if the GPU solver did not already.
   void recover(const GpuFailure& failure);
@@ -151,7 +150,11 @@ class Session {
   SessionImage image();
   // Takes an image of a session made from the same spec (InputError naming what does not fit).
   void restore(const SessionImage& image);
+  // The solver, for what the host holds without asking it (its model, its step count).
   const Solver& solver() const { return *solver_; }
+  // The same for a reader that may wait (sim/solver.h: a renderer's frame, its one wait); the state
+  // changes only through the session.
+  Solver& solver() { return *solver_; }
   // Whether every solver of the session keeps its tile bounds (solver.h), for a renderer's LOD.
   void track_tile_bounds(bool on);
   // Grows whenever solver() is replaced (a drawer holding its buffers must let go), and whenever

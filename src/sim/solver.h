@@ -44,33 +44,35 @@ class Solver {
   // Applies a perturbation (any step) to the current state, as if it were scheduled just before
   // the next step: the GPU solver records its dispatch into its next submission, no round trip.
   virtual void perturb(const PerturbationTable& table) = 0;
+  // Not const, every reader of the state below: the GPU solver's reads submit and wait, and a
+  // caller must hold the solver as one that may (a const Solver& reads only what is on the host).
   // A copy of the current state (the GPU solver reads it back and waits).
-  virtual WaterState read_state() const = 0;
+  virtual WaterState read_state() = 0;
   // The current state's displacements on the host, valid until the next call that changes the
   // state. The GPU solver copies them in every submission that changes the state and waits here
   // for its last one: in a frame, the one wait for the GPU. Its perturbations not yet submitted
   // (they go with the next advance(), which may be of 0 steps) are not in them yet.
-  virtual HostDisplacements displacements() const = 0;
+  virtual HostDisplacements displacements() = 0;
   // Replaces the state and the step counter (the model's perturbations resume from that step).
   virtual void set_state(const WaterState& state, std::int64_t steps_done) = 0;
   // The bodies' current states (the GPU solver copies them in every submission, so this waits for
   // its last one, as displacements() does, and reads a few bytes).
-  virtual std::vector<BodyState> read_bodies() const = 0;
+  virtual std::vector<BodyState> read_bodies() = 0;
   // Replaces the bodies' models (the same number of bodies; their states stay): a kinematic
   // body's new path, a body turned floating or kinematic. InputError for another count.
   virtual void set_body_models(std::vector<BodyModel> bodies) = 0;
   // Which nodes displacements() must hold after each later submission: every node (nullopt, the
   // default) or at least those of `windows` (within the grid). The GPU solver then copies only
   // those to the host where it cannot read the state in place; every other solver holds them all.
-  // Const: it changes what the host reads, never the state.
-  virtual void keep_on_host(std::optional<std::vector<core::GridWindow>> windows) const { (void)windows; }
-  // Whether displacements() holds every node of `w` now.
-  virtual bool holds_on_host(const core::GridWindow& w) const { (void)w; return true; }
+  virtual void keep_on_host(std::optional<std::vector<core::GridWindow>> windows) { (void)windows; }
+  // Whether displacements() holds every node of `w` now (the GPU solver waits for its last
+  // submission first, as displacements() does).
+  virtual bool holds_on_host(const core::GridWindow& w) { (void)w; return true; }
   // Makes displacements() hold the nodes of `windows` of the current state too (the GPU solver
   // copies those it lacks and waits).
-  virtual void bring_to_host(std::span<const core::GridWindow> windows) const { (void)windows; }
+  virtual void bring_to_host(std::span<const core::GridWindow> windows) { (void)windows; }
   // displacements() holding every node.
-  HostDisplacements all_displacements() const {
+  HostDisplacements all_displacements() {
     const core::GridWindow all{0, 0, model().rows, model().cols};
     bring_to_host(std::span(&all, 1));
     return displacements();
@@ -80,11 +82,11 @@ class Solver {
   virtual void track_tile_bounds(bool on) { (void)on; }
   // Those bounds while tracked, valid as displacements() is; empty when not tracked or where the
   // solver keeps none.
-  virtual std::span<const TileBounds> tile_bounds() const { return {}; }
+  virtual std::span<const TileBounds> tile_bounds() { return {}; }
   // The newest copy of this solver's state that the host holds, for a solver that can fail (the GPU
   // solver: GpuFailure): a CPU solver can go on from it (sim/solver_journal.h). Null for a solver
   // that cannot fail (the CPU solver: its state is the host's).
-  virtual const HostSnapshot* host_snapshot() const { return nullptr; }
+  virtual const HostSnapshot* host_snapshot() { return nullptr; }
   // What runs the steps, for messages: "avx2 x 2 threads", "gpu".
   virtual std::string engine() const = 0;
   // For a solver whose bit-identity with the CPU reference depends on the device: one line saying

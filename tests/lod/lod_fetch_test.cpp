@@ -26,8 +26,8 @@ class PartialHost : public lod::NodeFetch {
   PartialHost(const std::vector<float>& truth, int rows, int cols)
       : truth_(truth), host_(truth.size(), std::numeric_limits<float>::quiet_NaN()), rows_(rows), cols_(cols) {}
 
-  bool holds(const core::GridWindow& w) const override { return held_.covers(w); }
-  void bring(std::span<const core::GridWindow> windows) const override {
+  bool holds(const core::GridWindow& w) override { return held_.covers(w); }
+  void bring_and_wait(std::span<const core::GridWindow> windows) override {
     ++rounds;
     corners_alone += std::all_of(windows.begin(), windows.end(), [](const core::GridWindow& w) { return w.rows * w.cols == 1; });
     const core::NodeRuns want = core::NodeRuns(windows).minus(held_);
@@ -44,23 +44,23 @@ class PartialHost : public lod::NodeFetch {
     held_ = {}, rounds = 0, corners_alone = 0;
     host_.assign(truth_.size(), std::numeric_limits<float>::quiet_NaN());
     const core::GridWindow all{0, 0, rows_, cols_};
-    if (windows) bring(*windows);
-    else bring(std::span(&all, 1));
+    if (windows) bring_and_wait(*windows);
+    else bring_and_wait(std::span(&all, 1));
     rounds = 0, corners_alone = 0;
   }
   std::size_t held_nodes() const { return held_.nodes(); }
-  lod::NodePositions positions() const {
+  lod::NodePositions positions() {
     lod::NodePositions p = lod::interleaved_positions(host_.data(), rows_, cols_);
     p.fetch = this;
     return p;
   }
-  mutable int rounds = 0;
-  mutable int corners_alone = 0;  // rounds that brought single nodes only (leaves' corners)
+  int rounds = 0;
+  int corners_alone = 0;  // rounds that brought single nodes only (leaves' corners)
 
  private:
   const std::vector<float>& truth_;
-  mutable std::vector<float> host_;
-  mutable core::NodeRuns held_;
+  std::vector<float> host_;
+  core::NodeRuns held_;
   int rows_, cols_;
 };
 

@@ -77,7 +77,7 @@ TEST(TileRanges, HoldEveryNodeOfAFilesPositions) {
 
 TEST(TileRanges, FromTheSolversBoundsHoldEveryNode) {
   for (auto [rows, cols, spacing] : {std::tuple{33, 33, 1.0}, {50, 71, 0.5}, {97, 40, 2.0}}) {
-    const sim::CpuSolver solver = rippled_solver(rows, cols, spacing, 11);
+    sim::CpuSolver solver = rippled_solver(rows, cols, spacing, 11);
     const sim::WaterState& st = solver.state();
     const auto p = lod::grid_displacements(st.ux.data(), st.uy.data(), st.uz.data(), rows, cols, float(spacing));
     const lod::TileRanges r = lod::tile_ranges(solver.tile_bounds(), rows, cols, float(spacing));
@@ -331,7 +331,7 @@ TEST(SurfaceBlocks, NestedBoundsHoldOnTheWholeGridAndBlocksHaveNone) {
 // The live path: the solver's tile bounds and its displacements, as the renderer passes them.
 TEST(LodBuilder, BuildsFromTheSolversTileBounds) {
   for (auto [rows, cols, spacing] : {std::tuple{129, 129, 1.0}, {90, 150, 0.5}}) {
-    const sim::CpuSolver solver = rippled_solver(rows, cols, spacing, 5);
+    sim::CpuSolver solver = rippled_solver(rows, cols, spacing, 5);
     const sim::WaterState& st = solver.state();
     const auto p = lod::grid_displacements(st.ux.data(), st.uy.data(), st.uz.data(), rows, cols, float(spacing));
     const lod::TileRanges r = lod::tile_ranges(solver.tile_bounds(), rows, cols, float(spacing));

@@ -84,7 +84,7 @@ class BodyRenderTest : public GpuTest {
     return Rgba{kWidth, kHeight, target.read_rgba()};
   }
   // The pixel of the top half of body b's centre line (above the water whatever the dent).
-  Pixel body_pixel(const sim::Session& s, std::size_t b) const {
+  Pixel body_pixel(sim::Session& s, std::size_t b) const {
     const sim::BodyState st = s.bodies().at(b);
     const double h = s.model().spacing, r = s.water().bodies.at(b).radius;
     return project(view_proj_.data(), {st.x * h, st.y * h + 0.5 * r, st.z * h}, kWidth, kHeight);

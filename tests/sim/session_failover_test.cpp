@@ -48,11 +48,11 @@ class FlakySolver final : public Solver {
     if (since_ >= every_) pending_ = HostSnapshot{inner_.state(), inner_.steps_done()}, since_ = 0;
   }
   void perturb(const PerturbationTable& table) override { inner_.perturb(table); }
-  WaterState read_state() const override {
+  WaterState read_state() override {
     plan_->call();
     return inner_.read_state();
   }
-  HostDisplacements displacements() const override { return inner_.displacements(); }
+  HostDisplacements displacements() override { return inner_.displacements(); }
   void set_state(const WaterState& state, std::int64_t steps) override {
     plan_->call();
     inner_.set_state(state, steps);
@@ -60,7 +60,7 @@ class FlakySolver final : public Solver {
     pending_.reset();
     since_ = 0;
   }
-  std::vector<BodyState> read_bodies() const override {
+  std::vector<BodyState> read_bodies() override {
     plan_->call();
     return inner_.read_bodies();
   }
@@ -68,7 +68,7 @@ class FlakySolver final : public Solver {
     plan_->call();
     inner_.set_body_models(std::move(bodies));
   }
-  const HostSnapshot* host_snapshot() const override { return &copy_; }
+  const HostSnapshot* host_snapshot() override { return &copy_; }
   std::string engine() const override { return "stand-in gpu"; }
 
  private:
@@ -161,10 +161,10 @@ class CopylessSolver final : public Solver {
   std::int64_t steps_done() const override { return inner_.steps_done(); }
   void advance(std::int64_t) override { throw GpuFailure(GpuFailure::Kind::out_of_memory, "no memory"); }
   void perturb(const PerturbationTable& t) override { inner_.perturb(t); }
-  WaterState read_state() const override { return inner_.read_state(); }
-  HostDisplacements displacements() const override { return inner_.displacements(); }
+  WaterState read_state() override { return inner_.read_state(); }
+  HostDisplacements displacements() override { return inner_.displacements(); }
   void set_state(const WaterState& state, std::int64_t steps) override { inner_.set_state(state, steps); }
-  std::vector<BodyState> read_bodies() const override { return inner_.read_bodies(); }
+  std::vector<BodyState> read_bodies() override { return inner_.read_bodies(); }
   void set_body_models(std::vector<BodyModel> b) override { inner_.set_body_models(std::move(b)); }
   std::string engine() const override { return "copyless"; }
 

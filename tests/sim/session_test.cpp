@@ -21,7 +21,7 @@ namespace {
 
 const SolverChoice kScalar{.gpu = false, .backend = Backend::scalar, .threads = 1};
 
-std::uint64_t hash(const Session& s) { return state_hash(s.state(), s.model()); }
+std::uint64_t hash(Session& s) { return state_hash(s.state(), s.model()); }
 
 std::uint64_t solver_hash(const WaterSpec& water, std::int64_t steps) {
   CpuSolver solver(build_model(water), Backend::scalar, 1);

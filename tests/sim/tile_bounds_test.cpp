@@ -48,7 +48,7 @@ std::string check_tile(std::span<const TileBounds> bounds, const WaterState& s, 
   return "";
 }
 
-std::string check_all(const CpuSolver& solver) {
+std::string check_all(CpuSolver& solver) {
   const TileGrid& g = solver.tile_grid();
   if (solver.tile_bounds().size() != g.tiles()) return "no bounds";
   for (int b = 0; b < g.tiles_y; ++b)

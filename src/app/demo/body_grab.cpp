@@ -12,7 +12,7 @@ constexpr double kVelocityBlend = 0.5;
 
 }  // namespace
 
-std::optional<std::size_t> BodyGrab::grab(const sim::Session& session, const Ray& ray) {
+std::optional<std::size_t> BodyGrab::grab(sim::Session& session, const Ray& ray) {
   const std::vector<sim::BodyState> states = session.bodies();
   const auto& specs = session.water().bodies;
   const double h = session.model().spacing;

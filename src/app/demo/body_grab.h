@@ -19,7 +19,7 @@ namespace pond::app::demo {
 class BodyGrab {
  public:
   // Grabs the nearest body `ray` meets: its index, or nothing when the ray meets none.
-  std::optional<std::size_t> grab(const sim::Session& session, const Ray& ray);
+  std::optional<std::size_t> grab(sim::Session& session, const Ray& ray);
   bool active() const { return index_.has_value(); }
   std::size_t index() const { return *index_; }
   void move_cursor(double x, double y) { cursor_ = {x, y}; }
