@@ -5,13 +5,14 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/caustics.h"
+#include "shared/foam.h"
 #include "shared/water_render.h"
 #include "shared/water_shading.h"
 
 layout(std140, set = 0, binding = POND_RENDER_BINDING_FRAME) uniform Frame { WaterFrame f; };
 layout(std430, set = 0, binding = POND_RENDER_BINDING_STATE) restrict readonly buffer State { float state[]; };
 layout(std430, set = 0, binding = POND_RENDER_BINDING_NORMALS) restrict readonly buffer Normals { vec4 normals[]; };
-layout(std430, set = 0, binding = POND_RENDER_BINDING_FOAM) restrict readonly buffer Foam { float foam[]; };
+layout(std430, set = 0, binding = POND_FOAM_WATER_BINDING) restrict readonly buffer Foam { float foam[]; };
 
 layout(location = 0) out vec3 out_world;
 layout(location = 1) out vec4 out_normal_foam;  // xyz: the normal; w: the foam here (render/foam_pass.h)

@@ -31,7 +31,13 @@ using water_render::vec4;
 
 #define POND_FOAM_LOCAL_X 64  // foam.comp's workgroup: nodes along a row (one workgroup row a node row)
 
-// Bindings (set 0), storage buffers.
+// Its binding in the water's set (shared/water_render.h: the passes' follow the set's own), a
+// storage buffer read by water.vert, and its lane of the water's frame uniforms: 1 where the water
+// draws foam, 0 where not (the binding then holds any buffer of a float per node or more).
+#define POND_FOAM_WATER_BINDING 7
+#define POND_FRAME_FOAM(frame) ((frame).sun.w)
+
+// The foam pass's own bindings (set 0), storage buffers.
 #define POND_FOAM_BINDING_STATE 0  // the water's displacements (water_gpu.h's layout: stride, pitch; ux uy uz)
 #define POND_FOAM_BINDING_FROM 1   // the foam of the last update
 #define POND_FOAM_BINDING_TO 2     // this update's

@@ -17,8 +17,9 @@
 //      water.frag where POND_SPEC_CAUSTICS is on
 //   6: combined image sampler, what lies under the surface (render/submerged_pass.h), per frame
 //      slot; read by water.frag where POND_SPEC_SUBMERGED is on
-//   7: storage buffer, the foam (render/foam_pass.h, shared/foam.h): one float per node, compact;
-//      read by water.vert where POND_FRAME_FOAM is 1 (else any buffer of as many floats)
+//   POND_RENDER_BINDINGS and up: what the passes whose output the water reads bind (each declares
+//      its binding's number in its own shared header, and its FramePass writes it every frame:
+//      render/frame_pass.h); the set layout is checked for two passes claiming one number
 // The water is drawn with vertex pulling: the index buffer holds node indices n = row * cols + col
 // (the LOD builder's output as is), the vertex shader reads the normals at gl_VertexIndex and the
 // state at its row * pitch + col.
@@ -53,8 +54,7 @@ struct mat4 {
 #define POND_RENDER_BINDING_SHADOW 4
 #define POND_RENDER_BINDING_CAUSTICS 5
 #define POND_RENDER_BINDING_SUBMERGED 6
-#define POND_RENDER_BINDING_FOAM 7
-#define POND_RENDER_BINDINGS 8
+#define POND_RENDER_BINDINGS 7  // the set's own; the passes' follow
 
 // The fragment shaders take the frame's constants as flat varyings from their vertex shader, not
 // from the uniform block: llvmpipe (Mesa 22.3) reads a uniform (or push constant) in a fragment
@@ -107,7 +107,7 @@ struct mat4 {
 struct WaterFrame {
   mat4 view_proj;  // world -> clip, Vulkan conventions (y down, depth 0..1)
   vec4 eye;        // xyz: camera position (world); w: POND_FRAME_GRID_SPACING
-  vec4 sun;        // xyz: unit direction toward the sun; w: POND_FRAME_FOAM
+  vec4 sun;        // xyz: unit direction toward the sun; w: a pass's lane (shared/foam.h)
   vec4 sky;        // rgb: sky colour at the zenith (linear); w: unused
   vec4 water;      // rgb: deep water colour (linear); w: unused
   vec4 ground;     // rgb: pool floor, shore and island colour (linear); w: unused
@@ -142,7 +142,6 @@ struct WaterFrame {
 #define POND_FRAME_STATE_STRIDE(frame) ((frame).grid.z)  // floats between the state's arrays
 #define POND_FRAME_STATE_PITCH(frame) ((frame).grid.w)   // nodes between the state's rows (cols
                                                          // where the state is compact)
-#define POND_FRAME_FOAM(frame) ((frame).sun.w)  // 1: the water draws binding 7's foam; 0: none
 
 // One vertex of the land mesh: position (world, w = 1) and normal (w = 0).
 struct LandVertex {

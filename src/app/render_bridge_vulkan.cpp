@@ -89,7 +89,7 @@ void print_pass_times(const render::PassTimestamps& timestamps, const std::vecto
   std::printf("GPU pass times (timestamp queries, medians):");
   for (std::size_t p = 0; p < pass_ms.size(); ++p)
     if (!pass_ms[p].empty())
-      std::printf(" %s %.3f ms (%zu frames);", render::timed_pass_name(static_cast<render::TimedPass>(p)),
+      std::printf(" %s %.3f ms (%zu frames);", timestamps.names()[p].c_str(),
                   median(pass_ms[p]), pass_ms[p].size());
   std::printf("\n");
 }
@@ -127,7 +127,7 @@ int render_scene(const RenderOptions& o, const scene::Scene& scene, const gpu::C
   auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   session.advance(o.steps + steps_per_frame);  // what the first frame shows
   std::vector<double> total, simulate, wait, lod, draw;
-  std::vector<std::vector<double>> pass_ms(render::kTimedPasses);  // the GPU's clock, frames as read
+  std::vector<std::vector<double>> pass_ms(loop.timestamps().count());  // the GPU's clock, frames as read
   std::uint64_t timed_frame = 0;
   render::FrameStats last;
   Clock::time_point start = Clock::now();
@@ -145,7 +145,7 @@ int render_scene(const RenderOptions& o, const scene::Scene& scene, const gpu::C
     start = end;
     if (const render::PassTimes& t = loop.timestamps().last(); t.frame != timed_frame) {
       timed_frame = t.frame;
-      for (std::size_t p = 0; p < render::kTimedPasses; ++p)
+      for (std::size_t p = 0; p < t.ran.size(); ++p)
         if (t.ran[p]) pass_ms[p].push_back(t.ms[p]);
     }
   }

@@ -2,9 +2,12 @@
 
 #include <array>
 
+#include "render/foam_pass.h"
 #include "render/frame_pass.h"
 #include "render/shadow_pass.h"
 #include "render/submerged_pass.h"
+#include "view/caustics_grid.h"
+#include "view/sun_shadow.h"
 
 namespace pond::render {
 namespace {
@@ -23,25 +26,27 @@ void declare_layer(const LayerTarget& t, PassDeclaration& d) {
 
 class Caustics final : public FramePass {
  public:
-  Caustics(const CausticsPass& pass, const shared::caustics::CausticsPush& push) : pass_(pass), push_(push) {}
-  TimedPass timed() const override { return TimedPass::caustics; }
+  explicit Caustics(const CausticsPass& pass) : pass_(pass) {}
+  const char* name() const override { return "caustics"; }
   bool enabled(const FrameContext& frame) const override { return frame.plan.caustics; }
   void declare(const FrameContext& frame, PassDeclaration& d) override {
     d.writes.push_back({.image = *pass_.map(frame.slot).image, .layout = L::eGeneral, .stages = S2::eComputeShader,
                         .access = A2::eShaderStorageWrite});
   }
   void record(const vk::raii::CommandBuffer& cmd, const FrameContext& frame) override {
-    pass_.record_dispatch(cmd, frame.slot, push_);
+    const sim::WaterModel& model = frame.base.session.model();
+    pass_.record_dispatch(cmd, frame.slot,
+                          view::caustics_push(model, view::unit(frame.base.lighting.sun), model.basin.floor_depth,
+                                              frame.water.stride, frame.water.pitch));
   }
 
  private:
   const CausticsPass& pass_;
-  const shared::caustics::CausticsPush& push_;
 };
 
 class Shadow final : public FramePass {
  public:
-  TimedPass timed() const override { return TimedPass::shadow; }
+  const char* name() const override { return "shadow"; }
   bool enabled(const FrameContext& frame) const override { return frame.plan.shadow.has_value(); }
   void declare(const FrameContext& frame, PassDeclaration& d) override {
     d.writes.push_back({.image = *frame.data.shadow.image, .aspect = vk::ImageAspectFlagBits::eDepth,
@@ -60,7 +65,7 @@ class Shadow final : public FramePass {
 
 class Reflection final : public FramePass {
  public:
-  TimedPass timed() const override { return TimedPass::reflection; }
+  const char* name() const override { return "reflection"; }
   bool enabled(const FrameContext& frame) const override { return frame.plan.reflection; }
   void declare(const FrameContext& frame, PassDeclaration& d) override { declare_layer(frame.data.reflection, d); }
   void record(const vk::raii::CommandBuffer& cmd, const FrameContext& frame) override {
@@ -80,7 +85,7 @@ class Reflection final : public FramePass {
 
 class Submerged final : public FramePass {
  public:
-  TimedPass timed() const override { return TimedPass::submerged; }
+  const char* name() const override { return "submerged"; }
   bool enabled(const FrameContext& frame) const override { return frame.plan.submerged; }
   void declare(const FrameContext& frame, PassDeclaration& d) override { declare_layer(frame.data.submerged, d); }
   void record(const vk::raii::CommandBuffer& cmd, const FrameContext& frame) override {
@@ -96,17 +101,26 @@ class Submerged final : public FramePass {
 
 }  // namespace
 
-PassSet record_early_passes(const vk::raii::CommandBuffer& cmd, const FrameContext& frame, const CausticsPass& caustics,
-                            FoamPass& foam, const shared::caustics::CausticsPush& caustics_push) {
-  Caustics caustics_pass(caustics, caustics_push);
-  Shadow shadow;
-  Reflection reflection;
-  Submerged submerged;
-  FramePass* const passes[] = {&caustics_pass, &foam, &shadow, &reflection, &submerged};
+EarlyPasses::EarlyPasses(const gpu::Context& ctx, const sim::WaterModel& model, const CausticsPass& caustics) {
+  owned_.push_back(std::make_unique<Caustics>(caustics));
+  owned_.push_back(std::make_unique<FoamPass>(ctx, model, kFramesInFlight));
+  owned_.push_back(std::make_unique<Shadow>());
+  owned_.push_back(std::make_unique<Reflection>());
+  owned_.push_back(std::make_unique<Submerged>());
+  for (const std::unique_ptr<FramePass>& p : owned_) passes_.push_back(p.get());
+}
+
+FramePass* EarlyPasses::find(std::string_view name) const {
+  for (FramePass* p : passes_)
+    if (name == p->name()) return p;
+  return nullptr;
+}
+
+PassSet EarlyPasses::record(const vk::raii::CommandBuffer& cmd, const FrameContext& frame) {
   // The solver's writes (compute, and transfers of uploads) and the earlier frames' compute
   // passes' before the vertex shaders (these passes' and the main one's, later in submission
   // order) and this frame's compute passes, which read them (and rewrite their own).
-  return record_pass_list(cmd, frame, passes,
+  return record_pass_list(cmd, frame, passes_,
                    {.srcStageMask = S2::eComputeShader | S2::eTransfer,
                     .srcAccessMask = A2::eShaderWrite | A2::eTransferWrite,
                     .dstStageMask = S2::eVertexShader | S2::eVertexAttributeInput | S2::eComputeShader,

@@ -5,16 +5,33 @@
 // (render/submerged_pass.h), each a FramePass (render/frame_pass.h) recorded when the frame's plan
 // has it, with the barriers their declarations call for. None reads what another writes, so their
 // barriers go in two batches: one before them all (with the compute -> vertex dependency on the
-// water's state and normals), one after.
+// water's state and normals), one after. A new pass is one more line in the constructor.
+#include <memory>
+#include <span>
+#include <string_view>
+#include <vector>
+
 #include "render/caustics_pass.h"
-#include "render/foam_pass.h"
 #include "render/frame_context.h"
-#include "shared/caustics.h"
+#include "render/frame_pass.h"
+#include "sim/model.h"
 
 namespace pond::render {
 
-// Returns which passes it recorded.
-PassSet record_early_passes(const vk::raii::CommandBuffer& cmd, const FrameContext& frame, const CausticsPass& caustics,
-                            FoamPass& foam, const shared::caustics::CausticsPush& caustics_push);
+class EarlyPasses {
+ public:
+  // For the water of `model`; `caustics` (the loop's: the water's set binds its maps) must outlive
+  // this, as must the context.
+  EarlyPasses(const gpu::Context& ctx, const sim::WaterModel& model, const CausticsPass& caustics);
+
+  std::span<FramePass* const> list() const { return passes_; }
+  FramePass* find(std::string_view name) const;  // null: no pass of that name
+  // Records the frame's enabled passes; returns which it recorded, by place in list().
+  PassSet record(const vk::raii::CommandBuffer& cmd, const FrameContext& frame);
+
+ private:
+  std::vector<std::unique_ptr<FramePass>> owned_;
+  std::vector<FramePass*> passes_;
+};
 
 }  // namespace pond::render

@@ -40,8 +40,26 @@ void FoamPass::make() {
                              "foam's last displacements");
 }
 
-const gpu::Buffer& FoamPass::prepare(std::uint32_t slot, const gpu::Buffer& state, std::uint32_t stride,
-                                     std::uint32_t pitch, const sim::WaterModel& model, std::int64_t steps) {
+void FoamPass::water_bindings(std::vector<vk::DescriptorSetLayoutBinding>& out) const {
+  out.push_back({.binding = POND_FOAM_WATER_BINDING, .descriptorType = vk::DescriptorType::eStorageBuffer,
+                 .descriptorCount = 1, .stageFlags = vk::ShaderStageFlagBits::eVertex});
+}
+
+void FoamPass::prepare(const FrameContext& frame) {
+  const sim::Session& session = frame.base.session;
+  if (!enabled(frame)) return skip(session.steps_done());
+  update(frame.slot, *frame.water.state, frame.water.stride, frame.water.pitch, session.model(), session.steps_done());
+}
+
+void FoamPass::bind_water(const FrameContext& frame, WaterSetWrites& set, WaterFrame& uniforms) {
+  const bool on = enabled(frame);
+  // Without foam the water reads none: any buffer of a float per node stands in for it.
+  set.buffer(POND_FOAM_WATER_BINDING, on ? buffers_[current_] : *frame.water.normals);
+  POND_FRAME_FOAM(uniforms) = on ? 1.0f : 0.0f;
+}
+
+const gpu::Buffer& FoamPass::update(std::uint32_t slot, const gpu::Buffer& state, std::uint32_t stride,
+                                    std::uint32_t pitch, const sim::WaterModel& model, std::int64_t steps) {
   if (!made()) make();
   went_back(steps);
   // The simulated time since the last update: none on the first, nor after the water went back.
@@ -112,7 +130,12 @@ void FoamPass::record(const vk::raii::CommandBuffer& cmd, const FrameContext& fr
   cmd.dispatch(gpu::group_count(cols_, POND_FOAM_LOCAL_X), rows_, 1);
 }
 
-void FoamPass::adopt(Carried c) {
+std::any FoamPass::carry() { return Carried{read(), last_steps_}; }
+
+void FoamPass::adopt(std::any carried) {
+  const Carried* found = std::any_cast<Carried>(&carried);
+  if (!found) return;
+  const Carried& c = *found;
   if (filled_ || c.foam.size() != static_cast<std::size_t>(rows_) * cols_) return;
   seed_ = gpu::create_buffer(ctx_, c.foam.size() * sizeof(float), vk::BufferUsageFlagBits::eTransferSrc,
                              gpu::MemoryUse::upload, "foam carried over");

@@ -9,6 +9,7 @@
 #include "render/pass_drawable.h"
 #include "render/pass_timestamps.h"
 #include "render/visible_geometry.h"
+#include "render/water_buffers.h"
 #include "render/water_pipeline.h"
 #include "view/frame_plan.h"
 
@@ -17,6 +18,7 @@ namespace pond::render {
 struct FrameContext {
   std::uint32_t slot;
   FrameData& data;
+  const WaterBuffers& water;  // what the water is drawn from this frame
   const view::FramePlan& plan;
   const VisibleDraws& draws;
   const VisibleGeometry& geometry;

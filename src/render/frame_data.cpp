@@ -1,5 +1,6 @@
 #include "render/frame_data.h"
 
+#include <algorithm>
 #include <string>
 
 #include "core/errors.h"
@@ -14,17 +15,23 @@ namespace {
 using S = vk::PipelineStageFlagBits2;
 }  // namespace
 
-FrameRing::FrameRing(const gpu::Context& ctx, vk::DescriptorSetLayout set_layout) : ctx_(ctx) {
+FrameRing::FrameRing(const gpu::Context& ctx, vk::DescriptorSetLayout set_layout,
+                     std::span<const vk::DescriptorSetLayoutBinding> bindings)
+    : ctx_(ctx) {
   pool_ = vk::raii::CommandPool(ctx.device(), vk::CommandPoolCreateInfo{
                                                   .flags = vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
                                                   .queueFamilyIndex = ctx.queue_family()});
-  const vk::DescriptorPoolSize sizes[] = {{.type = vk::DescriptorType::eUniformBuffer, .descriptorCount = kFramesInFlight},
-                                          {.type = vk::DescriptorType::eStorageBuffer, .descriptorCount = 3 * kFramesInFlight},
-                                          {.type = vk::DescriptorType::eCombinedImageSampler,
-                                           .descriptorCount = 4 * kFramesInFlight}};
+  std::vector<vk::DescriptorPoolSize> sizes;  // each binding's, a set per slot
+  for (const vk::DescriptorSetLayoutBinding& b : bindings) {
+    auto same = std::find_if(sizes.begin(), sizes.end(), [&](const auto& s) { return s.type == b.descriptorType; });
+    if (same == sizes.end()) same = sizes.insert(sizes.end(), {.type = b.descriptorType, .descriptorCount = 0});
+    same->descriptorCount += b.descriptorCount * kFramesInFlight;
+  }
   descriptor_pool_ = vk::raii::DescriptorPool(
       ctx.device(), vk::DescriptorPoolCreateInfo{.flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
-                                                 .maxSets = kFramesInFlight, .poolSizeCount = 3, .pPoolSizes = sizes});
+                                                 .maxSets = kFramesInFlight,
+                                                 .poolSizeCount = static_cast<std::uint32_t>(sizes.size()),
+                                                 .pPoolSizes = sizes.data()});
   vk::raii::CommandBuffers cmds(ctx.device(), vk::CommandBufferAllocateInfo{.commandPool = *pool_,
                                                                             .level = vk::CommandBufferLevel::ePrimary,
                                                                             .commandBufferCount = 2 * kFramesInFlight});
@@ -60,15 +67,16 @@ FrameRing::FrameRing(const gpu::Context& ctx, vk::DescriptorSetLayout set_layout
 }
 
 void write_frame_set(const gpu::Context& ctx, const FrameData& f, const gpu::Buffer& state, const gpu::Buffer& normals,
-                     const gpu::Buffer& foam, const FrameSetImages& bound, vk::Sampler nearest, vk::Sampler shadow) {
+                     const FrameSetImages& bound, vk::Sampler nearest, vk::Sampler shadow,
+                     std::vector<vk::WriteDescriptorSet> passes) {
   using DT = vk::DescriptorType;
   constexpr auto kRead = vk::ImageLayout::eShaderReadOnlyOptimal;
-  const vk::DescriptorBufferInfo infos[] = {f.uniforms.whole(), state.whole(), normals.whole(), foam.whole()};
+  const vk::DescriptorBufferInfo infos[] = {f.uniforms.whole(), state.whole(), normals.whole()};
   const vk::DescriptorImageInfo images[] = {{.sampler = nearest, .imageView = bound.reflection, .imageLayout = kRead},
                                             {.sampler = shadow, .imageView = bound.shadow, .imageLayout = kRead},
                                             {.sampler = nearest, .imageView = bound.caustics, .imageLayout = kRead},
                                             {.sampler = nearest, .imageView = bound.submerged, .imageLayout = kRead}};
-  const vk::WriteDescriptorSet writes[] = {
+  std::vector<vk::WriteDescriptorSet> writes = {
       {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_FRAME, .descriptorCount = 1,
        .descriptorType = DT::eUniformBuffer, .pBufferInfo = &infos[0]},
       {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_STATE, .descriptorCount = 1,
@@ -82,9 +90,8 @@ void write_frame_set(const gpu::Context& ctx, const FrameData& f, const gpu::Buf
       {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_CAUSTICS, .descriptorCount = 1,
        .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[2]},
       {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_SUBMERGED, .descriptorCount = 1,
-       .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[3]},
-      {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_FOAM, .descriptorCount = 1,
-       .descriptorType = DT::eStorageBuffer, .pBufferInfo = &infos[3]}};
+       .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[3]}};
+  for (vk::WriteDescriptorSet& w : passes) writes.push_back(w.setDstSet(*f.set));
   ctx.device().updateDescriptorSets(writes, nullptr);
 }
 

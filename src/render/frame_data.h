@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -64,16 +65,18 @@ struct FrameData {
 };
 
 // Points `frame`'s descriptor set (shared/water_render.h bindings) at its uniforms, the water's
-// `state` and `normals`, the `foam` and `images`; the frame must be finished. `nearest`: the
-// layers' and the caustics map's sampler; `shadow`: the depth-compare one.
+// `state` and `normals` and `images`, and writes `passes` (the passes' own bindings, their dstSet
+// filled in here); the frame must be finished. `nearest`: the layers' and the caustics map's
+// sampler; `shadow`: the depth-compare one.
 void write_frame_set(const gpu::Context& ctx, const FrameData& frame, const gpu::Buffer& state,
-                     const gpu::Buffer& normals, const gpu::Buffer& foam, const FrameSetImages& images,
-                     vk::Sampler nearest, vk::Sampler shadow);
+                     const gpu::Buffer& normals, const FrameSetImages& images, vk::Sampler nearest, vk::Sampler shadow,
+                     std::vector<vk::WriteDescriptorSet> passes);
 
 class FrameRing {
  public:
-  // Frames whose sets have the layout `set_layout`.
-  FrameRing(const gpu::Context& ctx, vk::DescriptorSetLayout set_layout);
+  // Frames whose sets have the layout `set_layout`, of `bindings`.
+  FrameRing(const gpu::Context& ctx, vk::DescriptorSetLayout set_layout,
+            std::span<const vk::DescriptorSetLayoutBinding> bindings);
 
   FrameData& operator[](std::uint32_t slot) { return frames_[slot]; }
   const Placeholders& placeholders() const { return placeholders_; }

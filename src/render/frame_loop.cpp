@@ -8,7 +8,6 @@
 #include "core/errors.h"
 #include "render/caustics_pass.h"
 #include "render/early_passes.h"
-#include "render/foam_pass.h"
 #include "render/frame_data.h"
 #include "render/main_pass.h"
 #include "render/pass_timestamps.h"
@@ -41,14 +40,14 @@ struct FrameLoop::Impl {
   const scene::Scene scene;
   sim::Session& session;
   vk::Format color_format;
+  CausticsPass caustics;
+  EarlyPasses passes;  // before the main one
   WaterPipelines pipes;
   vk::raii::Sampler nearest_sampler = nullptr, shadow_sampler = nullptr;
   FrameRing frames;
   WaterSource water;
   VisibleGeometry geometry;
-  CausticsPass caustics;
-  FoamPass foam;
-  PassTimestamps timestamps;  // each pass's GPU time, read at the frame's wait
+  PassTimestamps timestamps;  // each pass's GPU time, read at the frame's wait; "main" last
   std::vector<PassDrawable*> drawables;
   std::uint32_t next = 0;
   std::uint64_t generation;  // the session's solver the caustics' views are of
@@ -65,20 +64,32 @@ struct FrameLoop::Impl {
     VisibleDraws draws;
     FrameStats stats;
     std::uint64_t state_revision = 0, generation = 0;
-    PassSet passes{};  // recorded before the main pass
+    PassSet passes;  // recorded before the main pass
   };
   std::optional<Prepared> prepared;
-  PassSet last_passes{};  // the last drawn frame's, the main pass among them
+  PassSet last_passes;  // the last drawn frame's, the main pass among them
 
   Impl(const gpu::Context& c, const scene::Scene& s, sim::Session& drawn, const gpu::GpuSolvers* gpu,
        vk::Format format)
-      : ctx(c), scene(s), session(drawn), color_format(format), pipes(create_water_pipelines(c, format, kDepthFormat)),
+      : ctx(c), scene(s), session(drawn), color_format(format), caustics(c, drawn.model(), kFramesInFlight),
+        passes(c, drawn.model(), caustics), pipes(create_water_pipelines(c, format, kDepthFormat, pass_bindings())),
         nearest_sampler(create_reflection_sampler(c)), shadow_sampler(create_shadow_sampler(c)),
-        frames(c, *pipes.set_layout), water(c, drawn, gpu),
-        geometry(c, drawn.model()), caustics(c, drawn.model(), kFramesInFlight),
-        foam(c, drawn.model(), kFramesInFlight),
-        timestamps(c, kFramesInFlight),
+        frames(c, *pipes.set_layout, pipes.set_bindings), water(c, drawn, gpu), geometry(c, drawn.model()),
+        timestamps(c, kFramesInFlight, pass_names()), last_passes(timestamps.count(), false),
         generation(drawn.solver_generation()) {}
+
+  std::vector<vk::DescriptorSetLayoutBinding> pass_bindings() const {
+    std::vector<vk::DescriptorSetLayoutBinding> out;
+    for (const FramePass* p : passes.list()) p->water_bindings(out);
+    return out;
+  }
+  std::vector<std::string> pass_names() const {
+    std::vector<std::string> out;
+    for (const FramePass* p : passes.list()) out.emplace_back(p->name());
+    out.emplace_back("main");
+    return out;
+  }
+  std::size_t main_pass() const { return passes.list().size(); }  // its place among the timed
 
   FrameInfo info(const vk::raii::CommandBuffer& cmd, const Prepared& f) const {
     return {cmd, f.slot, f.view_proj.data(),
@@ -87,7 +98,7 @@ struct FrameLoop::Impl {
             session, f.lighting, water.bodies(), f.water.bodies};
   }
   FrameContext context(const Prepared& f, const FrameInfo& base) {
-    return {f.slot, frames[f.slot], f.plan, f.draws, geometry, pipes, drawables, base, timestamps};
+    return {f.slot, frames[f.slot], f.water, f.plan, f.draws, geometry, pipes, drawables, base, timestamps};
   }
 
   // The frame's resources, camera, plan, land and uniforms at `extent`; the early passes into
@@ -124,23 +135,21 @@ struct FrameLoop::Impl {
     const vk::Extent2D mirror = f.plan.reflection ? d.reflection.color.extent : vk::Extent2D{0, 0};
     geometry.cull_land(f.slot, f.view_proj, w, h, f.plan.shadow_rects,
                        {static_cast<int>(mirror.width), static_cast<int>(mirror.height)}, f.draws);
-    // Without foam the water reads none: any buffer of a float per node stands in for it.
-    if (!f.plan.foam) foam.skip(session.steps_done());
-    const gpu::Buffer& foam_drawn =
-        f.plan.foam ? foam.prepare(f.slot, *f.water.state, f.water.stride, f.water.pitch, session.model(),
-                                   session.steps_done())
-                    : *f.water.normals;
-    write_frame_set(ctx, d, *f.water.state, *f.water.normals, foam_drawn, images, *nearest_sampler, *shadow_sampler);
-    caustics.bind(f.slot, *f.water.state, *f.water.normals);
     WaterFrame u = view::frame_uniforms({session.model(), f.lighting, f.camera, f.view_proj,
                                                f.water.stride, f.water.pitch, f.plan.shadow ? &*f.plan.shadow : nullptr});
-    POND_FRAME_FOAM(u) = f.plan.foam ? 1.0f : 0.0f;
+    const FrameContext frame = context(f, base);
+    WaterSetWrites pass_writes;  // what the passes bind into the water's set, and their lanes of u
+    for (FramePass* p : passes.list()) {
+      p->prepare(frame);
+      p->bind_water(frame, pass_writes, u);
+    }
+    write_frame_set(ctx, d, *f.water.state, *f.water.normals, images, *nearest_sampler, *shadow_sampler,
+                    std::move(pass_writes.writes));
+    caustics.bind(f.slot, *f.water.state, *f.water.normals);
     std::memcpy(d.uniforms.mapped, &u, sizeof u);
     d.uniforms.flush(ctx);
     timestamps.begin_frame(cmd, f.slot);
-    f.passes = record_early_passes(cmd, context(f, base), caustics, foam,
-                        view::caustics_push(session.model(), view::unit(f.lighting.sun), session.model().basin.floor_depth,
-                                            f.water.stride, f.water.pitch));
+    f.passes = passes.record(cmd, frame);
   }
 
   // The LOD of the positions sync() left on the host: the nodes the frame kept there (keep_on_host,
@@ -202,9 +211,9 @@ struct FrameLoop::Impl {
     }
     frames.ensure_depth(f.slot, target.extent);
     last_passes = f.passes;
-    last_passes[static_cast<std::size_t>(TimedPass::main)] = true;
+    last_passes.push_back(true);  // the main pass
     {
-      const PassTimestamps::Scope timed = timestamps.scope(cmd, f.slot, TimedPass::main);
+      const PassTimestamps::Scope timed = timestamps.scope(cmd, f.slot, main_pass());
       record_main_pass(cmd, context(f, info(cmd, f)), target,
                        {.wireframe = f.view.wireframe, .reflections = f.plan.reflection, .caustics = f.plan.caustics,
                         .submerged = f.plan.submerged, .sky = f.lighting.sky});
@@ -249,11 +258,25 @@ vk::Format FrameLoop::color_format() const { return impl_->color_format; }
 lod::Camera FrameLoop::default_camera(int width, int height) const {
   return view::scene_camera(impl_->scene.camera, impl_->session.model(), width, height);
 }
-FoamPass& FrameLoop::foam() { return impl_->foam; }
+FramePass* FrameLoop::pass(std::string_view name) { return impl_->passes.find(name); }
 PassSet FrameLoop::passes_recorded() const { return impl_->last_passes; }
-void FrameLoop::adopt_foam(FoamPass::Carried carried) { impl_->foam.adopt(std::move(carried)); }
+bool FrameLoop::recorded(std::string_view name) const {
+  const std::size_t p = impl_->timestamps.index_of(name);
+  return p < impl_->last_passes.size() && impl_->last_passes[p];
+}
+CarriedPasses FrameLoop::carry_passes() {
+  CarriedPasses out;
+  for (FramePass* p : impl_->passes.list())
+    if (std::any c = p->carry(); c.has_value()) out.emplace_back(p->name(), std::move(c));
+  return out;
+}
+void FrameLoop::adopt_passes(CarriedPasses carried) {
+  for (auto& [name, c] : carried)
+    if (FramePass* p = impl_->passes.find(name)) p->adopt(std::move(c));
+}
 std::size_t FrameLoop::pass_targets() const {
-  std::size_t made = impl_->foam.buffers_made();
+  std::size_t made = 0;
+  for (const FramePass* p : impl_->passes.list()) made += p->targets_made();
   for (std::uint32_t k = 0; k < kFramesInFlight; ++k) {
     const FrameData& d = impl_->frames[k];
     for (const Image* i : {&d.reflection.color, &d.reflection.depth, &d.submerged.color, &d.submerged.depth, &d.shadow})

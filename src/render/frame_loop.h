@@ -21,14 +21,19 @@
 // The demo drives it like this (per frame): input -> session edits (splashes are dispatches);
 // loop.prepare(view, swapchain extent); acquire; loop.draw(target); present; session.advance(steps)
 // (after presenting, so the compute overlaps the window system's work).
+#include <any>
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 #include "gpu/context.h"
 #include "gpu/gpu_solvers.h"
 #include "lod/camera_budget.h"
-#include "render/foam_pass.h"
+#include "render/frame_pass.h"
 #include "render/frame_target.h"
 #include "render/pass_timestamps.h"
 #include "render/pass_drawable.h"
@@ -57,6 +62,9 @@ struct FrameStats {
   std::size_t full_triangles = 0;  // 2 (rows-1)(cols-1)
   std::size_t land_triangles = 0;  // shore, islands, pool walls
 };
+
+// What a loop's passes carry over to a new loop, by pass name.
+using CarriedPasses = std::vector<std::pair<std::string, std::any>>;
 
 class FrameLoop {
  public:
@@ -95,13 +103,16 @@ class FrameLoop {
   vk::Format color_format() const;
   // The scene's camera, or a view of the whole pond when the scene has none.
   lod::Camera default_camera(int width, int height) const;
-  // The foam's pass (render/foam_pass.h): whether it was made, its foam; a new loop of the same
-  // session goes on from an old one's (FoamPass::carry) instead of no foam.
-  FoamPass& foam();
-  void adopt_foam(FoamPass::Carried carried);
+  // The pass before the main one named `name` (FramePass::name; null: none), for tests and tools.
+  FramePass* pass(std::string_view name);
+  // What the passes hand a new loop of the same session (FramePass::carry: the foam), and the new
+  // loop taking it before its first frame, so that it goes on from the old one's.
+  CarriedPasses carry_passes();
+  void adopt_passes(CarriedPasses carried);
   // Which passes the last drawn frame recorded (the main pass and those its plan had), whether or
-  // not the device has timestamps to time them.
+  // not the device has timestamps to time them: by place in timestamps().names(), and by name.
   PassSet passes_recorded() const;
+  bool recorded(std::string_view name) const;
   // How many images and buffers the passes before the main one have made so far, over every frame
   // slot (the reflection's and the submerged layer's two images, the shadow map, the foam's
   // buffers; not the caustics maps, made with the loop): none while every effect is off. For tests

@@ -5,7 +5,9 @@
 // records itself. The frame is a list of them (render/early_passes.cpp); the barriers between them
 // come from the declarations alone (record_pass_list), so a new pass is a new FramePass and one
 // line in that list, never a barrier edited elsewhere.
+#include <any>
 #include <cstdint>
+#include <deque>
 #include <span>
 #include <vector>
 
@@ -13,6 +15,7 @@
 #include "render/barrier_batch.h"
 #include "render/frame_context.h"
 #include "render/pass_timestamps.h"
+#include "render/render_layout.h"
 
 namespace pond::render {
 
@@ -46,10 +49,20 @@ struct PassDeclaration {
   std::vector<PassRead> reads;
 };
 
+// What passes give the water's descriptor set (shared/water_render.h) beyond its own bindings:
+// each pass whose output the water reads owns its binding (numbered in its own shared header) and
+// writes it every frame, its output or, when off, a stand-in of the same kind.
+struct WaterSetWrites {
+  void buffer(std::uint32_t binding, const gpu::Buffer& b);
+  std::deque<vk::DescriptorBufferInfo> buffers;  // a deque: the writes point into it
+  std::vector<vk::WriteDescriptorSet> writes;    // dstSet left for the frame to fill in
+};
+
 class FramePass {
  public:
   virtual ~FramePass() = default;
-  virtual TimedPass timed() const = 0;  // its GPU time's name (render/pass_timestamps.h)
+  // Its name: its GPU time's (render/pass_timestamps.h, `pond render --profile`, `pond bench`).
+  virtual const char* name() const = 0;
   // Whether this frame has it; a pass that is off declares nothing, records nothing and makes
   // nothing.
   virtual bool enabled(const FrameContext& frame) const = 0;
@@ -57,6 +70,21 @@ class FramePass {
   virtual void declare(const FrameContext& frame, PassDeclaration& d) = 0;
   // Its commands, outside any barrier of its declared resources (record_pass_list places those).
   virtual void record(const vk::raii::CommandBuffer& cmd, const FrameContext& frame) = 0;
+
+  // For a pass whose output the water draws. The bindings it adds to the water's set (the same
+  // every frame; the set layout is made from them once).
+  virtual void water_bindings(std::vector<vk::DescriptorSetLayoutBinding>& /*out*/) const {}
+  // Every frame, on or off, before the water's set is written (the frame's slot finished): what it
+  // needs this frame made and set up; then its bindings' descriptors and its lanes of the frame's
+  // uniforms.
+  virtual void prepare(const FrameContext& /*frame*/) {}
+  virtual void bind_water(const FrameContext& /*frame*/, WaterSetWrites& /*set*/, WaterFrame& /*uniforms*/) {}
+  // Images and buffers it made (for PassListTest: none while it was never on).
+  virtual std::size_t targets_made() const { return 0; }
+  // What it hands a pass of the same name in a frame loop made again for the same grid (the demo's
+  // new constraints), and takes from one: empty, nothing.
+  virtual std::any carry() { return {}; }
+  virtual void adopt(std::any /*carried*/) {}
 };
 
 // The barriers that passes declaring `declared` (in recording order) need: every output to its
@@ -70,8 +98,8 @@ struct PassBarriers {
 };
 PassBarriers plan_pass_barriers(std::span<const PassDeclaration> declared, const vk::MemoryBarrier2& before);
 
-// Records the enabled passes of `passes` in order, each timed, with the barriers
-// plan_pass_barriers gives for their declarations; returns which it recorded.
+// Records the enabled passes of `passes` in order, each timed as its place in the list, with the
+// barriers plan_pass_barriers gives for their declarations; returns which it recorded.
 PassSet record_pass_list(const vk::raii::CommandBuffer& cmd, const FrameContext& frame,
                          std::span<FramePass* const> passes, const vk::MemoryBarrier2& before);
 

@@ -67,23 +67,29 @@ PassBarriers plan_pass_barriers(std::span<const PassDeclaration> declared, const
 
 PassSet record_pass_list(const vk::raii::CommandBuffer& cmd, const FrameContext& frame,
                          std::span<FramePass* const> passes, const vk::MemoryBarrier2& before) {
-  std::vector<FramePass*> enabled;
+  std::vector<std::size_t> enabled;  // places in `passes`
   std::vector<PassDeclaration> declared;
-  for (FramePass* p : passes)
-    if (p->enabled(frame)) {
+  for (std::size_t p = 0; p < passes.size(); ++p)
+    if (passes[p]->enabled(frame)) {
       enabled.push_back(p);
-      p->declare(frame, declared.emplace_back());
+      passes[p]->declare(frame, declared.emplace_back());
     }
   PassBarriers barriers = plan_pass_barriers(declared, before);
   for (std::size_t k = 0; k < enabled.size(); ++k) {
     barriers.before[k].record(cmd);
-    const PassTimestamps::Scope timed = frame.timestamps.scope(cmd, frame.slot, enabled[k]->timed());
-    enabled[k]->record(cmd, frame);
+    const PassTimestamps::Scope timed = frame.timestamps.scope(cmd, frame.slot, enabled[k]);
+    passes[enabled[k]]->record(cmd, frame);
   }
   barriers.after.record(cmd);
-  PassSet recorded{};
-  for (const FramePass* p : enabled) recorded[static_cast<std::size_t>(p->timed())] = true;
+  PassSet recorded(passes.size(), false);
+  for (std::size_t p : enabled) recorded[p] = true;
   return recorded;
+}
+
+void WaterSetWrites::buffer(std::uint32_t binding, const gpu::Buffer& b) {
+  buffers.push_back(b.whole());
+  writes.push_back({.dstBinding = binding, .descriptorCount = 1, .descriptorType = vk::DescriptorType::eStorageBuffer,
+                    .pBufferInfo = &buffers.back()});
 }
 
 }  // namespace pond::render

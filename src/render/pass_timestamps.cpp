@@ -1,13 +1,14 @@
 #include "render/pass_timestamps.h"
 
+#include "core/errors.h"
+
 namespace pond::render {
 
-const char* timed_pass_name(TimedPass pass) {
-  static constexpr const char* kNames[] = {"caustics", "foam", "shadow", "reflection", "submerged", "main"};
-  return kNames[static_cast<std::size_t>(pass)];
-}
-
-PassTimestamps::PassTimestamps(const gpu::Context& ctx, std::uint32_t slots) {
+PassTimestamps::PassTimestamps(const gpu::Context& ctx, std::uint32_t slots, std::vector<std::string> names)
+    : names_(std::move(names)) {
+  if (2 * names_.size() > 64) throw InternalError("more passes than PassTimestamps counts");
+  last_.ran.assign(names_.size(), false);
+  last_.ms.assign(names_.size(), 0.0);
   const vk::PhysicalDeviceLimits limits = ctx.physical().getProperties().limits;
   const std::uint32_t bits = ctx.physical().getQueueFamilyProperties()[ctx.queue_family()].timestampValidBits;
   if (!limits.timestampComputeAndGraphics) reason_ = "timestampComputeAndGraphics is false";
@@ -19,7 +20,7 @@ PassTimestamps::PassTimestamps(const gpu::Context& ctx, std::uint32_t slots) {
   slots_.resize(slots);
   for (std::uint32_t k = 0; k < slots; ++k) {
     slots_[k].pool = vk::raii::QueryPool(
-        ctx.device(), vk::QueryPoolCreateInfo{.queryType = vk::QueryType::eTimestamp, .queryCount = 2 * kTimedPasses});
+        ctx.device(), vk::QueryPoolCreateInfo{.queryType = vk::QueryType::eTimestamp, .queryCount = queries()});
     ctx.name(slots_[k].pool, "pass timestamps, slot " + std::to_string(k));
   }
 }
@@ -27,20 +28,26 @@ PassTimestamps::PassTimestamps(const gpu::Context& ctx, std::uint32_t slots) {
 void PassTimestamps::begin_frame(const vk::raii::CommandBuffer& cmd, std::uint32_t slot) {
   if (!supported_) return;
   Slot& s = slots_[slot];
-  cmd.resetQueryPool(*s.pool, 0, 2 * kTimedPasses);
+  cmd.resetQueryPool(*s.pool, 0, queries());
   s.frame = ++frames_;
   s.written = 0;
   s.collected = false;
 }
 
-void PassTimestamps::write(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, TimedPass pass, bool end) {
+std::size_t PassTimestamps::index_of(std::string_view name) const {
+  std::size_t p = 0;
+  while (p < names_.size() && names_[p] != name) ++p;
+  return p;
+}
+
+void PassTimestamps::write(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, std::size_t pass, bool end) {
   if (!supported_) return;
   Slot& s = slots_[slot];
   const std::uint32_t query = 2 * static_cast<std::uint32_t>(pass) + (end ? 1 : 0);
   // After everything recorded before it has completed: a pass's time is the interval between the
   // completion of what came before it and its own.
   cmd.writeTimestamp2(vk::PipelineStageFlagBits2::eAllCommands, *s.pool, query);
-  s.written |= 1u << query;
+  s.written |= std::uint64_t{1} << query;
 }
 
 void PassTimestamps::collect(std::uint32_t slot) {
@@ -51,12 +58,14 @@ void PassTimestamps::collect(std::uint32_t slot) {
   // Without the wait flag: the slot is finished, so every written query is available; one that is
   // not (it cannot happen on a finished slot) leaves its pass out rather than blocking.
   const auto [result, values] = s.pool.getResults<std::uint64_t>(
-      0, 2 * kTimedPasses, 2 * kTimedPasses * 2 * sizeof(std::uint64_t), 2 * sizeof(std::uint64_t),
+      0, queries(), queries() * 2 * sizeof(std::uint64_t), 2 * sizeof(std::uint64_t),
       vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWithAvailability);
   (void)result;  // eNotReady when a query was never written this frame (a pass that did not run)
   PassTimes t;
   t.frame = s.frame;
-  for (std::size_t p = 0; p < kTimedPasses; ++p) {
+  t.ran.assign(count(), false);
+  t.ms.assign(count(), 0.0);
+  for (std::size_t p = 0; p < count(); ++p) {
     const std::uint32_t a = 2 * static_cast<std::uint32_t>(p), b = a + 1;
     if (!(s.written >> a & 1) || !(s.written >> b & 1) || !values[2 * a + 1] || !values[2 * b + 1]) continue;
     const std::uint64_t ticks = (values[2 * b] - values[2 * a]) & valid_mask_;

@@ -4,7 +4,7 @@
 // finished (the frame's one fence wait already covered it), never with a wait of its own. A device
 // without timestamps (timestampComputeAndGraphics false, or timestampValidBits 0 on the queue)
 // records nothing and says why.
-#include <array>
+#include <string_view>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -13,21 +13,24 @@
 
 namespace pond::render {
 
-enum class TimedPass { caustics, foam, shadow, reflection, submerged, main, count };
-inline constexpr std::size_t kTimedPasses = static_cast<std::size_t>(TimedPass::count);
-const char* timed_pass_name(TimedPass pass);  // "caustics", "foam", ..., "main"
-using PassSet = std::array<bool, kTimedPasses>;  // by TimedPass
+// A set of a frame's passes, by their place in the frame's list (PassTimestamps::names()).
+using PassSet = std::vector<bool>;
 
 // One frame's pass times in milliseconds; `ran[p]` when pass p was recorded and its times read.
 struct PassTimes {
   std::uint64_t frame = 0;  // which frame (counted from 1 by the loop's begin_frame calls); 0: none yet
-  std::array<bool, kTimedPasses> ran{};
-  std::array<double, kTimedPasses> ms{};
+  PassSet ran;
+  std::vector<double> ms;
 };
 
 class PassTimestamps {
  public:
-  PassTimestamps(const gpu::Context& ctx, std::uint32_t slots);
+  // For the passes named `names` (the frame's list, in order: "caustics", ..., "main").
+  PassTimestamps(const gpu::Context& ctx, std::uint32_t slots, std::vector<std::string> names);
+
+  const std::vector<std::string>& names() const { return names_; }
+  std::size_t count() const { return names_.size(); }
+  std::size_t index_of(std::string_view name) const;  // count() when there is no such pass
 
   bool supported() const { return supported_; }
   const std::string& unsupported_reason() const { return reason_; }  // "" when supported
@@ -35,11 +38,11 @@ class PassTimestamps {
   // At the start of a slot's first command buffer of a frame (outside any rendering): the slot's
   // queries reset for a new frame. The slot must be finished and collected.
   void begin_frame(const vk::raii::CommandBuffer& cmd, std::uint32_t slot);
-  // Written around a pass's commands (scope() does both).
-  void write(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, TimedPass pass, bool end);
+  // Written around the commands of pass `pass` (its place in names(); scope() does both).
+  void write(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, std::size_t pass, bool end);
   class Scope {
    public:
-    Scope(PassTimestamps& t, const vk::raii::CommandBuffer& cmd, std::uint32_t slot, TimedPass pass)
+    Scope(PassTimestamps& t, const vk::raii::CommandBuffer& cmd, std::uint32_t slot, std::size_t pass)
         : t_(t), cmd_(cmd), slot_(slot), pass_(pass) { t_.write(cmd_, slot_, pass_, false); }
     ~Scope() { t_.write(cmd_, slot_, pass_, true); }
     Scope(const Scope&) = delete;
@@ -48,9 +51,9 @@ class PassTimestamps {
     PassTimestamps& t_;
     const vk::raii::CommandBuffer& cmd_;
     std::uint32_t slot_;
-    TimedPass pass_;
+    std::size_t pass_;
   };
-  Scope scope(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, TimedPass pass) { return {*this, cmd, slot, pass}; }
+  Scope scope(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, std::size_t pass) { return {*this, cmd, slot, pass}; }
   // Reads the slot's last frame's times into last() (once; later calls do nothing until the
   // slot's next frame). The slot's submissions must have finished: nothing here waits.
   void collect(std::uint32_t slot);
@@ -60,9 +63,12 @@ class PassTimestamps {
   struct Slot {
     vk::raii::QueryPool pool = nullptr;
     std::uint64_t frame = 0;     // the frame written into it
-    std::uint32_t written = 0;   // bit 2p: pass p's start, 2p+1: its end
+    std::uint64_t written = 0;   // bit 2p: pass p's start, 2p+1: its end
     bool collected = true;
   };
+  std::uint32_t queries() const { return static_cast<std::uint32_t>(2 * names_.size()); }
+
+  std::vector<std::string> names_;
   bool supported_ = false;
   std::string reason_;
   double ns_per_tick_ = 1;

@@ -79,10 +79,11 @@ vk::raii::Pipeline create(const gpu::Context& ctx, const vk::raii::PipelineLayou
 
 }  // namespace
 
-WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format) {
+WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format,
+                                      std::span<const vk::DescriptorSetLayoutBinding> pass_bindings) {
   WaterPipelines p;
   using SS = vk::ShaderStageFlagBits;
-  const vk::DescriptorSetLayoutBinding bindings[] = {
+  const vk::DescriptorSetLayoutBinding own[] = {
       {.binding = POND_RENDER_BINDING_FRAME, .descriptorType = vk::DescriptorType::eUniformBuffer,
        .descriptorCount = 1, .stageFlags = SS::eVertex | SS::eFragment},
       {.binding = POND_RENDER_BINDING_STATE, .descriptorType = vk::DescriptorType::eStorageBuffer,
@@ -96,12 +97,18 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
       {.binding = POND_RENDER_BINDING_CAUSTICS, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
        .descriptorCount = 1, .stageFlags = SS::eFragment},
       {.binding = POND_RENDER_BINDING_SUBMERGED, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
-       .descriptorCount = 1, .stageFlags = SS::eFragment},
-      {.binding = POND_RENDER_BINDING_FOAM, .descriptorType = vk::DescriptorType::eStorageBuffer,
-       .descriptorCount = 1, .stageFlags = SS::eVertex}};
-  static_assert(std::size(bindings) == POND_RENDER_BINDINGS);
+       .descriptorCount = 1, .stageFlags = SS::eFragment}};
+  static_assert(std::size(own) == POND_RENDER_BINDINGS);
+  p.set_bindings.assign(std::begin(own), std::end(own));
+  for (const vk::DescriptorSetLayoutBinding& b : pass_bindings) {
+    for (const vk::DescriptorSetLayoutBinding& earlier : p.set_bindings)
+      if (earlier.binding == b.binding)
+        throw InternalError("two bindings numbered " + std::to_string(b.binding) + " in the water's set");
+    p.set_bindings.push_back(b);
+  }
   p.set_layout = vk::raii::DescriptorSetLayout(
-      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = POND_RENDER_BINDINGS, .pBindings = bindings});
+      ctx.device(), vk::DescriptorSetLayoutCreateInfo{.bindingCount = static_cast<std::uint32_t>(p.set_bindings.size()),
+                                                      .pBindings = p.set_bindings.data()});
   const vk::DescriptorSetLayout set_layout = *p.set_layout;
   p.layout = vk::raii::PipelineLayout(ctx.device(),
                                       vk::PipelineLayoutCreateInfo{.setLayoutCount = 1, .pSetLayouts = &set_layout});

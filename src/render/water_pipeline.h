@@ -19,6 +19,7 @@
 // The land and the waters test depth with "less" (render/frame_loop.cpp draws them twice where
 // shadows fall); the rest with "less or equal".
 // No culling: large splashes may fold the surface over.
+#include <span>
 #include <vector>
 
 #include "gpu/context.h"
@@ -26,6 +27,8 @@
 namespace pond::render {
 
 struct WaterPipelines {
+  // The set's bindings (shared/water_render.h's, then the passes'), and its layout.
+  std::vector<vk::DescriptorSetLayoutBinding> set_bindings;
   vk::raii::DescriptorSetLayout set_layout = nullptr;
   vk::raii::PipelineLayout layout = nullptr;
   vk::raii::Pipeline land = nullptr;
@@ -46,6 +49,9 @@ struct WaterPipelines {
   }
 };
 
-WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format);
+// `pass_bindings`: those the passes add to the set (FramePass::water_bindings); InternalError for a
+// number taken twice.
+WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_format, vk::Format depth_format,
+                                      std::span<const vk::DescriptorSetLayoutBinding> pass_bindings);
 
 }  // namespace pond::render

@@ -20,6 +20,7 @@
 #include "gpu/gpu_solvers.h"
 #include "lod/node_positions.h"
 #include "render/frame_constants.h"
+#include "render/water_buffers.h"
 #include "sim/session.h"
 
 namespace pond::render {
@@ -30,13 +31,7 @@ class WaterSource : public lod::NodeFetch {
   // Both must outlive this.
   WaterSource(const gpu::Context& ctx, sim::Session& session, const gpu::GpuSolvers* gpu);
 
-  struct DrawBuffers {
-    const gpu::Buffer* state;    // ux | uy | uz arrays of `stride` floats, rows `pitch` nodes apart
-    const gpu::Buffer* normals;  // one vec4 per node, compact
-    const gpu::Buffer* bodies;   // sim::BodyState per body; null without bodies
-    std::uint32_t stride;
-    std::uint32_t pitch;
-  };
+  using DrawBuffers = WaterBuffers;
   // The state on the host, as the session's solver last changed it: the GPU solver waits here for
   // its last submission (which also finishes every frame submitted before it).
   void sync();

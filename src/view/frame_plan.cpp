@@ -48,7 +48,7 @@ FramePlan plan_frame(const PlanInput& in) {
   FramePlan plan;
   plan.caustics = in.effects.caustics;
   plan.reflection = in.effects.reflections;
-  plan.foam = in.effects.foam;
+  plan.effects = in.effects;
   std::vector<PixelRect> below, shadowed;
   if (in.effects.submerged) {
     auto add = [&](ShadowCaster box) {

@@ -23,9 +23,9 @@ inline constexpr std::uint32_t kMaxShadowMapSize = 1024;
 inline constexpr double kShadowWaveMargin = 1.0;
 
 struct FramePlan {
+  Effects effects;  // those asked for; a pass that needs no more than its switch reads it here
   bool caustics = false;
   bool reflection = false;
-  bool foam = false;  // the foam's update runs and the water draws it (render/foam_pass.h)
   // Something lies under the surface besides the floor and the rim's walls (islands' walls,
   // bodies) where the camera can see it: the frame draws the submerged layer
   // (render/submerged_pass.h).

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <stdexcept>
 #include <vector>
 
 #include "core/png.h"
@@ -14,6 +15,7 @@
 #include "golden.h"
 #include "gpu_fixture.h"
 #include "image_compare.h"
+#include "render/foam_pass.h"
 #include "render/render_target.h"
 #include "scene/scene.h"
 #include "sim/state.h"
@@ -55,6 +57,12 @@ class FoamTest : public GpuTest {
     render::RenderTarget target;
     render::FrameView view;
   };
+  // The loop's foam pass, found by name as a tool would.
+  static render::FoamPass& foam_of(Pond& p) {
+    auto* foam = dynamic_cast<render::FoamPass*>(p.d.loop.pass("foam"));
+    if (!foam) throw std::logic_error("the frame loop has no foam pass");
+    return *foam;
+  }
 
   // The pixels of the surface behind the sphere (world x 32..60 along its path, z = 48 +- 2).
   std::vector<std::array<int, 2>> wake_pixels(const Pond& p) const {
@@ -105,11 +113,11 @@ TEST_F(FoamTest, TheWakeOfADraggedSphereWhitensAndFadesAfterItStops) {
   EXPECT_GT(dragged[0], 12.0);
   EXPECT_GT(dragged[1], 0.6);
   EXPECT_LT(later[0], 0.35 * dragged[0]);
-  EXPECT_TRUE(on.d.loop.foam().made());
+  EXPECT_TRUE(foam_of(on).made());
   // Foam off: the pass made nothing and recorded nothing (no foam time in the frames' timestamps).
-  EXPECT_FALSE(off.d.loop.foam().made());
-  EXPECT_FALSE(off.d.loop.passes_recorded()[static_cast<std::size_t>(render::TimedPass::foam)]);
-  EXPECT_TRUE(on.d.loop.passes_recorded()[static_cast<std::size_t>(render::TimedPass::foam)]);
+  EXPECT_FALSE(foam_of(off).made());
+  EXPECT_FALSE(off.d.loop.recorded("foam"));
+  EXPECT_TRUE(on.d.loop.recorded("foam"));
   // The foam is drawn, never fed back: the same bits with it and without (a guard for the future,
   // should a pass ever share the solver's buffers).
   const std::vector<float> a = sim::to_world_interleaved(on.d.session.state(), on.d.session.model());
@@ -124,7 +132,7 @@ TEST_F(FoamTest, TheCpuSolversFoamIsTheGpuSolvers) {
   Pond gpu(ctx(), kDraggedThroughFoam, true), cpu(ctx(), kDraggedThroughFoam, true, {.gpu = false});
   gpu.run(60, 2);
   cpu.run(60, 2);
-  const std::vector<float> a = gpu.d.loop.foam().read(), b = cpu.d.loop.foam().read();
+  const std::vector<float> a = foam_of(gpu).read(), b = foam_of(cpu).read();
   ASSERT_EQ(a.size(), b.size());
   double most = 0;
   for (float f : a) most = std::max(most, static_cast<double>(f));
@@ -138,10 +146,10 @@ TEST_F(FoamTest, WaterResetToRestHasNoFoam) {
   p.run(60, 2);
   p.d.session.reset();
   p.d.loop.frame(p.target.frame_target(), p.view);
-  for (float f : p.d.loop.foam().read()) ASSERT_EQ(f, 0.0f);
+  for (float f : foam_of(p).read()) ASSERT_EQ(f, 0.0f);
   p.run(60, 2);
   double most = 0;
-  for (float f : p.d.loop.foam().read()) most = std::max(most, static_cast<double>(f));
+  for (float f : foam_of(p).read()) most = std::max(most, static_cast<double>(f));
   EXPECT_GT(most, 0.5);
 }
 
@@ -150,7 +158,7 @@ TEST_F(FoamTest, CalmWaterLooksTheSameWithAndWithoutFoam) {
   Pond on(ctx(), kCalmForFoam, true), off(ctx(), kCalmForFoam, false);
   const Rgba a = on.run(30, 3), b = off.run(30, 3);
   EXPECT_EQ(a.pixels, b.pixels);
-  const std::vector<float> foam = on.d.loop.foam().read();
+  const std::vector<float> foam = foam_of(on).read();
   ASSERT_EQ(foam.size(), 97u * 97u);
   for (float f : foam) ASSERT_EQ(f, 0.0f);
 }

@@ -3,12 +3,15 @@
 // before the main one and makes none of their targets, while turning them on makes and runs each.
 #include <cstdio>
 
+#include "core/errors.h"
 #include "drawn_session.h"
 #include "golden.h"
 #include "gpu_fixture.h"
 #include "render/body_drawable.h"
 #include "render/frame_pass.h"
+#include "render/render_layout.h"
 #include "render/render_target.h"
+#include "render/water_pipeline.h"
 #include "scene/scene.h"
 
 namespace pond::test {
@@ -101,22 +104,43 @@ TEST_F(PassListTest, EverythingOffRecordsNoPassAndMakesNoTarget) {
     }
     return d.loop.passes_recorded();
   };
+  const std::vector<std::string>& names = d.loop.timestamps().names();
+  ASSERT_EQ(names.size(), 6u);  // caustics, foam, shadow, reflection, submerged, main
+  EXPECT_EQ(names.back(), "main");
   const render::PassSet off = passes_run(view::Effects::none());
-  for (std::size_t p = 0; p < render::kTimedPasses; ++p)
-    EXPECT_EQ(off[p], p == static_cast<std::size_t>(render::TimedPass::main))
-        << render::timed_pass_name(static_cast<render::TimedPass>(p));
+  ASSERT_EQ(off.size(), names.size());
+  for (std::size_t p = 0; p < names.size(); ++p) EXPECT_EQ(off[p], names[p] == "main") << names[p];
   EXPECT_EQ(d.loop.pass_targets(), 0u);
 
   // Every effect on: each pass runs and has made its targets.
   const render::PassSet on = passes_run(view::Effects{});
-  for (std::size_t p = 0; p < render::kTimedPasses; ++p)
-    EXPECT_TRUE(on[p]) << render::timed_pass_name(static_cast<render::TimedPass>(p));
+  ASSERT_EQ(on.size(), names.size());
+  for (std::size_t p = 0; p < names.size(); ++p) EXPECT_TRUE(on[p]) << names[p];
+  EXPECT_TRUE(d.loop.recorded("foam") && d.loop.recorded("main"));
+  EXPECT_FALSE(d.loop.recorded("no such pass"));
   // Where the device has timestamps, they time just those.
   if (d.loop.timestamps().supported()) {
     EXPECT_EQ(d.loop.timestamps().last().ran, on);
   }
   std::printf("targets the passes made with every effect on: %zu\n", d.loop.pass_targets());
   EXPECT_EQ(d.loop.pass_targets(), 3u + 5u * render::kFramesInFlight);
+}
+
+// A pass's binding in the water's set that another already has (the set's own, or another pass's)
+// is refused when the pipelines are made, not left to clobber a descriptor.
+TEST_F(PassListTest, ABindingOfTheWatersSetTakenTwiceIsRefused) {
+  const vk::DescriptorSetLayoutBinding foamlike{.binding = POND_RENDER_BINDINGS,
+                                                .descriptorType = vk::DescriptorType::eStorageBuffer,
+                                                .descriptorCount = 1, .stageFlags = vk::ShaderStageFlagBits::eVertex};
+  vk::DescriptorSetLayoutBinding state = foamlike;
+  state.binding = POND_RENDER_BINDING_STATE;
+  const vk::DescriptorSetLayoutBinding twice[] = {foamlike, foamlike};
+  const auto make = [&](std::span<const vk::DescriptorSetLayoutBinding> b) {
+    return render::create_water_pipelines(ctx(), render::RenderTarget::kFormat, render::kDepthFormat, b);
+  };
+  EXPECT_THROW(make(std::span(&state, 1)), InternalError);
+  EXPECT_THROW(make(twice), InternalError);
+  EXPECT_EQ(make(std::span(&foamlike, 1)).set_bindings.size(), POND_RENDER_BINDINGS + 1u);
 }
 
 }  // namespace

@@ -64,9 +64,9 @@ void measure_frame(const gpu::Context& ctx, const Plan& plan, Progress& progress
 
   Figure all = make_figure("frame.all_effects", "frame, every effect on, " + where, "ms", false);
   Figure none = make_figure("frame.no_effects", "frame, every effect off, " + where, "ms", false);
-  std::vector<Figure> passes(render::kTimedPasses);
+  std::vector<Figure> passes(loop.timestamps().count());
   for (std::size_t p = 0; p < passes.size(); ++p) {
-    const char* name = render::timed_pass_name(static_cast<render::TimedPass>(p));
+    const char* name = loop.timestamps().names()[p].c_str();
     passes[p] = make_figure(std::string("frame.gpu.") + name, std::string("GPU time of the ") + name +
                  " pass, every effect on (timestamps)", "ms", false);
   }

@@ -37,7 +37,7 @@ std::string driver_version(const gpu::Context& ctx, std::uint32_t v) {
 
 Device describe(const gpu::Context& ctx) {
   const vk::PhysicalDeviceProperties p = ctx.physical().getProperties();
-  const render::PassTimestamps probe(ctx, 0);
+  const render::PassTimestamps probe(ctx, 0, {});
   const std::uint32_t api = ctx.api_version();
   return {.name = ctx.device_name(), .type = device_type(p.deviceType), .driver = ctx.driver(),
           .driver_version = driver_version(ctx, p.driverVersion),

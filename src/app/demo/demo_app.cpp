@@ -124,17 +124,18 @@ scene::Scene DemoApp::scene_with_settings() const {
 }
 
 // A loop for the session's current model (its land follows the constraints); the tree with the
-// controls' changes carried over, and the foam of the loop it replaces (the same water goes on).
+// controls' changes carried over, and what the passes of the loop it replaces carry (the foam: the
+// same water goes on).
 void DemoApp::build_loop() {
-  render::FoamPass::Carried foam;
+  render::CarriedPasses carried;
   if (loop_) {
     loop_->wait_idle();
-    foam = loop_->foam().carry();
+    carried = loop_->carry_passes();
   }
   loop_.reset();  // one loop at a time: its buffers and pipelines are the big allocations
   drawn_scene_ = scene_with_settings();
   loop_ = std::make_unique<render::FrameLoop>(gpu_->ctx, drawn_scene_, *session_, &gpu_->solvers, gpu_->swapchain.format());
-  loop_->adopt_foam(std::move(foam));
+  loop_->adopt_passes(std::move(carried));
   if (drawn_scene_.tree) {  // drawn before the UI
     const tree::TreeSpec spec = tree_ ? tree_->spec() : *drawn_scene_.tree;
     tree_.reset();
