@@ -42,7 +42,7 @@ layout(location = POND_WATER_FLAT_SHADOW_SUN) flat in vec4 in_shadow_sun;  // su
 #ifdef POND_WATER_REFLECTIONS
 layout(set = 0, binding = POND_RENDER_BINDING_REFLECTION) uniform sampler2D reflection;
 #endif
-layout(set = 0, binding = POND_RENDER_BINDING_CAUSTICS) uniform sampler2D caustics;
+layout(set = 0, binding = POND_CAUSTICS_WATER_BINDING) uniform sampler2D caustics;
 layout(constant_id = POND_SPEC_CAUSTICS) const bool kCaustics = false;
 layout(set = 0, binding = POND_RENDER_BINDING_SUBMERGED) uniform usampler2D submerged;
 layout(constant_id = POND_SPEC_SUBMERGED) const bool kSubmerged = false;

@@ -47,6 +47,10 @@ using water_render::vec4;
 #define POND_CAUSTICS_BINDING_MAP 2      // storage image, R8G8B8A8_UNORM: the map (kCausticsUnit)
 #define POND_CAUSTICS_BINDINGS 3
 
+// The map's binding in the water's set (shared/water_render.h: the passes' follow the set's own), a
+// combined image sampler read by water.frag where POND_SPEC_CAUSTICS is on.
+#define POND_CAUSTICS_WATER_BINDING 6
+
 // Push constants.
 struct CausticsPush {
   vec4 sun;     // xyz: unit direction toward the sun; w: the floor's depth below rest (grid units)

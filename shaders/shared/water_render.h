@@ -13,13 +13,11 @@
 //   4: combined image sampler with depth compare (sampler2DShadow), the sun's shadow map
 //      (render/shadow_pass.h), per frame slot; read by the land and the water when
 //      POND_SPEC_SHADOWS is on
-//   5: combined image sampler, the caustics map (render/caustics_pass.h), per frame slot; read by
-//      water.frag where POND_SPEC_CAUSTICS is on
-//   6: combined image sampler, what lies under the surface (render/submerged_pass.h), per frame
+//   5: combined image sampler, what lies under the surface (render/submerged_pass.h), per frame
 //      slot; read by water.frag where POND_SPEC_SUBMERGED is on
 //   POND_RENDER_BINDINGS and up: what the passes whose output the water reads bind (each declares
-//      its binding's number in its own shared header, and its FramePass writes it every frame:
-//      render/frame_pass.h); the set layout is checked for two passes claiming one number
+//      its binding's number in its own shared header: the caustics map, the foam; its FramePass
+//      writes it every frame: render/frame_pass.h); the set layout refuses a number taken twice
 // The water is drawn with vertex pulling: the index buffer holds node indices n = row * cols + col
 // (the LOD builder's output as is), the vertex shader reads the normals at gl_VertexIndex and the
 // state at its row * pitch + col.
@@ -52,9 +50,8 @@ struct mat4 {
 #define POND_RENDER_BINDING_NORMALS 2
 #define POND_RENDER_BINDING_REFLECTION 3
 #define POND_RENDER_BINDING_SHADOW 4
-#define POND_RENDER_BINDING_CAUSTICS 5
-#define POND_RENDER_BINDING_SUBMERGED 6
-#define POND_RENDER_BINDINGS 7  // the set's own; the passes' follow
+#define POND_RENDER_BINDING_SUBMERGED 5
+#define POND_RENDER_BINDINGS 6  // the set's own; the passes' follow
 
 // The fragment shaders take the frame's constants as flat varyings from their vertex shader, not
 // from the uniform block: llvmpipe (Mesa 22.3) reads a uniform (or push constant) in a fragment

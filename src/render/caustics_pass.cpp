@@ -4,7 +4,9 @@
 #include <string>
 
 #include "render/barrier_batch.h"
+#include "render/reflection_pass.h"
 #include "render/render_shaders.h"
+#include "view/sun_shadow.h"
 
 namespace pond::render {
 namespace {
@@ -25,20 +27,25 @@ static_assert(std::size(kBindings) == POND_CAUSTICS_BINDINGS && POND_CAUSTICS_BI
 }  // namespace
 
 CausticsPass::CausticsPass(const gpu::Context& ctx, const sim::WaterModel& model, std::uint32_t slots)
-    : ctx_(ctx), pipeline_(gpu::create_compute_pipeline(ctx, caustics_comp_spirv(), kBindings, sizeof(CausticsPush), {},
-                                                        "caustics")) {
+    : ctx_(ctx), slot_count_(slots), sampler_(create_reflection_sampler(ctx)) {
+  const view::GridSize size = view::caustics_extent(model.rows, model.cols);
+  extent_ = vk::Extent2D{size.width, size.height};
+}
+
+void CausticsPass::make() {
+  const gpu::Context& ctx = ctx_;
+  const std::uint32_t slots = slot_count_;
+  pipeline_ = gpu::create_compute_pipeline(ctx, caustics_comp_spirv(), kBindings, sizeof(CausticsPush), {}, "caustics");
   const vk::DescriptorPoolSize sizes[] = {{.type = vk::DescriptorType::eUniformTexelBuffer, .descriptorCount = 2 * slots},
                                           {.type = vk::DescriptorType::eStorageImage, .descriptorCount = slots}};
   pool_ = vk::raii::DescriptorPool(ctx.device(), vk::DescriptorPoolCreateInfo{
                                                      .flags = vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet,
                                                      .maxSets = slots, .poolSizeCount = 2, .pPoolSizes = sizes});
-  const view::GridSize size = view::caustics_extent(model.rows, model.cols);
-  const vk::Extent2D extent{size.width, size.height};
   using U = vk::ImageUsageFlagBits;
   for (std::uint32_t k = 0; k < slots; ++k) {
     Slot s;
     const std::string n = ", slot " + std::to_string(k);
-    s.map = create_image(ctx, extent, kCausticsFormat, U::eStorage | U::eSampled | U::eTransferDst | U::eTransferSrc,
+    s.map = create_image(ctx, extent_, kCausticsFormat, U::eStorage | U::eSampled | U::eTransferDst | U::eTransferSrc,
                          vk::ImageAspectFlagBits::eColor, "caustics map" + n);
     const vk::DescriptorSetLayout layout = *pipeline_.set_layout;
     s.set = std::move(vk::raii::DescriptorSets(ctx.device(), vk::DescriptorSetAllocateInfo{
@@ -68,14 +75,41 @@ vk::BufferView CausticsPass::view_of(Slot& slot, const gpu::Buffer& buffer, vk::
   return *slot.views.back().second;
 }
 
-std::vector<vk::raii::BufferView> CausticsPass::take_views(std::uint32_t slot) {
-  std::vector<vk::raii::BufferView> out;
-  for (auto& [buffer, view] : slots_[slot].views) out.push_back(std::move(view));
-  slots_[slot].views.clear();
-  return out;
+void CausticsPass::water_bindings(std::vector<vk::DescriptorSetLayoutBinding>& out) const {
+  out.push_back({.binding = POND_CAUSTICS_WATER_BINDING, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
+                 .descriptorCount = 1, .stageFlags = vk::ShaderStageFlagBits::eFragment});
+}
+
+void CausticsPass::prepare(const FrameContext& frame) {
+  if (made()) {
+    Slot& s = slots_[frame.slot];
+    const std::uint64_t generation = frame.base.session.solver_generation();
+    if (s.generation != generation) s.views.clear();  // of a replaced solver's buffers; the slot is finished
+    s.generation = generation;
+  }
+  if (enabled(frame)) bind(frame.slot, *frame.water.state, *frame.water.normals);
+}
+
+void CausticsPass::bind_water(const FrameContext& frame, WaterSetWrites& set, WaterFrame& /*uniforms*/) {
+  // Without caustics no pipeline of the frame samples it: the placeholder stands in.
+  const vk::ImageView view = made() ? *slots_[frame.slot].map.view : *frame.placeholders.reflection.view;
+  set.image(POND_CAUSTICS_WATER_BINDING, *sampler_, view, L::eShaderReadOnlyOptimal);
+}
+
+void CausticsPass::declare(const FrameContext& frame, PassDeclaration& d) {
+  d.writes.push_back({.image = *slots_[frame.slot].map.image, .layout = L::eGeneral, .stages = S::eComputeShader,
+                      .access = A::eShaderStorageWrite});
+}
+
+void CausticsPass::record(const vk::raii::CommandBuffer& cmd, const FrameContext& frame) {
+  const sim::WaterModel& model = frame.base.session.model();
+  record_dispatch(cmd, frame.slot,
+                  view::caustics_push(model, view::unit(frame.base.lighting.sun), model.basin.floor_depth,
+                                      frame.water.stride, frame.water.pitch));
 }
 
 void CausticsPass::bind(std::uint32_t slot, const gpu::Buffer& state, const gpu::Buffer& normals) {
+  if (!made()) make();
   Slot& s = slots_[slot];
   const vk::BufferView views[] = {view_of(s, state, vk::Format::eR32Sfloat),
                                   view_of(s, normals, vk::Format::eR32G32B32A32Sfloat)};
@@ -91,13 +125,6 @@ void CausticsPass::bind(std::uint32_t slot, const gpu::Buffer& state, const gpu:
   ctx_.device().updateDescriptorSets(writes, nullptr);
 }
 
-vk::ImageMemoryBarrier2 CausticsPass::begin_barrier(std::uint32_t slot) const {
-  // The map from the water's sampling (this slot's previous frame, or creation) to the compute write;
-  // its contents are all rewritten.
-  return image_barrier(*slots_[slot].map.image, vk::ImageAspectFlagBits::eColor, L::eUndefined, L::eGeneral, S::eFragmentShader, {}, S::eComputeShader,
-                     A::eShaderStorageWrite);
-}
-
 void CausticsPass::record_dispatch(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, const CausticsPush& push) const {
   cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *pipeline_.layout, 0, *slots_[slot].set, nullptr);
   cmd.pushConstants<CausticsPush>(*pipeline_.layout, vk::ShaderStageFlagBits::eCompute, 0, push);
@@ -105,13 +132,15 @@ void CausticsPass::record_dispatch(const vk::raii::CommandBuffer& cmd, std::uint
   cmd.dispatch(gpu::group_count(push.map.x, POND_CAUSTICS_LOCAL), gpu::group_count(push.map.y, POND_CAUSTICS_LOCAL), 1);
 }
 
-vk::ImageMemoryBarrier2 CausticsPass::end_barrier(std::uint32_t slot) const {
-  return image_barrier(*slots_[slot].map.image, vk::ImageAspectFlagBits::eColor, L::eGeneral, L::eShaderReadOnlyOptimal, S::eComputeShader,
-                     A::eShaderStorageWrite, S::eFragmentShader, A::eShaderSampledRead);
-}
-
 void CausticsPass::record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, const CausticsPush& push) const {
-  const vk::ImageMemoryBarrier2 to_write = begin_barrier(slot), to_read = end_barrier(slot);
+  // The map from the water's sampling (or creation) to the compute write (its contents all
+  // rewritten), and back.
+  const vk::Image map = *slots_[slot].map.image;
+  const vk::ImageMemoryBarrier2 to_write = image_barrier(map, vk::ImageAspectFlagBits::eColor, L::eUndefined, L::eGeneral,
+                                                         S::eFragmentShader, {}, S::eComputeShader, A::eShaderStorageWrite);
+  const vk::ImageMemoryBarrier2 to_read =
+      image_barrier(map, vk::ImageAspectFlagBits::eColor, L::eGeneral, L::eShaderReadOnlyOptimal, S::eComputeShader,
+                    A::eShaderStorageWrite, S::eFragmentShader, A::eShaderSampledRead);
   cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &to_write});
   record_dispatch(cmd, slot, push);
   cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &to_read});

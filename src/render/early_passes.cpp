@@ -2,12 +2,11 @@
 
 #include <array>
 
+#include "render/caustics_pass.h"
 #include "render/foam_pass.h"
 #include "render/frame_pass.h"
 #include "render/shadow_pass.h"
 #include "render/submerged_pass.h"
-#include "view/caustics_grid.h"
-#include "view/sun_shadow.h"
 
 namespace pond::render {
 namespace {
@@ -23,26 +22,6 @@ void declare_layer(const LayerTarget& t, PassDeclaration& d) {
                       .layout = L::eDepthAttachmentOptimal, .stages = S2::eEarlyFragmentTests | S2::eLateFragmentTests,
                       .access = A2::eDepthStencilAttachmentRead | A2::eDepthStencilAttachmentWrite, .scratch = true});
 }
-
-class Caustics final : public FramePass {
- public:
-  explicit Caustics(const CausticsPass& pass) : pass_(pass) {}
-  const char* name() const override { return "caustics"; }
-  bool enabled(const FrameContext& frame) const override { return frame.plan.caustics; }
-  void declare(const FrameContext& frame, PassDeclaration& d) override {
-    d.writes.push_back({.image = *pass_.map(frame.slot).image, .layout = L::eGeneral, .stages = S2::eComputeShader,
-                        .access = A2::eShaderStorageWrite});
-  }
-  void record(const vk::raii::CommandBuffer& cmd, const FrameContext& frame) override {
-    const sim::WaterModel& model = frame.base.session.model();
-    pass_.record_dispatch(cmd, frame.slot,
-                          view::caustics_push(model, view::unit(frame.base.lighting.sun), model.basin.floor_depth,
-                                              frame.water.stride, frame.water.pitch));
-  }
-
- private:
-  const CausticsPass& pass_;
-};
 
 class Shadow final : public FramePass {
  public:
@@ -101,8 +80,8 @@ class Submerged final : public FramePass {
 
 }  // namespace
 
-EarlyPasses::EarlyPasses(const gpu::Context& ctx, const sim::WaterModel& model, const CausticsPass& caustics) {
-  owned_.push_back(std::make_unique<Caustics>(caustics));
+EarlyPasses::EarlyPasses(const gpu::Context& ctx, const sim::WaterModel& model) {
+  owned_.push_back(std::make_unique<CausticsPass>(ctx, model, kFramesInFlight));
   owned_.push_back(std::make_unique<FoamPass>(ctx, model, kFramesInFlight));
   owned_.push_back(std::make_unique<Shadow>());
   owned_.push_back(std::make_unique<Reflection>());

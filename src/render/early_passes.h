@@ -11,7 +11,6 @@
 #include <string_view>
 #include <vector>
 
-#include "render/caustics_pass.h"
 #include "render/frame_context.h"
 #include "render/frame_pass.h"
 #include "sim/model.h"
@@ -20,9 +19,8 @@ namespace pond::render {
 
 class EarlyPasses {
  public:
-  // For the water of `model`; `caustics` (the loop's: the water's set binds its maps) must outlive
-  // this, as must the context.
-  EarlyPasses(const gpu::Context& ctx, const sim::WaterModel& model, const CausticsPass& caustics);
+  // For the water of `model`; the context must outlive this.
+  EarlyPasses(const gpu::Context& ctx, const sim::WaterModel& model);
 
   std::span<FramePass* const> list() const { return passes_; }
   FramePass* find(std::string_view name) const;  // null: no pass of that name

@@ -19,6 +19,7 @@ struct FrameContext {
   std::uint32_t slot;
   FrameData& data;
   const WaterBuffers& water;  // what the water is drawn from this frame
+  const Placeholders& placeholders;  // what a pass that is off binds in the water's set
   const view::FramePlan& plan;
   const VisibleDraws& draws;
   const VisibleGeometry& geometry;

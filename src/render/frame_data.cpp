@@ -74,7 +74,6 @@ void write_frame_set(const gpu::Context& ctx, const FrameData& f, const gpu::Buf
   const vk::DescriptorBufferInfo infos[] = {f.uniforms.whole(), state.whole(), normals.whole()};
   const vk::DescriptorImageInfo images[] = {{.sampler = nearest, .imageView = bound.reflection, .imageLayout = kRead},
                                             {.sampler = shadow, .imageView = bound.shadow, .imageLayout = kRead},
-                                            {.sampler = nearest, .imageView = bound.caustics, .imageLayout = kRead},
                                             {.sampler = nearest, .imageView = bound.submerged, .imageLayout = kRead}};
   std::vector<vk::WriteDescriptorSet> writes = {
       {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_FRAME, .descriptorCount = 1,
@@ -87,10 +86,8 @@ void write_frame_set(const gpu::Context& ctx, const FrameData& f, const gpu::Buf
        .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[0]},
       {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_SHADOW, .descriptorCount = 1,
        .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[1]},
-      {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_CAUSTICS, .descriptorCount = 1,
-       .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[2]},
       {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_SUBMERGED, .descriptorCount = 1,
-       .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[3]}};
+       .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[2]}};
   for (vk::WriteDescriptorSet& w : passes) writes.push_back(w.setDstSet(*f.set));
   ctx.device().updateDescriptorSets(writes, nullptr);
 }

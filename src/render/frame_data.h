@@ -45,9 +45,9 @@ struct Placeholders {
   Image submerged;   // kSubmergedFormat
 };
 
-// The images the water's set binds this frame (shared/water_render.h).
+// The images the water's set binds this frame (shared/water_render.h's own bindings).
 struct FrameSetImages {
-  vk::ImageView reflection, shadow, caustics, submerged;
+  vk::ImageView reflection, shadow, submerged;
 };
 
 struct FrameData {
@@ -66,8 +66,8 @@ struct FrameData {
 
 // Points `frame`'s descriptor set (shared/water_render.h bindings) at its uniforms, the water's
 // `state` and `normals` and `images`, and writes `passes` (the passes' own bindings, their dstSet
-// filled in here); the frame must be finished. `nearest`: the layers' and the caustics map's
-// sampler; `shadow`: the depth-compare one.
+// filled in here); the frame must be finished. `nearest`: the layers' sampler; `shadow`: the
+// depth-compare one.
 void write_frame_set(const gpu::Context& ctx, const FrameData& frame, const gpu::Buffer& state,
                      const gpu::Buffer& normals, const FrameSetImages& images, vk::Sampler nearest, vk::Sampler shadow,
                      std::vector<vk::WriteDescriptorSet> passes);

@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "core/errors.h"
-#include "render/caustics_pass.h"
 #include "render/early_passes.h"
 #include "render/frame_data.h"
 #include "render/main_pass.h"
@@ -40,7 +39,6 @@ struct FrameLoop::Impl {
   const scene::Scene scene;
   sim::Session& session;
   vk::Format color_format;
-  CausticsPass caustics;
   EarlyPasses passes;  // before the main one
   WaterPipelines pipes;
   vk::raii::Sampler nearest_sampler = nullptr, shadow_sampler = nullptr;
@@ -50,7 +48,6 @@ struct FrameLoop::Impl {
   PassTimestamps timestamps;  // each pass's GPU time, read at the frame's wait; "main" last
   std::vector<PassDrawable*> drawables;
   std::uint32_t next = 0;
-  std::uint64_t generation;  // the session's solver the caustics' views are of
 
   // What prepare() left for draw().
   struct Prepared {
@@ -71,12 +68,11 @@ struct FrameLoop::Impl {
 
   Impl(const gpu::Context& c, const scene::Scene& s, sim::Session& drawn, const gpu::GpuSolvers* gpu,
        vk::Format format)
-      : ctx(c), scene(s), session(drawn), color_format(format), caustics(c, drawn.model(), kFramesInFlight),
-        passes(c, drawn.model(), caustics), pipes(create_water_pipelines(c, format, kDepthFormat, pass_bindings())),
+      : ctx(c), scene(s), session(drawn), color_format(format),
+        passes(c, drawn.model()), pipes(create_water_pipelines(c, format, kDepthFormat, pass_bindings())),
         nearest_sampler(create_reflection_sampler(c)), shadow_sampler(create_shadow_sampler(c)),
         frames(c, *pipes.set_layout, pipes.set_bindings), water(c, drawn, gpu), geometry(c, drawn.model()),
-        timestamps(c, kFramesInFlight, pass_names()), last_passes(timestamps.count(), false),
-        generation(drawn.solver_generation()) {}
+        timestamps(c, kFramesInFlight, pass_names()), last_passes(timestamps.count(), false) {}
 
   std::vector<vk::DescriptorSetLayoutBinding> pass_bindings() const {
     std::vector<vk::DescriptorSetLayoutBinding> out;
@@ -98,7 +94,8 @@ struct FrameLoop::Impl {
             session, f.lighting, water.bodies(), f.water.bodies};
   }
   FrameContext context(const Prepared& f, const FrameInfo& base) {
-    return {f.slot, frames[f.slot], f.water, f.plan, f.draws, geometry, pipes, drawables, base, timestamps};
+    return {f.slot, frames[f.slot], f.water, frames.placeholders(), f.plan, f.draws, geometry, pipes, drawables, base,
+            timestamps};
   }
 
   // The frame's resources, camera, plan, land and uniforms at `extent`; the early passes into
@@ -119,7 +116,7 @@ struct FrameLoop::Impl {
                                session.model().basin.floor_depth, session.model().basin.land_height});
     // Each pass's target made when the frame first has it; a frame without binds a placeholder.
     const Placeholders& none = frames.placeholders();
-    FrameSetImages images{*none.reflection.view, *none.shadow.view, *caustics.map(f.slot).view, *none.submerged.view};
+    FrameSetImages images{*none.reflection.view, *none.shadow.view, *none.submerged.view};
     if (f.plan.reflection) {
       ensure_layer_target(ctx, d.reflection, reflection_extent(extent), kReflectionFormat, "reflection");
       images.reflection = *d.reflection.color.view;
@@ -145,7 +142,6 @@ struct FrameLoop::Impl {
     }
     write_frame_set(ctx, d, *f.water.state, *f.water.normals, images, *nearest_sampler, *shadow_sampler,
                     std::move(pass_writes.writes));
-    caustics.bind(f.slot, *f.water.state, *f.water.normals);
     std::memcpy(d.uniforms.mapped, &u, sizeof u);
     d.uniforms.flush(ctx);
     timestamps.begin_frame(cmd, f.slot);
@@ -174,13 +170,9 @@ struct FrameLoop::Impl {
     f.stats.wait_ms = ms_since(t);
     frames.finish(f.slot);
     timestamps.collect(f.slot);  // finished: its last frame's pass times are there to read
-    if (generation != session.solver_generation()) {  // new water buffers: the old views retire
-      for (std::uint32_t k = 0; k < kFramesInFlight; ++k) frames.retire(k, caustics.take_views(k));
-      generation = session.solver_generation();
-    }
     f.water = water.prepare(f.slot);
     f.state_revision = session.state_revision();
-    f.generation = generation;
+    f.generation = session.solver_generation();
     set_up(f, extent, frames.begin_early(f.slot));
     frames.submit_early(f.slot);  // the device draws them while the CPU builds the LOD
     f.stats.draw_ms = ms_since(t);

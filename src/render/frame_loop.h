@@ -114,9 +114,8 @@ class FrameLoop {
   PassSet passes_recorded() const;
   bool recorded(std::string_view name) const;
   // How many images and buffers the passes before the main one have made so far, over every frame
-  // slot (the reflection's and the submerged layer's two images, the shadow map, the foam's
-  // buffers; not the caustics maps, made with the loop): none while every effect is off. For tests
-  // and tools.
+  // slot (the caustics map, the reflection's and the submerged layer's two images, the shadow map,
+  // the foam's buffers): none while every effect is off. For tests and tools.
   std::size_t pass_targets() const;
   // The last prepared frame's LOD triangles before culling (node indices; empty for the full mesh).
   std::span<const std::uint32_t> lod_triangles() const;

@@ -54,7 +54,9 @@ struct PassDeclaration {
 // writes it every frame, its output or, when off, a stand-in of the same kind.
 struct WaterSetWrites {
   void buffer(std::uint32_t binding, const gpu::Buffer& b);
-  std::deque<vk::DescriptorBufferInfo> buffers;  // a deque: the writes point into it
+  void image(std::uint32_t binding, vk::Sampler sampler, vk::ImageView view, vk::ImageLayout layout);
+  std::deque<vk::DescriptorBufferInfo> buffers;  // deques: the writes point into them
+  std::deque<vk::DescriptorImageInfo> images;
   std::vector<vk::WriteDescriptorSet> writes;    // dstSet left for the frame to fill in
 };
 

@@ -92,4 +92,10 @@ void WaterSetWrites::buffer(std::uint32_t binding, const gpu::Buffer& b) {
                     .pBufferInfo = &buffers.back()});
 }
 
+void WaterSetWrites::image(std::uint32_t binding, vk::Sampler sampler, vk::ImageView view, vk::ImageLayout layout) {
+  images.push_back({.sampler = sampler, .imageView = view, .imageLayout = layout});
+  writes.push_back({.dstBinding = binding, .descriptorCount = 1,
+                    .descriptorType = vk::DescriptorType::eCombinedImageSampler, .pImageInfo = &images.back()});
+}
+
 }  // namespace pond::render

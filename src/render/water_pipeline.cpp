@@ -94,8 +94,6 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
        .descriptorCount = 1, .stageFlags = SS::eFragment},
       {.binding = POND_RENDER_BINDING_SHADOW, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
        .descriptorCount = 1, .stageFlags = SS::eFragment},
-      {.binding = POND_RENDER_BINDING_CAUSTICS, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
-       .descriptorCount = 1, .stageFlags = SS::eFragment},
       {.binding = POND_RENDER_BINDING_SUBMERGED, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
        .descriptorCount = 1, .stageFlags = SS::eFragment}};
   static_assert(std::size(own) == POND_RENDER_BINDINGS);
