@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
                             // vertex shader: its cost against the article's bend, every level drawn.
                             {"tubes, keep-length bend", true, false, true, tree::TreeBend::keep_length}};
   gpu::Context ctx{gpu::ContextOptions{}};
-  const render::RenderTarget target(ctx, 1280, 720);
+  render::RenderTarget target(ctx, 1280, 720);
   gpu::GpuSolvers solvers(ctx);
   std::vector<std::unique_ptr<sim::Session>> sessions;  // before the loops that draw them
   std::vector<std::unique_ptr<render::FrameLoop>> loops;

@@ -122,7 +122,7 @@ int render_scene(const RenderOptions& o, const scene::Scene& scene, const gpu::C
   const std::int64_t steps_per_frame = scene.view.steps_per_frame;
   lod::validate(view.camera, view.lod_tolerance_px > 0 ? view.lod_tolerance_px : 1.0);
 
-  const render::RenderTarget target(ctx, o.width, o.height);
+  render::RenderTarget target(ctx, o.width, o.height);
   using Clock = std::chrono::steady_clock;
   auto ms = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
   session.advance(o.steps + steps_per_frame);  // what the first frame shows

@@ -228,7 +228,7 @@ void GpuSolver::record_step(const vk::raii::CommandBuffer& cmd, std::uint32_t re
 // After the normals: the host's copies of the displacements (unless read in place) and the bodies,
 // made visible to the host; and everything the submission wrote before any later submission's
 // commands (the renderer's reads, uploads that overwrite the state).
-void GpuSolver::record_copies(const vk::raii::CommandBuffer& cmd, const Submission& s) const {
+void GpuSolver::record_copies(const vk::raii::CommandBuffer& cmd, const Submission& s) {
   if (s.published && readback_) readback_->record(cmd, state_[cur_], s, ring_->index_of(s));
   if (s.published && contact_)
     cmd.copyBuffer(*contact_->bodies().buffer, *s.bodies.buffer,

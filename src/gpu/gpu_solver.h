@@ -117,7 +117,7 @@ class GpuSolver : public sim::Solver {
   Submission& published();
   void record_splashes(const vk::raii::CommandBuffer& cmd, Submission& s);
   void record_step(const vk::raii::CommandBuffer& cmd, std::uint32_t region, std::int64_t first_step);
-  void record_copies(const vk::raii::CommandBuffer& cmd, const Submission& s) const;
+  void record_copies(const vk::raii::CommandBuffer& cmd, const Submission& s);
   // The splashes queued since the last submission, submitted (read_*() see them).
   void flush_splashes();
   Buffer copy_to_host(const Buffer& src, const char* name);

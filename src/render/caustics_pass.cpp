@@ -1,6 +1,5 @@
 #include "render/caustics_pass.h"
 
-#include <cstring>
 #include <string>
 
 #include "render/barrier_batch.h"
@@ -11,13 +10,14 @@
 namespace pond::render {
 namespace {
 
+// Until a slot's map is written its binding holds the frame's placeholder (FrameRing::placeholders),
+// the reflection's format.
+static_assert(kCausticsFormat == kReflectionFormat);
+
 using S = vk::PipelineStageFlagBits2;
 using A = vk::AccessFlagBits2;
 using L = vk::ImageLayout;
 namespace cs = shared::caustics;
-
-constexpr vk::ImageSubresourceRange kColor{.aspectMask = vk::ImageAspectFlagBits::eColor, .baseMipLevel = 0,
-                                           .levelCount = 1, .baseArrayLayer = 0, .layerCount = 1};
 
 constexpr vk::DescriptorType kBindings[] = {vk::DescriptorType::eUniformTexelBuffer,
                                             vk::DescriptorType::eUniformTexelBuffer, vk::DescriptorType::eStorageImage};
@@ -45,7 +45,7 @@ void CausticsPass::make() {
   for (std::uint32_t k = 0; k < slots; ++k) {
     Slot s;
     const std::string n = ", slot " + std::to_string(k);
-    s.map = create_image(ctx, extent_, kCausticsFormat, U::eStorage | U::eSampled | U::eTransferDst | U::eTransferSrc,
+    s.map = create_image(ctx, extent_, kCausticsFormat, U::eStorage | U::eSampled | U::eTransferSrc,
                          vk::ImageAspectFlagBits::eColor, "caustics map" + n);
     const vk::DescriptorSetLayout layout = *pipeline_.set_layout;
     s.set = std::move(vk::raii::DescriptorSets(ctx.device(), vk::DescriptorSetAllocateInfo{
@@ -53,19 +53,8 @@ void CausticsPass::make() {
                                                                  .pSetLayouts = &layout})[0]);
     slots_.push_back(std::move(s));
   }
-  // Every map to its resting layout, holding calm water's 1.
-  ctx.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
-    for (const Slot& s : slots_) {
-      const auto to_clear = image_barrier(*s.map.image, vk::ImageAspectFlagBits::eColor, L::eUndefined, L::eTransferDstOptimal, S::eNone, {}, S::eClear,
-                                        A::eTransferWrite);
-      cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &to_clear});
-      cmd.clearColorImage(*s.map.image, L::eTransferDstOptimal,
-                          vk::ClearColorValue{.float32 = std::array<float, 4>{cs::kCausticsUnit, cs::kCausticsUnit, cs::kCausticsUnit, cs::kCausticsUnit}}, kColor);
-      const auto to_read = image_barrier(*s.map.image, vk::ImageAspectFlagBits::eColor, L::eTransferDstOptimal, L::eShaderReadOnlyOptimal, S::eClear,
-                                       A::eTransferWrite, S::eFragmentShader, A::eShaderSampledRead);
-      cmd.pipelineBarrier2(vk::DependencyInfo{.imageMemoryBarrierCount = 1, .pImageMemoryBarriers = &to_read});
-    }
-  });
+  // No wait here: a map is first written by its slot's first frame with caustics, before that frame
+  // samples it (bind_water binds the placeholder until then).
 }
 
 vk::BufferView CausticsPass::view_of(Slot& slot, const gpu::Buffer& buffer, vk::Format format) {
@@ -81,18 +70,20 @@ void CausticsPass::water_bindings(std::vector<vk::DescriptorSetLayoutBinding>& o
 }
 
 void CausticsPass::prepare(const FrameContext& frame) {
-  if (made()) {
-    Slot& s = slots_[frame.slot];
-    const std::uint64_t generation = frame.base.session.solver_generation();
-    if (s.generation != generation) s.views.clear();  // of a replaced solver's buffers; the slot is finished
-    s.generation = generation;
-  }
+  if (enabled(frame) && !made()) make();
+  if (!made()) return;
+  Slot& s = slots_[frame.slot];
+  const std::uint64_t generation = frame.base.session.solver_generation();
+  if (s.generation != generation) s.views.clear();  // of a replaced solver's buffers; the slot is finished
+  s.generation = generation;
   if (enabled(frame)) bind(frame.slot, *frame.water.state, *frame.water.normals);
 }
 
 void CausticsPass::bind_water(const FrameContext& frame, WaterSetWrites& set, WaterFrame& /*uniforms*/) {
-  // Without caustics no pipeline of the frame samples it: the placeholder stands in.
-  const vk::ImageView view = made() ? *slots_[frame.slot].map.view : *frame.placeholders.reflection.view;
+  // The slot's map where this frame writes it or an earlier one did (it then rests in shader-read);
+  // else no pipeline of the frame samples it, and the placeholder (as readable) stands in.
+  const bool map = made() && (enabled(frame) || slots_[frame.slot].written);
+  const vk::ImageView view = map ? *slots_[frame.slot].map.view : *frame.placeholders.reflection.view;
   set.image(POND_CAUSTICS_WATER_BINDING, *sampler_, view, L::eShaderReadOnlyOptimal);
 }
 
@@ -102,6 +93,7 @@ void CausticsPass::declare(const FrameContext& frame, PassDeclaration& d) {
 }
 
 void CausticsPass::record(const vk::raii::CommandBuffer& cmd, const FrameContext& frame) {
+  slots_[frame.slot].written = true;
   const sim::WaterModel& model = frame.base.session.model();
   record_dispatch(cmd, frame.slot,
                   view::caustics_push(model, view::unit(frame.base.lighting.sun), model.basin.floor_depth,
@@ -132,7 +124,8 @@ void CausticsPass::record_dispatch(const vk::raii::CommandBuffer& cmd, std::uint
   cmd.dispatch(gpu::group_count(push.map.x, POND_CAUSTICS_LOCAL), gpu::group_count(push.map.y, POND_CAUSTICS_LOCAL), 1);
 }
 
-void CausticsPass::record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, const CausticsPush& push) const {
+void CausticsPass::record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, const CausticsPush& push) {
+  slots_[slot].written = true;
   // The map from the water's sampling (or creation) to the compute write (its contents all
   // rewritten), and back.
   const vk::Image map = *slots_[slot].map.image;

@@ -5,11 +5,9 @@
 // floor and the submerged walls it sees through the water by (one nearest fetch a pixel; its
 // binding: shared/caustics.h). The map is per frame slot (a storage image written by the compute
 // pass, sampled by the water), written and read in the slot's own command buffer, so a frame in
-// flight keeps its own. Nothing is made until the first frame with caustics; until then the water's
-// binding holds the frame's 1 x 1 placeholder, which no pipeline of such a frame samples.
-//
-// Between frames the map rests in eShaderReadOnlyOptimal (it is made so, filled with 1 = calm
-// water, when created).
+// flight keeps its own. Nothing is made until the first frame with caustics; until a slot's map is
+// first written, the water's binding holds the frame's 1 x 1 placeholder, which no pipeline of such
+// a frame samples. Between frames a written map rests in eShaderReadOnlyOptimal.
 #include <array>
 #include <utility>
 #include <cstdint>
@@ -55,7 +53,7 @@ class CausticsPass final : public FramePass {
   // it (the map from fragment-shader reads to the compute write and back; the state and normals
   // must be visible to compute shader reads: the caller's barrier).
   void bind(std::uint32_t slot, const gpu::Buffer& state, const gpu::Buffer& normals);
-  void record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, const CausticsPush& push) const;
+  void record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot, const CausticsPush& push);
 
   bool made() const { return !slots_.empty(); }
   const Image& map(std::uint32_t slot) const { return slots_[slot].map; }
@@ -73,6 +71,7 @@ class CausticsPass final : public FramePass {
     // the session's solver they are of.
     std::vector<std::pair<vk::Buffer, vk::raii::BufferView>> views;
     std::uint64_t generation = 0;
+    bool written = false;  // by a frame: it rests in shader-read since
   };
   void make();
   vk::BufferView view_of(Slot& slot, const gpu::Buffer& buffer, vk::Format format);

@@ -1,7 +1,5 @@
 #include "render/early_passes.h"
 
-#include <array>
-
 #include "render/caustics_pass.h"
 #include "render/foam_pass.h"
 #include "render/frame_pass.h"

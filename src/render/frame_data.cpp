@@ -99,7 +99,6 @@ void FrameRing::finish(std::uint32_t slot) {
     if (ctx_.device().waitForFences(fences, VK_TRUE, UINT64_MAX) != vk::Result::eSuccess)
       throw RuntimeError("waiting for a frame failed");
   }
-  f.retired.flush();
 }
 
 void FrameRing::finish_all() {
@@ -119,12 +118,12 @@ const vk::raii::CommandBuffer& FrameRing::begin(const vk::raii::CommandBuffer& c
   return cmd;
 }
 
-void FrameRing::submit_early(std::uint32_t slot) const { submit(frames_[slot].early, frames_[slot].early_done, nullptr); }
-void FrameRing::submit_main(std::uint32_t slot, const FrameTarget& target) const {
+void FrameRing::submit_early(std::uint32_t slot) { submit(frames_[slot].early, frames_[slot].early_done, nullptr); }
+void FrameRing::submit_main(std::uint32_t slot, const FrameTarget& target) {
   submit(frames_[slot].main, frames_[slot].done, &target);
 }
 
-void FrameRing::submit(const vk::raii::CommandBuffer& cmd, const vk::raii::Fence& fence, const FrameTarget* target) const {
+void FrameRing::submit(const vk::raii::CommandBuffer& cmd, const vk::raii::Fence& fence, const FrameTarget* target) {
   cmd.end();
   ctx_.device().resetFences(*fence);
   const vk::CommandBufferSubmitInfo cmd_info{.commandBuffer = *cmd};

@@ -5,10 +5,7 @@
 // writing frame N+1's uniforms and indices never waits for frame N's draw.
 #include <array>
 #include <cstdint>
-#include <memory>
 #include <span>
-#include <type_traits>
-#include <utility>
 #include <vector>
 
 #include "gpu/buffer.h"
@@ -20,25 +17,10 @@
 
 namespace pond::render {
 
-// What a frame slot's last submissions may still use and nothing needs any more (a view of a
-// replaced solver's buffer, a target of the old size): kept until the slot is finished, then
-// destroyed (vkguide's deletion queue). Any movable owner (vk::raii objects, gpu::Buffer) goes in.
-class DeletionQueue {
- public:
-  template <class T>
-  void retire(T&& owner) {
-    held_.push_back(std::make_shared<std::decay_t<T>>(std::forward<T>(owner)));
-  }
-  void flush() { held_.clear(); }
-  std::size_t size() const { return held_.size(); }
-
- private:
-  std::vector<std::shared_ptr<void>> held_;
-};
-
 // What the water's set binds where a frame does not draw the reflection, the shadow map or the
-// submerged layer (their passes are off and made nothing): 1 x 1 images in the shader-read layout
-// that the pipelines of such a frame never sample.
+// submerged layer, or has no caustics map yet (their passes are off and made nothing): 1 x 1 images
+// in the shader-read layout that the pipelines of such a frame never sample (`reflection`, RGBA8
+// UNORM, also stands in for the caustics map, of the same format).
 struct Placeholders {
   Image reflection;  // kReflectionFormat
   Image shadow;      // kShadowFormat
@@ -61,7 +43,6 @@ struct FrameData {
   LayerTarget reflection;  // made at the first frame with the reflection, as the two below
   LayerTarget submerged;   // render/submerged_pass.h
   Image shadow;            // the sun's shadow map (render/shadow_pass.h)
-  DeletionQueue retired;  // emptied when the slot is finished
 };
 
 // Points `frame`'s descriptor set (shared/water_render.h bindings) at its uniforms, the water's
@@ -82,27 +63,23 @@ class FrameRing {
   const Placeholders& placeholders() const { return placeholders_; }
   const FrameData& operator[](std::uint32_t slot) const { return frames_[slot]; }
   // Until slot's last submissions finished: polls its fences and waits only while they run (in the
-  // steady state the frame's one wait, for an earlier frame's compute, has finished them already);
-  // then destroys what was retired into the slot.
+  // steady state the frame's one wait, for an earlier frame's compute, has finished them already).
+  // What a slot's last frame used is replaced only after this (a target of a new size, the
+  // caustics' views of a replaced solver's buffers: CausticsPass::prepare).
   void finish(std::uint32_t slot);
   void finish_all();
-  // `owner` kept until slot `slot` is next finished (it may be in use by the slot's submissions).
-  template <class T>
-  void retire(std::uint32_t slot, T&& owner) {
-    frames_[slot].retired.retire(std::forward<T>(owner));
-  }
   // Makes slot's depth buffer `extent` (the slot must be finished).
   void ensure_depth(std::uint32_t slot, vk::Extent2D extent);
   // Slot's early (main) command buffer reset and begun; submitted with its fence, the main one
   // waiting for the target's semaphore at colour output and signalling its other one.
   const vk::raii::CommandBuffer& begin_early(std::uint32_t slot) { return begin(frames_[slot].early); }
   const vk::raii::CommandBuffer& begin_main(std::uint32_t slot) { return begin(frames_[slot].main); }
-  void submit_early(std::uint32_t slot) const;
-  void submit_main(std::uint32_t slot, const FrameTarget& target) const;
+  void submit_early(std::uint32_t slot);
+  void submit_main(std::uint32_t slot, const FrameTarget& target);
 
  private:
   static const vk::raii::CommandBuffer& begin(const vk::raii::CommandBuffer& cmd);
-  void submit(const vk::raii::CommandBuffer& cmd, const vk::raii::Fence& fence, const FrameTarget* target) const;
+  void submit(const vk::raii::CommandBuffer& cmd, const vk::raii::Fence& fence, const FrameTarget* target);
 
   const gpu::Context& ctx_;
   vk::raii::CommandPool pool_ = nullptr;

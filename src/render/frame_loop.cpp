@@ -17,7 +17,6 @@
 #include "render/visible_geometry.h"
 #include "render/water_pipeline.h"
 #include "render/water_source.h"
-#include "view/caustics_grid.h"
 #include "view/frame_plan.h"
 #include "view/frame_uniforms.h"
 #include "view/view_projection.h"

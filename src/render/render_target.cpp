@@ -75,7 +75,7 @@ FrameTarget RenderTarget::frame_target() const {
                      .final_layout = vk::ImageLayout::eTransferSrcOptimal, .wait_semaphore = {}, .signal_semaphore = {}};
 }
 
-std::vector<std::uint8_t> RenderTarget::read_rgba() const {
+std::vector<std::uint8_t> RenderTarget::read_rgba() {
   const std::size_t bytes = std::size_t{image_.extent.width} * image_.extent.height * 4;
   const gpu::Buffer staging = gpu::create_buffer(ctx_, bytes, vk::BufferUsageFlagBits::eTransferDst, gpu::MemoryUse::readback,
                                        "color readback");

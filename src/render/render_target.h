@@ -39,7 +39,7 @@ class RenderTarget {
   FrameTarget frame_target() const;
   // The last drawn frame as RGBA8 rows, top row first. The frame must have been submitted; this
   // waits for it (the copy is queued behind it).
-  std::vector<std::uint8_t> read_rgba() const;
+  std::vector<std::uint8_t> read_rgba();  // not const: it waits
 
   int width() const { return static_cast<int>(image_.extent.width); }
   int height() const { return static_cast<int>(image_.extent.height); }

@@ -16,7 +16,7 @@ WaterSource::WaterSource(const gpu::Context& ctx, sim::Session& session, const g
     : ctx_(ctx), session_(session), gpu_(gpu) {}
 
 void WaterSource::sync() {
-  sim::Solver& solver = session_.solver();
+  sim::SolverReader solver = session_.reader();
   displacements_ = solver.displacements();  // waits
   tiles_ = solver.tile_bounds();            // of the same submission: no second wait
   bodies_ = solver.read_bodies();           // the same
@@ -75,7 +75,7 @@ WaterSource::DrawBuffers WaterSource::prepare(std::uint32_t slot) {
 
 void WaterSource::keep_on_host(std::optional<std::vector<core::GridWindow>> lod_reads) {
   if (3 * sizeof(float) * session_.model().nodes() < kReadBackInPartsFrom) lod_reads.reset();
-  session_.solver().keep_on_host(std::move(lod_reads));
+  session_.reader().keep_on_host(std::move(lod_reads));
 }
 
 lod::NodePositions WaterSource::positions() const {

@@ -49,8 +49,8 @@ class WaterSource : public lod::NodeFetch {
   std::span<const sim::BodyState> bodies() const { return bodies_; }
   // The GPU solver reads back only the nodes the LOD reads (sim/solver.h: keep_on_host): which the
   // host holds, bringing more (a wait), and which to copy after the next submissions (nullopt: all).
-  bool holds(const core::GridWindow& w) override { return session_.solver().holds_on_host(w); }
-  void bring_and_wait(std::span<const core::GridWindow> windows) override { session_.solver().bring_to_host(windows); }
+  bool holds(const core::GridWindow& w) override { return session_.reader().holds_on_host(w); }
+  void bring_and_wait(std::span<const core::GridWindow> windows) override { session_.reader().bring_to_host(windows); }
   // `lod_reads` (VisibleGeometry::lod_reads) where the whole copy would be larger than
   // kReadBackInPartsFrom; below that, every node (a few extra waits would cost more than the copy).
   void keep_on_host(std::optional<std::vector<core::GridWindow>> lod_reads);

@@ -152,9 +152,9 @@ class Session {
   void restore(const SessionImage& image);
   // The solver, for what the host holds without asking it (its model, its step count).
   const Solver& solver() const { return *solver_; }
-  // The same for a reader that may wait (sim/solver.h: a renderer's frame, its one wait); the state
-  // changes only through the session.
-  Solver& solver() { return *solver_; }
+  // Its readers that may wait (a renderer's frame: its one wait), and nothing that changes the
+  // state, which changes only through the session.
+  SolverReader reader() { return SolverReader(*solver_); }
   // Whether every solver of the session keeps its tile bounds (solver.h), for a renderer's LOD.
   void track_tile_bounds(bool on);
   // Grows whenever solver() is replaced (a drawer holding its buffers must let go), and whenever

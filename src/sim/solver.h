@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/node_runs.h"
@@ -92,6 +93,24 @@ class Solver {
   // For a solver whose bit-identity with the CPU reference depends on the device: one line saying
   // whether it is guaranteed or only observed (empty: nothing to say, as for every CPU backend).
   virtual std::string identity() const { return {}; }
+};
+
+// A solver's readers that may wait, and nothing that changes its state: what a session hands those
+// who read its water (Session::reader: a frame's one wait, the LOD's nodes, picking), so that no
+// one steps or replaces the state behind the session's back.
+class SolverReader {
+ public:
+  explicit SolverReader(Solver& solver) : solver_(solver) {}
+  HostDisplacements displacements() { return solver_.displacements(); }
+  HostDisplacements all_displacements() { return solver_.all_displacements(); }
+  std::span<const TileBounds> tile_bounds() { return solver_.tile_bounds(); }
+  std::vector<BodyState> read_bodies() { return solver_.read_bodies(); }
+  void keep_on_host(std::optional<std::vector<core::GridWindow>> windows) { solver_.keep_on_host(std::move(windows)); }
+  bool holds_on_host(const core::GridWindow& w) { return solver_.holds_on_host(w); }
+  void bring_to_host(std::span<const core::GridWindow> windows) { solver_.bring_to_host(windows); }
+
+ private:
+  Solver& solver_;
 };
 
 // Makes the GPU solver of a model (the front end's: it owns the Vulkan device; gpu/gpu_solvers.h).

@@ -24,7 +24,7 @@ inline Rgba render_scene_frame(const gpu::Context& ctx, const std::string& json,
   if (scene.tree) loop.add_drawable(tree.emplace(ctx, loop, *scene.tree));
   render::BodyDrawable bodies(ctx, loop);
   loop.add_drawable(bodies);
-  const render::RenderTarget target(ctx, width, height);
+  render::RenderTarget target(ctx, width, height);
   drawn.session.advance(steps);
   drawn.session.catch_up_wind();
   render::FrameView view;

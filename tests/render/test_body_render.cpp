@@ -70,7 +70,7 @@ class BodyRenderTest : public GpuTest {
   // Draws one frame of s (after `steps` more steps), LOD at `tolerance` px.
   Rgba draw(BodyScene& s, std::int64_t steps, double tolerance = 1.0, bool reflections = true) {
     DrawnSession& d = s.d;
-    const render::RenderTarget target(ctx(), kWidth, kHeight);
+    render::RenderTarget target(ctx(), kWidth, kHeight);
     d.session.advance(steps);
     render::FrameView view;
     view.camera = d.loop.default_camera(kWidth, kHeight);

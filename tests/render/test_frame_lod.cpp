@@ -48,7 +48,7 @@ TEST_F(FrameLodTest, TheLodOfEveryFrameHoldsTauOnTheDrawnSurface) {
   DrawnSession d(ctx(), scene, {}, render::RenderTarget::kFormat);
   render::BodyDrawable bodies(ctx(), d.loop);
   d.loop.add_drawable(bodies);
-  const render::RenderTarget target(ctx(), kViewWidth, kViewHeight);
+  render::RenderTarget target(ctx(), kViewWidth, kViewHeight);
   render::FrameView view;
   view.camera = d.loop.default_camera(kViewWidth, kViewHeight);
   view.lod_tolerance_px = kTau;
@@ -61,7 +61,7 @@ TEST_F(FrameLodTest, TheLodOfEveryFrameHoldsTauOnTheDrawnSurface) {
     d.loop.frame(target.frame_target(), view);
     // Nothing was submitted since the frame: the session's state is the one it drew.
     const sim::WaterState drawn = d.session.state();
-    const sim::HostDisplacements u = d.session.solver().displacements();
+    const sim::HostDisplacements u = d.session.reader().displacements();
     int rows_differing = 0;
     for (std::size_t i = 0; i < rows; ++i)
       rows_differing += std::memcmp(u.ux + i * u.pitch, drawn.ux.data() + i * cols, cols * sizeof(float)) != 0 ||

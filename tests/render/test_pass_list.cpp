@@ -91,7 +91,7 @@ TEST_F(PassListTest, EverythingOffRecordsNoPassAndMakesNoTarget) {
   DrawnSession d(ctx(), scene::parse_scene(kEveryPass, "test"), {}, render::RenderTarget::kFormat);
   render::BodyDrawable bodies(ctx(), d.loop);
   d.loop.add_drawable(bodies);
-  const render::RenderTarget target(ctx(), kWidth, kHeight);
+  render::RenderTarget target(ctx(), kWidth, kHeight);
   render::FrameView view;
   view.camera = d.loop.default_camera(kWidth, kHeight);
   view.wait = true;

@@ -67,7 +67,7 @@ class RenderTest : public GpuTest {
   // Advances an existing session by c.steps and draws one frame of it (c's view settings and format).
   Rgba draw(DrawnSession& d, const RenderCase& c) {
     render::FrameLoop& loop = d.loop;
-    const render::RenderTarget target(ctx(), kWidth, kHeight, c.format);
+    render::RenderTarget target(ctx(), kWidth, kHeight, c.format);
     d.session.advance(c.steps);
     render::FrameView view;
     view.camera = loop.default_camera(kWidth, kHeight);
@@ -143,7 +143,7 @@ TEST_F(RenderTest, CpuSolverDrawsTheSamePictureAndSwitchingCarriesTheState) {
   const scene::Scene scene = scene::load_scene("");
   DrawnSession d(ctx(), scene, {.gpu = false}, render::RenderTarget::kFormat);
   render::FrameLoop& loop = d.loop;
-  const render::RenderTarget target(ctx(), kWidth, kHeight);
+  render::RenderTarget target(ctx(), kWidth, kHeight);
   render::FrameView view;
   view.camera = loop.default_camera(kWidth, kHeight);
   view.wait = true;
@@ -194,7 +194,7 @@ TEST_F(RenderTest, AFrameSimulatedForAnotherSizeIsDrawnAsAtItsOwn) {
   const scene::Scene scene = scene::parse_scene(std::string(scene::default_scene_json()), "test");
   auto frame = [&](bool resized) {
     DrawnSession d(ctx(), scene, {}, render::RenderTarget::kFormat);
-    const render::RenderTarget target(ctx(), kWidth, kHeight);
+    render::RenderTarget target(ctx(), kWidth, kHeight);
     d.session.advance(24);
     render::FrameView view;  // every effect on
     view.camera = d.loop.default_camera(kWidth, kHeight);

@@ -87,7 +87,7 @@ TEST_F(ShadowDirectionsTest, TheTrunksShadowIsOnTheFloorWhereverTheCameraLooks) 
   DrawnSession drawn(ctx(), scene, {}, render::RenderTarget::kFormat), bare(ctx(), scene, {}, render::RenderTarget::kFormat);
   render::TreeDrawable tree(ctx(), drawn.loop, *scene.tree);
   drawn.loop.add_drawable(tree);
-  const render::RenderTarget target(ctx(), kWidth, kHeight);
+  render::RenderTarget target(ctx(), kWidth, kHeight);
   const double land = scene.basin.land_height, depth = scene.basin.floor_depth;
   const std::filesystem::path out = POND_TEST_OUT_DIR;
   std::filesystem::create_directories(out);

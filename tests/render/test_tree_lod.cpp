@@ -39,7 +39,7 @@ class TreeLodRenderTest : public GpuTest {
     render::TreeDrawable drawable(ctx(), loop, tree);
     drawable.set_level_of_detail(lod);
     if (with_tree) loop.add_drawable(drawable);
-    const render::RenderTarget target(ctx(), kWidth, kHeight);
+    render::RenderTarget target(ctx(), kWidth, kHeight);
     drawn.session.advance(25);
     drawn.session.catch_up_wind();
     render::FrameView view;

@@ -161,7 +161,7 @@ class TreeRenderTest : public GpuTest {
     render::FrameLoop& loop = drawn.loop;
     render::TreeDrawable tree(ctx(), loop, *scene.tree);
     loop.add_drawable(tree);
-    const render::RenderTarget target(ctx(), kWidth, kHeight);
+    render::RenderTarget target(ctx(), kWidth, kHeight);
     drawn.session.advance(steps);
     drawn.session.catch_up_wind();
     render::FrameView view;
@@ -216,7 +216,7 @@ TEST_F(TreeRenderTest, InstancesSwayOutOfStep) {
   render::FrameLoop& loop = drawn.loop;
   render::TreeDrawable tree(ctx(), loop, *scene.tree);
   loop.add_drawable(tree);
-  const render::RenderTarget target(ctx(), kWidth, kHeight);
+  render::RenderTarget target(ctx(), kWidth, kHeight);
   render::FrameView view;
   view.camera = loop.default_camera(kWidth, kHeight);
   view.wait = true;
@@ -240,7 +240,7 @@ TEST_F(TreeRenderTest, ControlsAndRegrow) {
   render::FrameLoop& loop = drawn.loop;
   render::TreeDrawable tree(ctx(), loop, *scene.tree);
   loop.add_drawable(tree);
-  const render::RenderTarget target(ctx(), kWidth, kHeight);
+  render::RenderTarget target(ctx(), kWidth, kHeight);
   render::FrameView view;
   view.camera = loop.default_camera(kWidth, kHeight);
   view.wait = true;

@@ -53,7 +53,7 @@ void measure_frame(const gpu::Context& ctx, const Plan& plan, Progress& progress
   loop.add_drawable(tree);
   render::BodyDrawable bodies(ctx, loop);
   loop.add_drawable(bodies);
-  const render::RenderTarget target(ctx, width, height);
+  render::RenderTarget target(ctx, width, height);
   render::FrameView on;
   on.camera = loop.default_camera(width, height);
   on.lod_tolerance_px = scene.view.lod_tolerance_px;

@@ -80,7 +80,7 @@ void DemoApp::on_wind_drag(double x0, double y0, double x, double y) {
 void DemoApp::on_splash(double x, double y, SplashKind kind) {
   const sim::WaterModel& model = session_->model();
   const std::optional<SurfaceHit> hit =
-      intersect_surface(pixel_ray(current_camera(), x, y), model, session_->solver().all_displacements());
+      intersect_surface(pixel_ray(current_camera(), x, y), model, session_->reader().all_displacements());
   if (!hit) {
     settings_.message = "the click missed the water";
     return;
@@ -140,7 +140,7 @@ void DemoApp::on_grab_release(double x, double y) {
 void DemoApp::on_drop_ball(double x, double y) {
   const sim::WaterModel& model = session_->model();
   const std::optional<SurfaceHit> hit =
-      intersect_surface(pixel_ray(current_camera(), x, y), model, session_->solver().all_displacements());
+      intersect_surface(pixel_ray(current_camera(), x, y), model, session_->reader().all_displacements());
   if (!hit) {
     notice("no ball dropped: the cursor is not over the water");
     return;
