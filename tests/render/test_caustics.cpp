@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <random>
 #include <string>
 #include <vector>
@@ -61,6 +62,7 @@ void write_ratio_png(const Map& m, const std::string& name, int zoom = 4) {
       const auto v = static_cast<std::uint8_t>(std::clamp(r * 127.5, 0.0, 255.0));
       rgba.insert(rgba.end(), {v, v, v, 255});
     }
+  std::filesystem::create_directories(POND_TEST_OUT_DIR);  // this test may be the first to write there
   write_png(std::string(POND_TEST_OUT_DIR) + "/" + name + ".png", w * zoom, h * zoom, rgba);
 }
 
