@@ -8,6 +8,11 @@
 //      each `stride` floats, node (i, j) at i * pitch + j, grid units, displacement from the rest
 //      position (j, 0, i)
 //   2: storage buffer, the normals: one vec4 per node, compact (node i * cols + j)
+//   POND_RENDER_BINDINGS and up: what the passes whose output the water reads bind, each pass its
+//      own (render/frame_pass.h: it adds the binding to the set's layout and writes it every frame,
+//      its output or a stand-in); the set layout refuses a number taken twice. The layers' numbers
+//      are here, as the land's shaders read the shadow map too; the caustics map's and the foam's
+//      are in their own headers (shared/caustics.h, shared/foam.h):
 //   3: combined image sampler, the planar reflection (render/reflection_pass.h), per frame slot;
 //      read only by water_reflect.frag
 //   4: combined image sampler with depth compare (sampler2DShadow), the sun's shadow map
@@ -15,9 +20,6 @@
 //      POND_SPEC_SHADOWS is on
 //   5: combined image sampler, what lies under the surface (render/submerged_pass.h), per frame
 //      slot; read by water.frag where POND_SPEC_SUBMERGED is on
-//   POND_RENDER_BINDINGS and up: what the passes whose output the water reads bind (each declares
-//      its binding's number in its own shared header: the caustics map, the foam; its FramePass
-//      writes it every frame: render/frame_pass.h); the set layout refuses a number taken twice
 // The water is drawn with vertex pulling: the index buffer holds node indices n = row * cols + col
 // (the LOD builder's output as is), the vertex shader reads the normals at gl_VertexIndex and the
 // state at its row * pitch + col.
@@ -51,7 +53,7 @@ struct mat4 {
 #define POND_RENDER_BINDING_REFLECTION 3
 #define POND_RENDER_BINDING_SHADOW 4
 #define POND_RENDER_BINDING_SUBMERGED 5
-#define POND_RENDER_BINDINGS 6  // the set's own; the passes' follow
+#define POND_RENDER_BINDINGS 3  // the set's own (frame, state, normals); the passes' follow
 
 // The fragment shaders take the frame's constants as flat varyings from their vertex shader, not
 // from the uniform block: llvmpipe (Mesa 22.3) reads a uniform (or push constant) in a fragment

@@ -67,27 +67,16 @@ FrameRing::FrameRing(const gpu::Context& ctx, vk::DescriptorSetLayout set_layout
 }
 
 void write_frame_set(const gpu::Context& ctx, const FrameData& f, const gpu::Buffer& state, const gpu::Buffer& normals,
-                     const FrameSetImages& bound, vk::Sampler nearest, vk::Sampler shadow,
                      std::vector<vk::WriteDescriptorSet> passes) {
   using DT = vk::DescriptorType;
-  constexpr auto kRead = vk::ImageLayout::eShaderReadOnlyOptimal;
   const vk::DescriptorBufferInfo infos[] = {f.uniforms.whole(), state.whole(), normals.whole()};
-  const vk::DescriptorImageInfo images[] = {{.sampler = nearest, .imageView = bound.reflection, .imageLayout = kRead},
-                                            {.sampler = shadow, .imageView = bound.shadow, .imageLayout = kRead},
-                                            {.sampler = nearest, .imageView = bound.submerged, .imageLayout = kRead}};
   std::vector<vk::WriteDescriptorSet> writes = {
       {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_FRAME, .descriptorCount = 1,
        .descriptorType = DT::eUniformBuffer, .pBufferInfo = &infos[0]},
       {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_STATE, .descriptorCount = 1,
        .descriptorType = DT::eStorageBuffer, .pBufferInfo = &infos[1]},
       {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_NORMALS, .descriptorCount = 1,
-       .descriptorType = DT::eStorageBuffer, .pBufferInfo = &infos[2]},
-      {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_REFLECTION, .descriptorCount = 1,
-       .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[0]},
-      {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_SHADOW, .descriptorCount = 1,
-       .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[1]},
-      {.dstSet = *f.set, .dstBinding = POND_RENDER_BINDING_SUBMERGED, .descriptorCount = 1,
-       .descriptorType = DT::eCombinedImageSampler, .pImageInfo = &images[2]}};
+       .descriptorType = DT::eStorageBuffer, .pBufferInfo = &infos[2]}};
   for (vk::WriteDescriptorSet& w : passes) writes.push_back(w.setDstSet(*f.set));
   ctx.device().updateDescriptorSets(writes, nullptr);
 }

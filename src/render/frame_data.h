@@ -1,8 +1,8 @@
 #pragma once
 // One frame in flight's resources (vkguide's FrameData, Vulkan-Samples' RenderFrame): its command
-// buffers and fences, its uniforms and descriptor set, its depth buffer, the reflection's target
-// and the sun's shadow map; and the ring of kFramesInFlight of them the frame loop uses in turn, so
-// writing frame N+1's uniforms and indices never waits for frame N's draw.
+// buffers and fences, its uniforms and descriptor set, its depth buffer (the passes keep their own
+// targets per slot: render/frame_pass.h); and the ring of kFramesInFlight of them the frame loop
+// uses in turn, so writing frame N+1's uniforms and indices never waits for frame N's draw.
 #include <array>
 #include <cstdint>
 #include <span>
@@ -12,7 +12,6 @@
 #include "gpu/context.h"
 #include "render/frame_constants.h"
 #include "render/frame_target.h"
-#include "render/layer_target.h"
 #include "render/render_target.h"
 
 namespace pond::render {
@@ -27,11 +26,6 @@ struct Placeholders {
   Image submerged;   // kSubmergedFormat
 };
 
-// The images the water's set binds this frame (shared/water_render.h's own bindings).
-struct FrameSetImages {
-  vk::ImageView reflection, shadow, submerged;
-};
-
 struct FrameData {
   vk::raii::CommandBuffer early = nullptr;  // the passes before the main one
   vk::raii::CommandBuffer main = nullptr;   // the main pass
@@ -40,18 +34,13 @@ struct FrameData {
   gpu::Buffer uniforms;                     // host-visible: WaterFrame
   vk::raii::DescriptorSet set = nullptr;    // the water renderer's set 0 (shared/water_render.h)
   Image depth;
-  LayerTarget reflection;  // made at the first frame with the reflection, as the two below
-  LayerTarget submerged;   // render/submerged_pass.h
-  Image shadow;            // the sun's shadow map (render/shadow_pass.h)
 };
 
-// Points `frame`'s descriptor set (shared/water_render.h bindings) at its uniforms, the water's
-// `state` and `normals` and `images`, and writes `passes` (the passes' own bindings, their dstSet
-// filled in here); the frame must be finished. `nearest`: the layers' sampler; `shadow`: the
-// depth-compare one.
+// Points `frame`'s descriptor set (shared/water_render.h bindings) at its uniforms and the water's
+// `state` and `normals`, and writes `passes` (the passes' own bindings, their dstSet filled in
+// here); the frame must be finished.
 void write_frame_set(const gpu::Context& ctx, const FrameData& frame, const gpu::Buffer& state,
-                     const gpu::Buffer& normals, const FrameSetImages& images, vk::Sampler nearest, vk::Sampler shadow,
-                     std::vector<vk::WriteDescriptorSet> passes);
+                     const gpu::Buffer& normals, std::vector<vk::WriteDescriptorSet> passes);
 
 class FrameRing {
  public:

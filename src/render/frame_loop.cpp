@@ -40,7 +40,6 @@ struct FrameLoop::Impl {
   vk::Format color_format;
   EarlyPasses passes;  // before the main one
   WaterPipelines pipes;
-  vk::raii::Sampler nearest_sampler = nullptr, shadow_sampler = nullptr;
   FrameRing frames;
   WaterSource water;
   VisibleGeometry geometry;
@@ -69,7 +68,6 @@ struct FrameLoop::Impl {
        vk::Format format)
       : ctx(c), scene(s), session(drawn), color_format(format),
         passes(c, drawn.model()), pipes(create_water_pipelines(c, format, kDepthFormat, pass_bindings())),
-        nearest_sampler(create_reflection_sampler(c)), shadow_sampler(create_shadow_sampler(c)),
         frames(c, *pipes.set_layout, pipes.set_bindings), water(c, drawn, gpu), geometry(c, drawn.model()),
         timestamps(c, kFramesInFlight, pass_names()), last_passes(timestamps.count(), false) {}
 
@@ -113,22 +111,7 @@ struct FrameLoop::Impl {
     for (const PassDrawable* p : drawables) p->add_shadow_casters(casters);
     f.plan = view::plan_frame({f.view.effects, casters, geometry.submerged_boxes(), f.view_proj, w, h, f.lighting.sun,
                                session.model().basin.floor_depth, session.model().basin.land_height});
-    // Each pass's target made when the frame first has it; a frame without binds a placeholder.
-    const Placeholders& none = frames.placeholders();
-    FrameSetImages images{*none.reflection.view, *none.shadow.view, *none.submerged.view};
-    if (f.plan.reflection) {
-      ensure_layer_target(ctx, d.reflection, reflection_extent(extent), kReflectionFormat, "reflection");
-      images.reflection = *d.reflection.color.view;
-    }
-    if (f.plan.shadow) {
-      ensure_shadow_map(ctx, d.shadow, f.plan.shadow->size);
-      images.shadow = *d.shadow.view;
-    }
-    if (f.plan.submerged) {
-      ensure_layer_target(ctx, d.submerged, extent, kSubmergedFormat, "submerged layer");
-      images.submerged = *d.submerged.color.view;
-    }
-    const vk::Extent2D mirror = f.plan.reflection ? d.reflection.color.extent : vk::Extent2D{0, 0};
+    const vk::Extent2D mirror = f.plan.reflection ? reflection_extent(extent) : vk::Extent2D{0, 0};
     geometry.cull_land(f.slot, f.view_proj, w, h, f.plan.shadow_rects,
                        {static_cast<int>(mirror.width), static_cast<int>(mirror.height)}, f.draws);
     WaterFrame u = view::frame_uniforms({session.model(), f.lighting, f.camera, f.view_proj,
@@ -139,8 +122,7 @@ struct FrameLoop::Impl {
       p->prepare(frame);
       p->bind_water(frame, pass_writes, u);
     }
-    write_frame_set(ctx, d, *f.water.state, *f.water.normals, images, *nearest_sampler, *shadow_sampler,
-                    std::move(pass_writes.writes));
+    write_frame_set(ctx, d, *f.water.state, *f.water.normals, std::move(pass_writes.writes));
     std::memcpy(d.uniforms.mapped, &u, sizeof u);
     d.uniforms.flush(ctx);
     timestamps.begin_frame(cmd, f.slot);
@@ -268,11 +250,6 @@ void FrameLoop::adopt_passes(CarriedPasses carried) {
 std::size_t FrameLoop::pass_targets() const {
   std::size_t made = 0;
   for (const FramePass* p : impl_->passes.list()) made += p->targets_made();
-  for (std::uint32_t k = 0; k < kFramesInFlight; ++k) {
-    const FrameData& d = impl_->frames[k];
-    for (const Image* i : {&d.reflection.color, &d.reflection.depth, &d.submerged.color, &d.submerged.depth, &d.shadow})
-      made += *i->image ? 1 : 0;
-  }
   return made;
 }
 std::span<const std::uint32_t> FrameLoop::lod_triangles() const { return impl_->geometry.lod_triangles(); }

@@ -1,8 +1,8 @@
 #pragma once
-// The planar reflection of everything above the water (frame_loop.h draws it first each frame when
-// FrameView::effects.reflections is on): the land and the pass drawables (the tree) mirrored about
-// the water's rest plane y = 0, only what lies above that plane (view::mirrored_walls), into a colour target at
-// the frame's resolution, cleared to transparent. water_reflect.frag samples it at the
+// The planar reflection of everything above the water (its pass in render/early_passes.cpp draws it
+// when FrameView::effects.reflections is on): the land and the pass drawables (the tree) mirrored
+// about the water's rest plane y = 0, only what lies above that plane (view::mirrored_walls), into a
+// colour target at the frame's resolution, cleared to transparent. water_reflect.frag samples it at the
 // pixel's screen position shifted by the surface normal and falls back to the sky where it is
 // transparent (alpha 0: nothing above the water there), so nothing below the water and nothing
 // in front of it is reflected.

@@ -1,10 +1,10 @@
 #pragma once
-// The sun's shadow map (frame_loop.h draws it first each frame when FrameView::effects.shadows is
-// on and something casts): the pass drawables' casters (the trees, the bodies: PassDrawable::
-// draw_shadow) drawn depth-only, orthographically along the sunlight, into a square depth image
-// fitted to their bounding spheres (view/sun_shadow.h). The land and the water sample it with a
-// depth-compare sampler (shared/shadow_sampling.h): the land's sunlit part, the water's glint and
-// diffuse light, and the pool floor seen through the water where its sunlight entered.
+// The sun's shadow map (its pass in render/early_passes.cpp draws it when FrameView::effects.shadows
+// is on and something casts): the pass drawables' casters (the trees, the bodies:
+// PassDrawable::draw_shadow) drawn depth-only, orthographically along the sunlight, into a square
+// depth image fitted to their bounding spheres (view/sun_shadow.h). The land and the water sample
+// it with a depth-compare sampler (shared/shadow_sampling.h): the land's sunlit part, the water's
+// glint and diffuse light, and the pool floor seen through the water where its sunlight entered.
 //
 // Only the trees and the bodies cast, and neither the land nor the water is drawn into the map,
 // so the receivers cannot shade themselves: no acne, and no depth bias to detach a shadow from

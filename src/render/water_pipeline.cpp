@@ -89,13 +89,7 @@ WaterPipelines create_water_pipelines(const gpu::Context& ctx, vk::Format color_
       {.binding = POND_RENDER_BINDING_STATE, .descriptorType = vk::DescriptorType::eStorageBuffer,
        .descriptorCount = 1, .stageFlags = SS::eVertex},
       {.binding = POND_RENDER_BINDING_NORMALS, .descriptorType = vk::DescriptorType::eStorageBuffer,
-       .descriptorCount = 1, .stageFlags = SS::eVertex},
-      {.binding = POND_RENDER_BINDING_REFLECTION, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
-       .descriptorCount = 1, .stageFlags = SS::eFragment},
-      {.binding = POND_RENDER_BINDING_SHADOW, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
-       .descriptorCount = 1, .stageFlags = SS::eFragment},
-      {.binding = POND_RENDER_BINDING_SUBMERGED, .descriptorType = vk::DescriptorType::eCombinedImageSampler,
-       .descriptorCount = 1, .stageFlags = SS::eFragment}};
+       .descriptorCount = 1, .stageFlags = SS::eVertex}};
   static_assert(std::size(own) == POND_RENDER_BINDINGS);
   p.set_bindings.assign(std::begin(own), std::end(own));
   for (const vk::DescriptorSetLayoutBinding& b : pass_bindings) {
