@@ -22,7 +22,7 @@ r = json.load(open(sys.argv[1]))
 names = {f["name"] for f in r["figures"]}
 problems = []
 for must in ["cpu.scalar.t1.64", "cpu.scalar.t1.128", "gpu.exact.64", "gpu.fast.128", "lod.129", "lod.257",
-             "frame.all_effects", "frame.no_effects", "frame.gpu.main", "bodies.cpu.8", "bodies.cpu.64",
+             "frame.all_effects", "frame.no_effects", "frame.cpu.all_effects", "frame.cpu.no_effects", "frame.gpu.main", "bodies.cpu.8", "bodies.cpu.64",
              "bodies.gpu.8", "bodies.gpu.64"]:
     if must not in names:
         problems.append("no figure " + must)

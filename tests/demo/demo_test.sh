@@ -114,6 +114,12 @@ same after_f12.png pond-0000.png "F12 did not save the frame"
 [ "$("$probe" size "$work/resized.png")" = "800 500" ] || fail "resized.png is not 800 x 500: $("$probe" size "$work/resized.png")"
 grep -q "148 frames at 800x500 on .*, CPU solver ([a-z0-9]*), Fifo:" "$work/stdout" ||
   fail "G or F3 did not switch the solver or the present mode: $(cat "$work/stdout")"
+# The summary's CPU time is every thread's: more than none, and no more cores than the machine has.
+python3 - "$work/stdout" "$(nproc)" <<'PY' || fail "the summary's CPU time is not a frame's: $(cat "$work/stdout")"
+import re, sys
+m = re.search(r"; CPU ([0-9.]+) ms a frame \(([0-9.]+) cores busy\)", open(sys.argv[1]).read())
+sys.exit(0 if m and float(m.group(1)) > 0 and 0 < float(m.group(2)) <= int(sys.argv[2]) + 0.25 else 1)
+PY
 
 # Esc quits: the run ends at the frame it is pressed.
 printf 'frame 0 key F2\nframe 3 key ESCAPE\n' > "$work/escape.script"

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/process_cpu.h"
 #include "gpu/gpu_solvers.h"
 #include "render/body_drawable.h"
 #include "render/frame_loop.h"
@@ -64,6 +65,10 @@ void measure_frame(const gpu::Context& ctx, const Plan& plan, Progress& progress
 
   Figure all = make_figure("frame.all_effects", "frame, every effect on, " + where, "ms", false);
   Figure none = make_figure("frame.no_effects", "frame, every effect off, " + where, "ms", false);
+  // Each frame with the step after it, from the end of the one before: every thread's CPU time
+  // (core/process_cpu.h), the driver's included; on a CPU device, that over the cores is the frame's floor.
+  Figure all_cpu = make_figure("frame.cpu.all_effects", "CPU time of that frame, every effect on, all threads", "ms", false);
+  Figure none_cpu = make_figure("frame.cpu.no_effects", "CPU time of that frame, every effect off, all threads", "ms", false);
   std::vector<Figure> passes(loop.timestamps().count());
   for (std::size_t p = 0; p < passes.size(); ++p) {
     const char* name = loop.timestamps().names()[p].c_str();
@@ -71,14 +76,18 @@ void measure_frame(const gpu::Context& ctx, const Plan& plan, Progress& progress
                  " pass, every effect on (timestamps)", "ms", false);
   }
   const int warm = 2;
+  double cpu_mark = core::process_cpu_ms();
   for (int k = 0; k < warm + plan.frame_count(); ++k) {
     progress.show("frame, " + where + ", " + std::to_string(k + 1) + " of " + std::to_string(warm + plan.frame_count()));
     for (const bool effects : {true, false}) {  // alternated, so a shared machine's load falls on both alike
       session.catch_up_wind();
       const render::FrameStats s = loop.frame(target.frame_target(), effects ? on : off);
       session.advance(1);  // the next frame's step, submitted; the next frame waits for it
+      const double cpu = core::process_cpu_ms(), cpu_ms = cpu - cpu_mark;
+      cpu_mark = cpu;
       if (k < warm) continue;
       (effects ? all : none).samples.push_back(s.wait_ms + s.lod_ms + s.draw_ms);
+      (effects ? all_cpu : none_cpu).samples.push_back(cpu_ms);
       const render::PassTimes& t = loop.timestamps().last();
       if (effects)
         for (std::size_t p = 0; p < passes.size(); ++p)
@@ -88,6 +97,8 @@ void measure_frame(const gpu::Context& ctx, const Plan& plan, Progress& progress
   loop.wait_idle();
   report.add(std::move(all));
   report.add(std::move(none));
+  report.add(std::move(all_cpu));
+  report.add(std::move(none_cpu));
   if (!loop.timestamps().supported()) {
     report.notes.push_back("no per-pass GPU times: the device has no timestamps (" +
                            loop.timestamps().unsupported_reason() + "); the frames ran without them");
