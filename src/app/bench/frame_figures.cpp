@@ -76,15 +76,14 @@ void measure_frame(const gpu::Context& ctx, const Plan& plan, Progress& progress
                  " pass, every effect on (timestamps)", "ms", false);
   }
   const int warm = 2;
-  double cpu_mark = core::process_cpu_ms();
+  core::CpuLaps cpu;
   for (int k = 0; k < warm + plan.frame_count(); ++k) {
     progress.show("frame, " + where + ", " + std::to_string(k + 1) + " of " + std::to_string(warm + plan.frame_count()));
     for (const bool effects : {true, false}) {  // alternated, so a shared machine's load falls on both alike
       session.catch_up_wind();
       const render::FrameStats s = loop.frame(target.frame_target(), effects ? on : off);
       session.advance(1);  // the next frame's step, submitted; the next frame waits for it
-      const double cpu = core::process_cpu_ms(), cpu_ms = cpu - cpu_mark;
-      cpu_mark = cpu;
+      const double cpu_ms = cpu.lap();
       if (k < warm) continue;
       (effects ? all : none).samples.push_back(s.wait_ms + s.lod_ms + s.draw_ms);
       (effects ? all_cpu : none_cpu).samples.push_back(cpu_ms);

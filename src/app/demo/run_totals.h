@@ -15,13 +15,12 @@ namespace pond::app::demo {
 struct RunTotals {
   std::int64_t drawn = 0;  // frames drawn, the first included
   double total_ms = 0, simulate_ms = 0, acquire_ms = 0, present_ms = 0;
-  double cpu_ms = 0, cpu_mark = 0;  // the process's CPU time over the counted frames; at the last frame's end
+  double cpu_ms = 0;  // the process's CPU time over the counted frames
+  core::CpuLaps cpu;   // a lap a frame, from one frame's end to the next
   render::FrameStats sum{};
 
   void add(double frame_ms, const render::FrameStats& last, double simulate, double acquire, double present) {
-    const double cpu = core::process_cpu_ms();
-    const double cpu_frame = cpu - cpu_mark;
-    cpu_mark = cpu;
+    const double cpu_frame = cpu.lap();
     if (drawn++ == 0) return;
     total_ms += frame_ms;
     cpu_ms += cpu_frame;
